@@ -1,0 +1,97 @@
+#include "Aperture.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "ExactTrace.h"
+#include "NearAxis.h"
+#include "OpticsError.h"
+
+namespace lenslab {
+
+namespace {
+
+Ray marginalRayFromFPrime(const FirstOrder& fo, double sinTheta) {
+    return {{0, 0, fo.zFPrime}, {0, sinTheta, std::sqrt(1.0 - sinTheta * sinTheta)}};
+}
+
+// Whether the cone of half-angle theta from F' passes the whole lens (stop at table size).
+bool conePasses(const LensSystem& lens, const FirstOrder& fo, double sinTheta) {
+    return traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene).ok();
+}
+
+// Height at the stop plane of the marginal ray traced from F' through the surfaces behind the stop.
+double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta, bool* blocked) {
+    TraceOptions options;
+    options.begin = lens.stopIndex + 1;
+    const TraceResult r = traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options);
+    *blocked = !r.ok();
+    return std::fabs(heightAtZ(r.ray, lens.stop().z));
+}
+
+std::string fmt(double v) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.4g", v);
+    return b;
+}
+
+}  // namespace
+
+ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo) {
+    // Scan outward for the first blocked cone, then bisect; passing cones form [0, theta_max]
+    // for real lenses, and the scan guards against an isolated passing band beyond a blocked one.
+    constexpr int kScan = 256;
+    double lo = 0, hi = 1.0;
+    for (int k = 1; k <= kScan; ++k) {
+        const double s = static_cast<double>(k) / kScan * 0.999999;
+        if (!conePasses(lens, fo, s)) {
+            hi = s;
+            break;
+        }
+        lo = s;
+    }
+    if (lo == 0 && !conePasses(lens, fo, 1e-9))
+        throw OpticsError("no ray from the rear focal point passes the lens: check the apertures");
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (conePasses(lens, fo, mid) ? lo : hi) = mid;
+    }
+    ApertureRange range;
+    range.fstopMin = 1.0 / (2.0 * lo);
+    bool blocked = false;
+    range.stopDiameterMax = 2.0 * stopHeight(lens, fo, lo, &blocked);
+    return range;
+}
+
+double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const ApertureRange& range,
+                            double fstop) {
+    // A relative tolerance lets the f-number printed for fstopMin be asked for again.
+    if (!(fstop >= range.fstopMin * (1 - 1e-9)) || !(fstop <= range.fstopMax))
+        throw OpticsError("f-number " + fmt(fstop) + " is outside this lens's range f/" +
+                          fmt(range.fstopMin) + " to f/" + fmt(range.fstopMax));
+    const double sinTheta = std::min(1.0 / (2.0 * fstop), 1.0 / (2.0 * range.fstopMin));
+    bool blocked = false;
+    const double h = stopHeight(lens, fo, sinTheta, &blocked);
+    if (blocked) throw OpticsError("f/" + fmt(fstop) + ": the marginal ray is blocked behind the stop");
+    return std::min(2.0 * h, 2.0 * lens.stop().apertureRadius);
+}
+
+std::vector<double> fullStops(double fstopMin, double fstopMax) {
+    std::vector<double> stops;
+    for (int k = 0; k < 40; ++k) {
+        const double v = std::pow(std::sqrt(2.0), k);
+        if (v > fstopMax * (1 + 1e-12)) break;
+        if (v >= fstopMin * (1 - 1e-9)) stops.push_back(v);
+    }
+    return stops;
+}
+
+std::vector<double> fineStops(double fstopMin, double fstopMax, double step) {
+    std::vector<double> stops;
+    for (long k = static_cast<long>(std::ceil(fstopMin / step - 1e-9)); k * step <= fstopMax + 1e-12; ++k)
+        stops.push_back(k * step);
+    return stops;
+}
+
+}  // namespace lenslab

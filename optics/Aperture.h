@@ -1,0 +1,33 @@
+#pragma once
+// f-number and stop opening. The f-number is defined by the image-side cone for an object at
+// infinity: fstop = 1 / (2 sin theta), theta the angle of the marginal ray converging to F'.
+#include <vector>
+
+#include "FirstOrder.h"
+#include "LensSystem.h"
+
+namespace lenslab {
+
+constexpr double kMaxFstop = 10000.0;  // any stop opening a simulation can use (f/10000 ~ microns)
+
+struct ApertureRange {
+    double fstopMin = 0;          // the widest the lens allows (table stop or an element clips)
+    double fstopMax = kMaxFstop;
+    double stopDiameterMax = 0;   // the stop opening at fstopMin, mm
+};
+
+// Finds the widest cone from F' that passes every surface with the stop at its table diameter.
+ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo);
+
+// The stop diameter (mm) for a requested f-number: the marginal ray leaving F' at theta =
+// asin(1 / (2 fstop)) traced back to the stop plane. Throws OpticsError naming the range when the
+// request lies outside it.
+double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const ApertureRange& range,
+                            double fstop);
+
+// Full stops (powers of sqrt 2) from the first at or above fstopMin up to fstopMax, exact values.
+std::vector<double> fullStops(double fstopMin, double fstopMax = 64.0);
+// Steps of `step` from fstopMin (rounded up to the step) to fstopMax.
+std::vector<double> fineStops(double fstopMin, double fstopMax, double step = 0.1);
+
+}  // namespace lenslab

@@ -1,0 +1,33 @@
+#pragma once
+// Exact sequential ray tracing through the lens surfaces, in either direction.
+#include <vector>
+
+#include "LensSystem.h"
+#include "SurfaceStep.h"
+#include "Vec3.h"
+
+namespace lenslab {
+
+enum class TraceDirection { SceneToFilm, FilmToScene };
+
+struct TraceOptions {
+    // Surfaces [begin, end) take part (indices front to rear); end < 0 means up to the last one.
+    int begin = 0;
+    int end = -1;
+    bool ignoreApertures = false;     // for first-order (paraxial-limit) rays
+    std::vector<Vec3>* path = nullptr;  // when set, receives the start and every surface hit
+};
+
+struct TraceResult {
+    Ray ray;                            // the ray leaving the last surface, or where it was blocked
+    BlockReason blocked = BlockReason::None;
+    int surface = -1;                   // the surface that blocked it
+    bool ok() const { return blocked == BlockReason::None; }
+};
+
+// Traces `ray` (lens space, unit direction) through the surfaces. SceneToFilm rays travel toward -z
+// and meet the surfaces front to rear; FilmToScene rays travel toward +z, rear to front.
+TraceResult traceRay(const LensSystem& lens, const Ray& ray, TraceDirection direction,
+                     const TraceOptions& options = {});
+
+}  // namespace lenslab

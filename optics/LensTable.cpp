@@ -1,0 +1,135 @@
+#include "LensTable.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace lenslab {
+
+const char* layoutName(TableLayout layout) {
+    return layout == TableLayout::GapBefore ? "gap-before" : "gap-after";
+}
+
+std::optional<TableLayout> parseLayoutName(const std::string& name) {
+    if (name == "gap-before") return TableLayout::GapBefore;
+    if (name == "gap-after") return TableLayout::GapAfter;
+    return std::nullopt;
+}
+
+static std::string formatLocation(const std::string& file, int line) {
+    return line > 0 ? file + ":" + std::to_string(line) : file;
+}
+
+LensTableError::LensTableError(const std::string& file, int line, const std::string& problem)
+    : std::runtime_error(formatLocation(file, line) + ": " + problem),
+      file_(file), line_(line), problem_(problem) {}
+
+namespace {
+
+const char* const kColumnNames[4] = {"radius", "gap", "N", "diameter"};
+
+std::vector<std::string> splitFields(const std::string& s) {
+    std::vector<std::string> fields;
+    std::istringstream in(s);
+    std::string f;
+    while (in >> f) fields.push_back(f);
+    return fields;
+}
+
+double parseNumber(const std::string& field, int column, const std::string& file, int line) {
+    const char* begin = field.c_str();
+    char* end = nullptr;
+    errno = 0;
+    double v = std::strtod(begin, &end);
+    if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+        throw LensTableError(file, line, std::string("column ") + std::to_string(column + 1) + " (" +
+                                             kColumnNames[column] + ") is not a finite number: '" +
+                                             field + "'");
+    return v;
+}
+
+LensTableRow parseRow(const std::string& content, const std::string& file, int line) {
+    auto fields = splitFields(content);
+    if (fields.size() != 4)
+        throw LensTableError(file, line,
+                             "expected 4 columns (radius, gap, N, diameter), found " +
+                                 std::to_string(fields.size()));
+    LensTableRow row;
+    row.line = line;
+    row.radius = parseNumber(fields[0], 0, file, line);
+    row.gap = parseNumber(fields[1], 1, file, line);
+    row.index = parseNumber(fields[2], 2, file, line);
+    row.diameter = parseNumber(fields[3], 3, file, line);
+    if (row.gap < 0) throw LensTableError(file, line, "negative gap " + fields[1]);
+    if (row.diameter <= 0)
+        throw LensTableError(file, line, "diameter must be positive, found " + fields[3]);
+    if (row.index != 0 && row.index < 1)
+        throw LensTableError(file, line, "refractive index " + fields[2] + " is below 1 (use 0 or 1 for air)");
+    return row;
+}
+
+TableLayout decideLayout(const LensTable& t, std::optional<TableLayout> override) {
+    const LensTableRow& first = t.rows.front();
+    const LensTableRow& last = t.rows.back();
+    if (override) {
+        if (*override == TableLayout::GapBefore && first.gap != 0)
+            throw LensTableError(t.name, first.line,
+                                 "gap-before layout needs a first-row gap of 0 (nothing precedes the first surface)");
+        return *override;
+    }
+    const bool firstZero = first.gap == 0, lastZero = last.gap == 0;
+    if (t.rows.size() > 1 && firstZero && lastZero)
+        throw LensTableError(t.name, first.line,
+                             "ambiguous layout: both the first and the last gap are 0; pass --layout gap-before or gap-after");
+    if (firstZero) return TableLayout::GapBefore;
+    if (lastZero) return TableLayout::GapAfter;
+    throw LensTableError(t.name, first.line,
+                         "cannot tell the layout: neither the first gap (gap-before) nor the last gap "
+                         "(gap-after) is 0; pass --layout gap-before or gap-after");
+}
+
+}  // namespace
+
+LensTable parseLensTable(const std::string& text, const std::string& name,
+                         std::optional<TableLayout> layout) {
+    LensTable table;
+    table.name = name;
+    std::istringstream in(text);
+    std::string raw;
+    int lineNo = 0;
+    while (std::getline(in, raw)) {
+        ++lineNo;
+        if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+        std::string content = raw;
+        if (auto hash = raw.find('#'); hash != std::string::npos) {
+            content = raw.substr(0, hash);
+            if (table.rows.empty() && content.find_first_not_of(" \t") == std::string::npos) {
+                std::string comment = raw.substr(hash + 1);
+                auto b = comment.find_first_not_of(" \t");
+                auto e = comment.find_last_not_of(" \t\"");
+                table.comments.push_back(b == std::string::npos ? "" : comment.substr(b, e - b + 1));
+            }
+        }
+        if (content.find_first_not_of(" \t\f\v") == std::string::npos) continue;
+        table.rows.push_back(parseRow(content, name, lineNo));
+    }
+    if (table.rows.empty())
+        throw LensTableError(name, std::max(lineNo, 1), "no surfaces: the table has no data rows");
+    table.layout = decideLayout(table, layout);
+    table.layoutDetected = !layout.has_value();
+    return table;
+}
+
+LensTable readLensTable(const std::string& path, std::optional<TableLayout> layout) {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw LensTableError(path, 0, "cannot open the file");
+    std::ostringstream ss;
+    ss << f.rdbuf();
+    if (f.bad()) throw LensTableError(path, 0, "cannot read the file");
+    return parseLensTable(ss.str(), path, layout);
+}
+
+}  // namespace lenslab

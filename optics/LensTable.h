@@ -1,0 +1,55 @@
+#pragma once
+// The lens table as written in a .dat file, before any geometry is derived from it.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+// Column 2 of a lens table is either the gap from the previous surface (the course files, first
+// row 0) or the gap to the next surface (pbrt's files, last row 0: distance to the film).
+enum class TableLayout { GapBefore, GapAfter };
+
+const char* layoutName(TableLayout layout);                    // "gap-before" / "gap-after"
+std::optional<TableLayout> parseLayoutName(const std::string& name);
+
+struct LensTableRow {
+    double radius = 0;    // mm, 0 = flat; positive: centre of curvature on the film side
+    double gap = 0;       // mm, as written (meaning depends on the layout)
+    double index = 0;     // refractive index on the film side; 0 means air
+    double diameter = 0;  // clear aperture diameter, mm
+    int line = 0;         // 1-based line in the source text
+    bool isStop() const { return radius == 0 && index == 0; }
+};
+
+struct LensTable {
+    std::string name;      // file name (or upload name) for messages
+    std::vector<std::string> comments;  // header comment lines, '#' stripped
+    std::vector<LensTableRow> rows;
+    TableLayout layout = TableLayout::GapBefore;
+    bool layoutDetected = true;  // false when an explicit override decided it
+};
+
+// Every problem with a table: the message names the file, the line and the problem.
+class LensTableError : public std::runtime_error {
+public:
+    LensTableError(const std::string& file, int line, const std::string& problem);
+    const std::string& file() const { return file_; }
+    int line() const { return line_; }
+    const std::string& problem() const { return problem_; }
+
+private:
+    std::string file_;
+    int line_;
+    std::string problem_;
+};
+
+// Parses a lens table from text. `name` is used in messages. Throws LensTableError.
+LensTable parseLensTable(const std::string& text, const std::string& name,
+                         std::optional<TableLayout> layout = std::nullopt);
+
+// Reads and parses a file. Throws LensTableError (also for unreadable files).
+LensTable readLensTable(const std::string& path, std::optional<TableLayout> layout = std::nullopt);
+
+}  // namespace lenslab

@@ -1,0 +1,10 @@
+#pragma once
+// The lenslab subcommands. Each takes the arguments after its name and returns the exit status.
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+int runLensCommand(const std::vector<std::string>& args);
+
+}  // namespace lenslab

@@ -1,0 +1,57 @@
+#include "LensJson.h"
+
+#include <cmath>
+
+namespace lenslab {
+
+namespace {
+
+nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
+    using nlohmann::json;
+    const FirstOrder& fo = a.firstOrder;
+    json surfaces = json::array();
+    for (const Surface& s : a.lens.surfaces)
+        surfaces.push_back({{"z", s.z},
+                            {"radius", s.radius},
+                            {"n", s.indexAfter},
+                            {"diameter", 2 * s.apertureRadius},
+                            {"is_stop", s.isStop},
+                            {"line", s.line}});
+    return {
+        {"name", a.lens.name},
+        {"units", "mm"},
+        {"convention", "origin at the front vertex, +z toward the scene, film at negative z"},
+        {"layout", layoutName(a.lens.layout)},
+        {"efl", fo.efl},
+        {"efl_front", fo.eflFront},
+        {"back_focal_distance", fo.backFocalDistance},
+        {"front_focal_distance", fo.frontFocalDistance},
+        {"F", {{"z", fo.zF}}},
+        {"F_prime", {{"z", fo.zFPrime}}},
+        {"P", {{"z", fo.zP}}},
+        {"P_prime", {{"z", fo.zPPrime}}},
+        {"stop", {{"z", a.lens.stop().z}, {"diameter", a.stopDiameter}, {"max_diameter", a.aperture.stopDiameterMax}, {"surface", a.lens.stopIndex}}},
+        {"entrance_pupil", {{"z", a.pupils.entrance.z}, {"diameter", a.pupils.entrance.diameter}}},
+        {"exit_pupil", {{"z", a.pupils.exit.z}, {"diameter", a.pupils.exit.diameter}}},
+        {"fstop", a.fstop},
+        {"fstop_min", a.aperture.fstopMin},
+        {"fstop_max", a.aperture.fstopMax},
+        {"full_stops", fullStops(a.aperture.fstopMin)},
+        {"aperture_diameter", a.stopDiameter},
+        {"focus",
+         {{"infinity", a.focus.infinity},
+          {"distance", a.focus.infinity ? json(nullptr) : json(a.focus.objectZ - a.lens.frontZ())},
+          {"object_z", finiteOrNull(a.focus.objectZ)},
+          {"image_z", a.focus.imageZExact},
+          {"image_z_thick", a.focus.imageZThick},
+          {"image_z_difference", a.focus.difference},
+          {"rms_spot_radius", a.focus.rmsSpotRadius}}},
+        {"surfaces", surfaces},
+    };
+}
+
+}  // namespace lenslab

@@ -1,0 +1,11 @@
+#pragma once
+// A lens analysis as JSON: the shape `lenslab lens --json` prints and the API serves.
+#include <nlohmann/json.hpp>
+
+#include "LensAnalysis.h"
+
+namespace lenslab {
+
+nlohmann::json lensAnalysisJson(const LensAnalysis& analysis);
+
+}  // namespace lenslab

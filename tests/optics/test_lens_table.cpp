@@ -1,0 +1,151 @@
+// The lens-table parser: both layouts, line endings, comments, and every error with its message.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "LensSystem.h"
+#include "LensTable.h"
+
+using namespace lenslab;
+
+namespace {
+
+// Expects parsing + building to fail with a message naming file, line and problem.
+void expectError(const std::string& text, int line, const std::string& problemPart,
+                 std::optional<TableLayout> layout = std::nullopt) {
+    try {
+        buildLensSystem(parseLensTable(text, "bad.dat", layout));
+        FAIL() << "no error for:\n" << text;
+    } catch (const LensTableError& e) {
+        EXPECT_EQ(e.file(), "bad.dat");
+        EXPECT_EQ(e.line(), line) << e.what();
+        EXPECT_NE(std::string(e.what()).find(problemPart), std::string::npos) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind("bad.dat:" + std::to_string(line) + ": ", 0), 0u) << e.what();
+    }
+}
+
+const char* kGapBefore =
+    "# a simple doublet with a stop\n"
+    "50 0 1.5 20\n"
+    "-50 5 1 20\n"
+    "0 5 0 10\n"
+    "40 5 1.6 18\n"
+    "-80 4 1 18\n";
+
+}  // namespace
+
+TEST(LensTable, ReadsGapBeforeLayout) {
+    const LensSystem lens = buildLensSystem(parseLensTable(kGapBefore, "t.dat"));
+    ASSERT_EQ(lens.surfaces.size(), 5u);
+    EXPECT_EQ(lens.layout, TableLayout::GapBefore);
+    EXPECT_DOUBLE_EQ(lens.surfaces[0].z, 0);
+    EXPECT_DOUBLE_EQ(lens.surfaces[1].z, -5);
+    EXPECT_DOUBLE_EQ(lens.surfaces[2].z, -10);
+    EXPECT_DOUBLE_EQ(lens.surfaces[4].z, -19);
+    EXPECT_EQ(lens.stopIndex, 2);
+    EXPECT_DOUBLE_EQ(lens.surfaces[0].indexAfter, 1.5);
+    EXPECT_DOUBLE_EQ(lens.surfaces[2].indexAfter, 1.0);  // N 0 is air
+    EXPECT_DOUBLE_EQ(lens.surfaces[0].apertureRadius, 10);  // the column is a diameter
+    EXPECT_EQ(lens.surfaces[1].line, 3);
+    EXPECT_EQ(lens.comments.at(0), "a simple doublet with a stop");
+}
+
+TEST(LensTable, ReadsGapAfterLayoutWithTheSameGeometry) {
+    const char* gapAfter = "50 5 1.5 20\n-50 5 1 20\n0 5 0 10\n40 4 1.6 18\n-80 0 1 18";
+    const LensSystem a = buildLensSystem(parseLensTable(kGapBefore, "a.dat"));
+    const LensSystem b = buildLensSystem(parseLensTable(gapAfter, "b.dat"));
+    EXPECT_EQ(b.layout, TableLayout::GapAfter);
+    ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
+    for (std::size_t i = 0; i < a.surfaces.size(); ++i) EXPECT_DOUBLE_EQ(a.surfaces[i].z, b.surfaces[i].z);
+}
+
+TEST(LensTable, CopesWithCrlfTabsCommentsAndNoFinalNewline) {
+    const std::string text = "# header\r\n  50\t0 \t1.5\t20 # trailing comment\r\n\r\n-50 5 1 20\r\n0\t5\t0\t10\r\n40 5 1.6 18\r\n-80\t4\t1\t18.5";
+    const LensSystem lens = buildLensSystem(parseLensTable(text, "crlf.dat"));
+    ASSERT_EQ(lens.surfaces.size(), 5u);
+    EXPECT_DOUBLE_EQ(lens.surfaces.back().apertureRadius, 9.25);  // the last value is kept
+    EXPECT_EQ(lens.surfaces.back().line, 7);
+}
+
+TEST(LensTable, ExplicitLayoutOverridesDetection) {
+    // First and last gap both 0: ambiguous unless told.
+    const char* both = "50 0 1.5 20\n-50 5 1 20\n0 5 0 10\n40 5 1.6 18\n-80 0 1 18\n";
+    expectError(both, 1, "ambiguous layout");
+    const LensTable t = parseLensTable(both, "both.dat", TableLayout::GapAfter);
+    EXPECT_EQ(t.layout, TableLayout::GapAfter);
+    EXPECT_FALSE(t.layoutDetected);
+    expectError("50 3 1.5 20\n-50 5 1 20\n0 5 0 10\n40 5 1.6 18\n-80 2 1 18\n", 1, "gap-before layout needs",
+                TableLayout::GapBefore);
+}
+
+TEST(LensTable, FlatRefractingSurfaceIsNotAStop) {
+    const LensSystem lens = buildLensSystem(parseLensTable("0 0 1.5 20\n-50 5 1 20\n0 5 0 10\n-80 4 1 18\n", "flat.dat"));
+    EXPECT_FALSE(lens.surfaces[0].isStop);
+    EXPECT_DOUBLE_EQ(lens.surfaces[0].curvature, 0);
+    EXPECT_EQ(lens.stopIndex, 2);
+}
+
+TEST(LensTableErrors, WrongColumnCount) { expectError("50 0 1.5\n", 1, "expected 4 columns (radius, gap, N, diameter), found 3"); }
+TEST(LensTableErrors, TooManyColumns) { expectError("50 0 1.5 20\n-50 5 1 20 7\n", 2, "found 5"); }
+TEST(LensTableErrors, NotANumber) { expectError("50 0 1.5 20\n-50 five 1 20\n", 2, "column 2 (gap) is not a finite number: 'five'"); }
+TEST(LensTableErrors, NotFinite) { expectError("50 0 1.5 20\n-50 5 1 nan\n", 2, "column 4 (diameter) is not a finite number"); }
+TEST(LensTableErrors, NegativeDiameter) { expectError("50 0 1.5 -20\n", 1, "diameter must be positive"); }
+TEST(LensTableErrors, ZeroDiameter) { expectError("50 0 1.5 20\n0 5 0 0\n", 2, "diameter must be positive"); }
+TEST(LensTableErrors, NegativeGap) { expectError("50 0 1.5 20\n-50 -5 1 20\n", 2, "negative gap"); }
+TEST(LensTableErrors, IndexBelowOne) { expectError("50 0 0.8 20\n", 1, "is below 1"); }
+TEST(LensTableErrors, Empty) { expectError("# only a comment\n\n", 2, "no surfaces"); }
+TEST(LensTableErrors, NoStop) { expectError("50 0 1.5 20\n-50 5 1 20\n", 1, "no aperture stop"); }
+TEST(LensTableErrors, TwoStops) {
+    expectError("50 0 1.5 20\n-50 5 1 20\n0 5 0 10\n0 5 0 10\n-80 4 1 18\n", 4, "a second aperture stop");
+}
+TEST(LensTableErrors, DiameterLargerThanSphere) {
+    expectError("8 0 1.5 20\n-50 5 1 20\n0 5 0 10\n", 1, "larger than the sphere of radius 8 mm allows");
+}
+TEST(LensTableErrors, OverlappingSurfaces) {
+    // Two strongly convex-toward-each-other surfaces 1 mm apart at the axis cross near the rim.
+    expectError("50 0 1.5 20\n-20 1 1 20\n0 5 0 10\n", 2, "surface overlaps the one before it");
+}
+TEST(LensTableErrors, AmbiguousLayoutWithoutZeroGaps) {
+    expectError("50 2 1.5 20\n-50 5 1 20\n0 5 0 10\n", 1, "cannot tell the layout");
+}
+TEST(LensTableErrors, LastSurfaceInGlass) { expectError("50 0 1.5 20\n0 5 0 10\n-50 5 1.5 20\n", 3, "must leave the ray in air"); }
+TEST(LensTableErrors, UnreadableFile) {
+    try {
+        readLensTable("/nonexistent/lens.dat");
+        FAIL();
+    } catch (const LensTableError& e) {
+        EXPECT_STREQ(e.what(), "/nonexistent/lens.dat: cannot open the file");
+    }
+}
+
+// The published tables load as they are (CRLF, tabs, quotes in comments, no final newline).
+TEST(LensTable, EveryPublishedTableLoads) {
+    const std::filesystem::path dir = LENSLAB_SHARED_LENSES;
+    if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no " << dir;
+    int n = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+        if (e.path().extension() != ".dat") continue;
+        const LensSystem lens = loadLensSystem(e.path().string());
+        EXPECT_GE(lens.surfaces.size(), 7u) << e.path();
+        EXPECT_GE(lens.stopIndex, 0) << e.path();
+        ++n;
+    }
+    EXPECT_EQ(n, 8);
+}
+
+TEST(LensTable, BundledTablesMatchThePublishedFigures) {
+    const std::filesystem::path shared = LENSLAB_SHARED_LENSES;
+    if (!std::filesystem::exists(shared)) GTEST_SKIP() << "no " << shared;
+    for (const char* name : {"dgauss", "dgauss.50mm", "wide", "wide.22mm", "telephoto", "telephoto.250mm", "fisheye",
+                             "fisheye.10mm"}) {
+        const LensSystem ours = loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name + ".dat");
+        const LensSystem theirs = loadLensSystem((shared / (std::string(name) + ".dat")).string());
+        ASSERT_EQ(ours.surfaces.size(), theirs.surfaces.size()) << name;
+        for (std::size_t i = 0; i < ours.surfaces.size(); ++i) {
+            EXPECT_DOUBLE_EQ(ours.surfaces[i].z, theirs.surfaces[i].z) << name << " surface " << i;
+            EXPECT_DOUBLE_EQ(ours.surfaces[i].radius, theirs.surfaces[i].radius) << name;
+            EXPECT_DOUBLE_EQ(ours.surfaces[i].indexAfter, theirs.surfaces[i].indexAfter) << name;
+            EXPECT_DOUBLE_EQ(ours.surfaces[i].apertureRadius, theirs.surfaces[i].apertureRadius) << name;
+        }
+    }
+}
