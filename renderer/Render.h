@@ -1,0 +1,78 @@
+#pragma once
+// The ray tracer's entry point: a scene file in, an image (and its statistics) out.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+// Overrides of the scene's Camera "realistic" parameters (the server's form); unset = as in the
+// scene. Millimetres, as the course defined them.
+struct CameraOverrides {
+    std::optional<std::string> lensFile;   // specfile
+    std::optional<double> fstop;
+    std::optional<double> focalDistance;   // front vertex to the plane of focus
+    std::optional<double> filmDiagonal;
+    std::optional<std::string> mode;       // "accurate" | "approximate"
+};
+
+struct RenderSettings {
+    std::string scenePath;                 // pbrt-v3 subset
+    CameraOverrides camera;
+    std::optional<int> spp, width, height; // unset = as in the scene
+    int threads = 0;                       // 0 = all cores
+    int tileSize = 32;
+    std::uint64_t seed = 0;
+};
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<float> rgb;  // linear, row-major, top row first
+};
+
+struct TileUpdate {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixel rectangle [x0, x1) x [y0, y1) just finished
+    int tilesDone = 0, tilesTotal = 0;
+};
+
+struct RenderStats {
+    double setupSeconds = 0;   // scene load, camera setup (pupil bounds, focus)
+    double renderSeconds = 0;
+    std::uint64_t cameraRays = 0, blockedCameraRays = 0, raysTraced = 0;
+};
+
+struct RenderOutput {
+    Image image;
+    RenderStats stats;
+    std::map<std::string, std::string> metadata;  // camera and lens parameters, for EXR headers
+};
+
+// Scene problems (file, line, directive) and bad settings.
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class RenderCancelled : public std::runtime_error {
+public:
+    RenderCancelled() : std::runtime_error("render cancelled") {}
+};
+
+// Renders the scene. onTile is called (from worker threads, serialised) after each finished tile
+// with the image so far. Throws SceneError, OpticsError, RenderCancelled when *cancel turns true.
+RenderOutput renderScene(const RenderSettings& settings,
+                         const std::function<void(const TileUpdate&, const Image&)>& onTile = {},
+                         const std::atomic<bool>* cancel = nullptr);
+
+// PNG: sRGB tone-mapped with an exposure scale. EXR: linear float RGB, tiled, metadata in the header.
+std::vector<std::uint8_t> encodePng(const Image& image, double exposure = 1.0);
+std::vector<std::uint8_t> encodeExr(const RenderOutput& output);
+// Writes .png or .exr by the path's extension, atomically (temporary file, then rename).
+void writeImageFile(const RenderOutput& output, const std::string& path, double exposure = 1.0);
+
+}  // namespace lenslab

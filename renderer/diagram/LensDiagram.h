@@ -1,0 +1,41 @@
+#pragma once
+// The lens cross-section with its ray fans, drawn offscreen with OpenGL and returned as PNG.
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "LensSystem.h"
+
+namespace lenslab {
+
+enum class DiagramMode { Exact, Thick, Overlay };
+enum class DiagramBackendKind { OSMesa, EGL, Auto };
+
+struct DiagramOptions {
+    DiagramMode mode = DiagramMode::Exact;
+    std::optional<double> fstop;        // nullopt: the widest the lens allows
+    double focusDistance = std::numeric_limits<double>::infinity();  // mm from the front vertex
+    std::optional<double> fieldHeight;  // mm on the film for the off-axis fan; nullopt: automatic
+    int rays = 9;                       // rays per fan
+    int width = 1200, height = 600;     // pixels
+    DiagramBackendKind backend = DiagramBackendKind::OSMesa;
+};
+
+// Bad options or a backend that cannot start.
+class DiagramError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Parses "exact|thick|overlay" and "osmesa|egl|auto"; DiagramError naming the choices otherwise.
+DiagramMode parseDiagramMode(const std::string& name);
+DiagramBackendKind parseDiagramBackend(const std::string& name);
+
+// Draws the diagram and encodes it as PNG. Safe to call from many threads at once. Throws
+// DiagramError (options, backend) or OpticsError (fstop or focus outside the lens's range).
+std::vector<std::uint8_t> drawLensDiagramPng(const LensSystem& lens, const DiagramOptions& options);
+
+}  // namespace lenslab
