@@ -4,6 +4,7 @@
 // trace, the structure-of-arrays batch trace and the float variant share the exact same math.
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace lenslab {
 
@@ -32,33 +33,38 @@ inline BlockReason stepThroughSurface(T& px, T& py, T& pz, T& dx, T& dy, T& dz, 
     const T disc = b * b - curvature * c;
     const T root = std::sqrt(disc > T(0) ? disc : T(0));
     const T q = -(b + (b < T(0) ? -root : root));
-    const T tNear = c / q;                                       // stays finite as curvature -> 0
-    const T tFar = curvature != T(0) ? q / curvature : T(1e300);  // the other root
+    const T tNear = c / q;  // stays finite as curvature -> 0
+    // The other root. A flat surface has none: q / 0 is +-inf (or NaN), which farOk rejects.
+    const T tFar = q / curvature;
     const T tMin = T(-1e-9);
-    const bool nearOk = tNear >= tMin && T(1) + curvature * (qz + tNear * dz) > T(0);
-    const bool farOk = tFar >= tMin && tFar < T(1e30) && T(1) + curvature * (qz + tFar * dz) > T(0);
-    const T t = nearOk && (!farOk || tNear <= tFar) ? tNear : tFar;
+    const bool nearOk = (tNear >= tMin) & (T(1) + curvature * (qz + tNear * dz) > T(0));
+    const bool farOk = (tFar >= tMin) & (tFar < T(1e30)) & (T(1) + curvature * (qz + tFar * dz) > T(0));
+    const T t = nearOk & (!farOk | (tNear <= tFar)) ? tNear : tFar;
     const T hx = px + t * dx, hy = py + t * dy, hqz = qz + t * dz;
     const T nzCap = T(1) + curvature * hqz;
-    const bool missed = !(disc >= T(0)) || !(nearOk || farOk) || !(t < T(1e30));
+    const bool missed = !(disc >= T(0)) | !(nearOk | farOk) | !(t < T(1e30));
     const bool outside = hx * hx + hy * hy > apertureRadius2;
 
-    T nx = curvature * hx, ny = curvature * hy, nz = nzCap;
-    T cosi = -(nx * dx + ny * dy + nz * dz);
-    if (cosi < T(0)) {
-        nx = -nx; ny = -ny; nz = -nz; cosi = -cosi;
-    }
+    // Orient the normal against the incoming ray. Everything below is selects rather than branches
+    // so that the batch loop vectorises; a blocked ray keeps its state.
+    const T nDotD = curvature * (hx * dx + hy * dy) + nzCap * dz;
+    const T sign = nDotD > T(0) ? T(-1) : T(1);
+    const T cosi = -sign * nDotD;
     const T k = T(1) - eta * eta * (T(1) - cosi * cosi);
     const bool tir = !(k >= T(0));
-    if (missed) return BlockReason::MissedSurface;
-    if (outside) return isStop ? BlockReason::ClippedByStop : BlockReason::OutsideAperture;
-    if (tir) return BlockReason::TotalInternalReflection;
-    const T m = eta * cosi - std::sqrt(k);
-    px = hx; py = hy; pz = hqz + zVertex;
-    dx = eta * dx + m * nx;
-    dy = eta * dy + m * ny;
-    dz = eta * dz + m * nz;
-    return BlockReason::None;
+    const bool pass = !missed & !outside & !tir;
+    const T m = sign * (eta * cosi - std::sqrt(k > T(0) ? k : T(0)));
+    px = pass ? hx : px;
+    py = pass ? hy : py;
+    pz = pass ? hqz + zVertex : pz;
+    const T ex = eta * dx + m * curvature * hx, ey = eta * dy + m * curvature * hy, ez = eta * dz + m * nzCap;
+    dx = pass ? ex : dx;
+    dy = pass ? ey : dy;
+    dz = pass ? ez : dz;
+    return missed    ? BlockReason::MissedSurface
+           : outside ? (isStop ? BlockReason::ClippedByStop : BlockReason::OutsideAperture)
+           : tir     ? BlockReason::TotalInternalReflection
+                     : BlockReason::None;
 }
 
 }  // namespace lenslab
