@@ -1,5 +1,6 @@
 #include "Aperture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -30,9 +31,10 @@ double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta,
     return std::fabs(heightAtZ(r.ray, lens.stop().z));
 }
 
+// Three significant digits as lenses are marked (f/2.02, f/5.6), whole numbers from 1000 on.
 std::string fmt(double v) {
     char b[64];
-    std::snprintf(b, sizeof b, "%.4g", v);
+    std::snprintf(b, sizeof b, std::fabs(v) >= 1000 ? "%.0f" : "%.3g", v);
     return b;
 }
 
@@ -59,6 +61,9 @@ ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo)
     }
     ApertureRange range;
     range.fstopMin = 1.0 / (2.0 * lo);
+    // A lens slower than kMaxFstop at its widest (a micrometre stop, a kilometre focal length) still
+    // has that one setting, rather than a range whose ends cross.
+    range.fstopMax = std::max(kMaxFstop, range.fstopMin);
     bool blocked = false;
     range.stopDiameterMax = 2.0 * stopHeight(lens, fo, lo, &blocked);
     return range;
@@ -88,9 +93,14 @@ std::vector<double> fullStops(double fstopMin, double fstopMax) {
 }
 
 std::vector<double> fineStops(double fstopMin, double fstopMax, double step) {
+    // A list to choose from, not a sweep: refuse a step or range that would never end.
+    constexpr double kMaxCount = 1e5;
+    const double first = std::ceil(fstopMin / step - 1e-9);
+    if (!(step > 0) || !(std::fabs(first) < 1e15) || !((fstopMax + 1e-12) / step - first < kMaxCount))
+        throw OpticsError("f-number steps of " + fmt(step) + " from f/" + fmt(fstopMin) + " to f/" +
+                          fmt(fstopMax) + " are not a finite list of at most 100000");
     std::vector<double> stops;
-    for (long k = static_cast<long>(std::ceil(fstopMin / step - 1e-9)); k * step <= fstopMax + 1e-12; ++k)
-        stops.push_back(k * step);
+    for (long k = static_cast<long>(first); k * step <= fstopMax + 1e-12; ++k) stops.push_back(k * step);
     return stops;
 }
 

@@ -9,7 +9,7 @@ namespace {
 
 void line(std::string& out, const char* label, double v, const char* note = "") {
     char b[160];
-    std::snprintf(b, sizeof b, "  %-28s %12.4f mm  %s\n", label, v, note);
+    std::snprintf(b, sizeof b, *note ? "  %-28s %12.4f mm  %s\n" : "  %-28s %12.4f mm\n", label, v, note);
     out += b;
 }
 
@@ -33,7 +33,7 @@ std::string lensAnalysisText(const LensAnalysis& a) {
     line(out, "P   (front principal) z", fo.zP);
     line(out, "P'  (rear principal) z", fo.zPPrime);
     out += "\nAperture\n";
-    std::snprintf(b, sizeof b, "  %-28s %12.4f     (range f/%.4g to f/%.4g)\n", "f-number", a.fstop,
+    std::snprintf(b, sizeof b, "  %-28s %12.4f     (range f/%.3g to f/%.0f)\n", "f-number", a.fstop,
                   a.aperture.fstopMin, a.aperture.fstopMax);
     out += b;
     line(out, "stop z", a.lens.stop().z);

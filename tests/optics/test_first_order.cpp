@@ -148,7 +148,7 @@ TEST(Aperture, OutOfRangeFNumberNamesTheRange) {
         stopDiameterForFstop(lens, fo, range, 1.4);
         FAIL();
     } catch (const OpticsError& e) {
-        EXPECT_STREQ(e.what(), "f-number 1.4 is outside this lens's range f/2.02 to f/1e+04");
+        EXPECT_STREQ(e.what(), "f-number 1.4 is outside this lens's range f/2.02 to f/10000");
     }
     EXPECT_THROW(stopDiameterForFstop(lens, fo, range, 20000), OpticsError);
     EXPECT_THROW(stopDiameterForFstop(lens, fo, range, std::nan("")), OpticsError);
