@@ -60,13 +60,15 @@ TraceResult traceThick(const ThickLens& lens, const Ray& ray, TraceDirection dir
     }
     const double t = (zIn - ray.origin.z) / d.z;
     const double qx = ray.origin.x + t * d.x, qy = ray.origin.y + t * d.y;
-    // A point on the incoming ray a focal length before the principal plane, in coordinates local
-    // to that plane, and the homogeneous weight the matrix gives it (w = 1 -/+ z/f). Its conjugate
-    // lies on the outgoing ray; writing the direction with w (not dividing by it) keeps points at
-    // infinity (w = 0, the focal planes) exact.
-    const double xl = qx - lens.f * d.x, yl = qy - lens.f * d.y, zl = -lens.f * d.z;
-    const double w = 1.0 + (toFilm ? -zl : zl) / lens.f;
-    const Vec3 dir{w * qx - xl, w * qy - yl, -zl};
+    // The conjugate of a point on the incoming ray (a focal length before the principal plane) lies
+    // on the outgoing ray. Keeping it homogeneous (h.w not divided out) keeps points at infinity
+    // (w = 0, on a focal plane) exact: the outgoing direction is -(h.xyz - h.w * q_out).
+    const Matrix4 m = toFilm ? objectToImageMatrix(lens) : imageToObjectMatrix(lens);
+    const double p[4] = {qx - lens.f * d.x, qy - lens.f * d.y, zIn - lens.f * d.z, 1.0};
+    double h[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 4; ++k) h[i] += m[i][k] * p[k];
+    const Vec3 dir{h[3] * qx - h[0], h[3] * qy - h[1], h[3] * zOut - h[2]};
     const double len = length(dir);
     if (!(len > 0) || !(dir.z * outward > 0)) {
         result.blocked = BlockReason::MissedSurface;

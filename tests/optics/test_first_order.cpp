@@ -13,6 +13,7 @@
 #include "OpticsError.h"
 #include "ParaxialYNu.h"
 #include "Pupils.h"
+#include "ThickLens.h"
 
 using namespace lenslab;
 using namespace lenslab::test;
@@ -221,4 +222,25 @@ TEST(Focus, RefusesDistancesItCannotReach) {
     const FocusResult near = focusAt(table, fo, pupils, closest);
     EXPECT_TRUE(std::isfinite(near.imageZExact));
     EXPECT_LT(near.imageZExact, table.rearZ());
+}
+
+TEST(ThickLens, MatricesAreInversesAndImageByTheLensEquation) {
+    const LensAnalysis a = analyzeLens(loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/lenses/telephoto.250mm.dat"),
+                                       std::nullopt, kInf);
+    const Matrix4 t = objectToImageMatrix(a.thick), inv = imageToObjectMatrix(a.thick);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            double v = 0;
+            for (int k = 0; k < 4; ++k) v += t[i][k] * inv[k][j];
+            EXPECT_NEAR(v, i == j ? 1.0 : 0.0, 1e-12);
+        }
+    // An object 3 m in front of P, 100 mm off axis: 1/s + 1/s' = 1/f and magnification -s'/s.
+    const double f = a.firstOrder.efl, s = 3000, y = 100;
+    const double p[4] = {0, y, a.firstOrder.zP + s, 1};
+    double h[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 4; ++k) h[i] += t[i][k] * p[k];
+    const double sImage = 1 / (1 / f - 1 / s);
+    EXPECT_NEAR(h[2] / h[3], a.firstOrder.zPPrime - sImage, 1e-9);
+    EXPECT_NEAR(h[1] / h[3], -y * sImage / s, 1e-9);
 }
