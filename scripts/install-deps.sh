@@ -10,10 +10,12 @@ packages=(
   libembree-dev libopenexr-dev libimath-dev libpng-dev libtbb-dev
   libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev
   libgtest-dev libbenchmark-dev
-  fonts-dejavu-core
+  libfreetype-dev fonts-dejavu-core
 )
 if [ "${1:-}" = "--tests" ]; then
   packages+=(chromium)
+  # libFuzzer with ASan/UBSan for scripts/fuzz.sh (the runtime ships in libclang-rt-14-dev).
+  packages+=(clang libclang-rt-14-dev)
   # Node may already come from elsewhere (its npm then conflicts with Debian's npm package).
   command -v node >/dev/null || packages+=(nodejs)
   command -v npm >/dev/null || packages+=(npm)

@@ -6,5 +6,6 @@
 namespace lenslab {
 
 int runLensCommand(const std::vector<std::string>& args);
+int runDiagramCommand(const std::vector<std::string>& args);
 
 }  // namespace lenslab

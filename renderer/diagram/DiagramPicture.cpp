@@ -1,0 +1,289 @@
+#include "DiagramPicture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "DiagramStyle.h"
+
+namespace lenslab {
+
+namespace {
+
+using namespace diagram_style;
+
+std::string format(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+std::string millimetres(double value) { return format(std::abs(value) >= 100 ? "%.0f mm" : "%.1f mm", value); }
+
+const char* modeCaption(DiagramMode mode) {
+    switch (mode) {
+        case DiagramMode::Exact: return "exact rays";
+        case DiagramMode::Thick: return "thick-lens rays";
+        case DiagramMode::Overlay: return "exact and thick-lens rays";
+    }
+    return "";
+}
+
+// Labels in two rows above or below the lens. Each goes in the first row with room near its
+// target, sliding sideways past its neighbours when needed; a thin leader joins it to the target.
+struct LabelRows {
+    double firstBaseline = 0;
+    double rowStep = 0;  // negative: rows stack upward
+    std::vector<std::vector<std::pair<double, double>>> taken{2};
+
+    // Returns the label's centre x and baseline.
+    Point2 place(double x, double halfWidth) {
+        for (std::size_t row = 0; row < taken.size(); ++row) {
+            auto& spans = taken[row];
+            auto fits = [&](double c) {
+                return std::none_of(spans.begin(), spans.end(), [&](const auto& span) {
+                    return c + halfWidth > span.first && c - halfWidth < span.second;
+                });
+            };
+            std::vector<double> candidates{x};
+            for (const auto& span : spans) {
+                candidates.push_back(span.second + halfWidth);
+                candidates.push_back(span.first - halfWidth);
+            }
+            std::sort(candidates.begin(), candidates.end(),
+                      [&](double a, double b) { return std::abs(a - x) < std::abs(b - x); });
+            for (double c : candidates) {
+                if (std::abs(c - x) > 3 * halfWidth || !fits(c)) continue;
+                spans.push_back({c - halfWidth, c + halfWidth});
+                return {c, firstBaseline + rowStep * static_cast<double>(row)};
+            }
+        }
+        return {x, firstBaseline + rowStep * static_cast<double>(taken.size() - 1)};
+    }
+};
+
+struct Composer {
+    const LensAnalysis& a;
+    const DiagramOptions& options;
+    DiagramPicture& pic;
+    int em = 14, small = 12;  // text sizes, pixels
+    double lw = 1;            // line width unit, pixels
+    LabelRows above{}, below{};
+
+    Point2 at(ZY p) const { return pic.view.toPicture(p); }
+
+    void label(Point2 p, const std::string& text, int size, Rgba colour, TextAnchor anchor = TextAnchor::Centre) {
+        pic.labels.push_back({p, text, size, colour, anchor});
+    }
+
+    // A name in the rows above (up) or below the content, led to `target`.
+    void rowLabel(bool up, Point2 target, const std::string& text, Rgba colour) {
+        LabelRows& rows = up ? above : below;
+        const Point2 spot = rows.place(target.x, 0.5 * textWidth(text, small) + 0.4 * small);
+        const double labelEdge = up ? spot.y + 0.3 * small : spot.y - small;
+        addLine(pic.shapes, {spot.x, labelEdge}, target, 0.8 * lw, kLeader);
+        label(spot, text, small, colour);
+    }
+
+    void glass(const LensOutline& outline) {
+        for (const GlassElement& g : outline.glass)
+            for (std::size_t i = 1; i < g.front.size(); ++i)
+                addQuad(pic.shapes, at(g.front[i - 1]), at(g.rear[i - 1]), at(g.rear[i]), at(g.front[i]), kGlass);
+    }
+
+    void lensLines(const LensOutline& outline) {
+        std::vector<Point2> points;
+        for (const auto& line : outline.lines) {
+            points.clear();
+            for (const ZY& p : line) points.push_back(at(p));
+            addPolyline(pic.shapes, points, 1.5 * lw, kLensLine);
+        }
+    }
+
+    void stop(const StopBlades& s) {
+        for (double sign : {1.0, -1.0})
+            addLine(pic.shapes, at({s.z, sign * s.openingRadius}), at({s.z, sign * s.outerRadius}), 3.5 * lw, kStop);
+        rowLabel(true, at({s.z, s.outerRadius}), "stop f/" + format("%.3g", a.fstop), kStop);
+    }
+
+    void axis() {
+        const double y = pic.view.yAtAxis;
+        addDashedPolyline(pic.shapes, {{pic.content.left, y}, {pic.content.right, y}}, lw, 9 * lw, 4 * lw, kAxis);
+        label({pic.content.left + 0.2 * small, y - 0.35 * small}, "optical axis", small, kNote, TextAnchor::Left);
+    }
+
+    void film(double filmZ, double halfHeight) {
+        addLine(pic.shapes, at({filmZ, halfHeight}), at({filmZ, -halfHeight}), 2.5 * lw, kFilm);
+        rowLabel(false, at({filmZ, -halfHeight}), "film", kFilm);
+    }
+
+    void principalPlane(double z, double halfHeight, const std::string& name) {
+        addDashedPolyline(pic.shapes, {at({z, halfHeight}), at({z, -halfHeight})}, lw, 5 * lw, 4 * lw, faded(kCardinal));
+        rowLabel(false, at({z, -halfHeight}), name, kCardinal);
+    }
+
+    void focalPoint(double z, const std::string& name) {
+        const Point2 p = at({z, 0});
+        addDisc(pic.shapes, p, 3.5 * lw, kCardinal);
+        label({p.x, p.y + 1.3 * small}, name, small, kCardinal);
+    }
+
+    void pupil(double z, double diameter, const std::string& name) {
+        const double r = diameter / 2, tick = 5 * lw;
+        const Point2 top = at({z, r}), bottom = at({z, -r});
+        addDashedPolyline(pic.shapes, {top, bottom}, lw, 2 * lw, 3 * lw, kPupil);
+        for (const Point2& end : {top, bottom}) addLine(pic.shapes, {end.x - tick, end.y}, {end.x + tick, end.y}, 2.5 * lw, kPupil);
+        rowLabel(true, top, name, kPupil);
+    }
+
+    // A marker outside the picture: an arrow at the edge on the axis, stacked per edge.
+    void offPicture(double z, const std::string& name, int stackIndex) {
+        const bool leftEdge = pic.view.toPicture({z, 0}).x < pic.content.left;
+        const double x = leftEdge ? pic.content.left : pic.content.right;
+        const double y = pic.view.yAtAxis + (1.8 + 1.4 * stackIndex) * small;
+        addArrowHead(pic.shapes, {x, y}, leftEdge ? -1 : 1, 0, 9 * lw, kCardinal);
+        const double inset = 10 * lw + 0.3 * small;
+        label({leftEdge ? x + inset : x - inset, y + 0.35 * small}, name + " at z = " + millimetres(z) + " (off picture)",
+              small, kCardinal, leftEdge ? TextAnchor::Left : TextAnchor::Right);
+    }
+
+    void rays(const std::vector<FanRay>& fans) {
+        for (const FanRay& ray : fans) {
+            const Rgba colour = ray.model == RayModel::Exact ? kExactRay : kThickRay;
+            std::vector<Point2> points;
+            for (const ZY& p : ray.points) points.push_back(at(p));
+            for (const auto& piece : clipPolyline(points, pic.content))
+                addPolyline(pic.shapes, piece, 1.3 * lw, ray.blocked ? faded(colour) : colour);
+            if (ray.blocked) addCross(pic.shapes, points.back(), 3.5 * lw, 1.6 * lw, kBlockMark);
+        }
+    }
+
+    void caption(const std::string& lensName, double filmZ) {
+        const FocusResult& f = a.focus;
+        const std::string focus = f.infinity ? "\u221E" : millimetres(f.objectZ);
+        label({pic.content.left, 1.35 * em},
+              lensName + "   EFL " + format("%.2f mm", a.firstOrder.efl) + "   f/" + format("%.3g", a.fstop) +
+                  "   focus " + focus + "   " + modeCaption(options.mode),
+              em, kText, TextAnchor::Left);
+        std::string note = "front (scene side) on the left, film on the right;  film at z = " + millimetres(filmZ);
+        if (pic.fieldHeight > 0) note += ";  field point " + millimetres(pic.fieldHeight) + " below the axis";
+        label({pic.content.left, 1.35 * em + 1.3 * small}, note, small, kNote, TextAnchor::Left);
+    }
+
+    // Ray colours, the blocked-ray mark and a scale bar along the bottom edge.
+    void legend() {
+        const double baseline = pic.height - 0.55 * small, mid = baseline - 0.35 * small;
+        double x = pic.content.left;
+        auto entry = [&](Rgba colour, const std::string& text) {
+            addLine(pic.shapes, {x, mid}, {x + 1.8 * small, mid}, 2 * lw, colour);
+            label({x + 2.2 * small, baseline}, text, small, kText, TextAnchor::Left);
+            x += 2.2 * small + textWidth(text, small) + 1.2 * small;
+        };
+        if (options.mode != DiagramMode::Thick) entry(kExactRay, "exact rays");
+        if (options.mode != DiagramMode::Exact) entry(kThickRay, "thick-lens rays");
+        addCross(pic.shapes, {x + 0.5 * small, mid}, 3.5 * lw, 1.6 * lw, kBlockMark);
+        label({x + 1.3 * small, baseline}, "blocked ray (faded)", small, kText, TextAnchor::Left);
+
+        // A 1-2-5 length near 120 pixels.
+        const double target = 120.0 / pic.view.scale;
+        const double decade = std::pow(10.0, std::floor(std::log10(target)));
+        double length = decade;
+        for (double m : {2.0, 5.0, 10.0})
+            if (m * decade <= target) length = m * decade;
+        const double right = pic.content.right, left = right - length * pic.view.scale;
+        addLine(pic.shapes, {left, mid}, {right, mid}, 2 * lw, kText);
+        for (double end : {left, right}) addLine(pic.shapes, {end, mid - 4 * lw}, {end, mid + 4 * lw}, 1.5 * lw, kText);
+        label({left - 0.5 * small, baseline}, format(length >= 1 ? "%.0f mm" : "%.1f mm", length), small, kText,
+              TextAnchor::Right);
+    }
+};
+
+struct Marker {
+    enum Kind { FocalPoint, PrincipalPlane, Pupil } kind;
+    double z;
+    std::string name;
+    double diameter = 0;  // pupils
+};
+
+}  // namespace
+
+DiagramPicture composeDiagram(const LensAnalysis& a, const std::string& lensName, const DiagramOptions& options) {
+    DiagramPicture pic;
+    pic.width = options.width;
+    pic.height = options.height;
+    Composer c{a, options, pic};
+    const double unit = std::min(pic.width, 2 * pic.height) / 1200.0;
+    c.em = std::clamp(static_cast<int>(std::lround(17 * unit)), 11, 48);
+    c.small = std::clamp(static_cast<int>(std::lround(14 * unit)), 10, 40);
+    c.lw = std::clamp(unit, 0.8, 4.0);
+
+    const LensOutline outline = buildLensOutline(a.lens);
+    const double filmZ = a.focus.imageZExact, frontZ = a.lens.frontZ();
+    const double span = frontZ - filmZ;
+    pic.fieldHeight = options.fieldHeight.value_or(automaticFieldHeight(a, filmZ));
+    const double filmHalf = std::max(1.25 * pic.fieldHeight, 0.3 * outline.maxRadius);
+
+    // The view: film to a little in front of the lens, or to the focused object when it is near;
+    // cardinal points and pupils join when they are not far off, the others get edge arrows.
+    const bool objectInView = !a.focus.infinity && a.focus.objectZ - frontZ <= 2 * span;
+    double zMax = objectInView ? a.focus.objectZ + 0.04 * span : frontZ + 0.45 * span;
+    double zMin = std::min(filmZ, a.firstOrder.zFPrime) - 0.04 * span;
+    const std::vector<Marker> markers{
+        {Marker::FocalPoint, a.firstOrder.zF, "F"},
+        {Marker::FocalPoint, a.firstOrder.zFPrime, "F\u2032"},
+        {Marker::PrincipalPlane, a.firstOrder.zP, "P"},
+        {Marker::PrincipalPlane, a.firstOrder.zPPrime, "P\u2032"},
+        {Marker::Pupil, a.pupils.entrance.z, "entrance pupil", a.pupils.entrance.diameter},
+        {Marker::Pupil, a.pupils.exit.z, "exit pupil", a.pupils.exit.diameter}};
+    for (const Marker& m : markers) {
+        if (m.z > frontZ + 1.2 * span || m.z < filmZ - 0.5 * span) continue;
+        zMax = std::max(zMax, m.z + 0.04 * span);
+        zMin = std::min(zMin, m.z - 0.04 * span);
+    }
+    const double yHalf = 1.08 * std::max({outline.maxRadius, filmHalf, a.pupils.entrance.diameter / 2,
+                                          a.pupils.exit.diameter / 2});
+    c.above = {1.35 * c.em + 1.3 * c.small + 2.9 * c.small, -1.3 * c.small};
+    pic.content = {1.0 * c.em, c.above.firstBaseline + 0.5 * c.small, pic.width - 1.0 * c.em,
+                   pic.height - 1.6 * c.small - 2.9 * c.small};
+    c.below = {pic.content.bottom + 1.2 * c.small, 1.3 * c.small};
+    pic.view = fitView(zMin, zMax, yHalf, pic.content);
+
+    FanSetup setup;
+    setup.filmZ = filmZ;
+    setup.fieldHeight = pic.fieldHeight;
+    setup.rays = options.rays;
+    setup.endZ = objectInView ? a.focus.objectZ : pic.view.zAt(pic.content.left);
+    // Thick-lens rays first, so in overlay the real rays lie on top and the approximation shows
+    // where it departs from them.
+    if (options.mode != DiagramMode::Exact) pic.rays = traceRayFans(a, RayModel::Thick, setup);
+    if (options.mode != DiagramMode::Thick) {
+        std::vector<FanRay> exact = traceRayFans(a, RayModel::Exact, setup);
+        pic.rays.insert(pic.rays.end(), exact.begin(), exact.end());
+    }
+
+    c.glass(outline);
+    const double planeHalf = 1.05 * outline.maxRadius;
+    const double zLeftEdge = pic.view.zAt(pic.content.left), zRightEdge = pic.view.zAt(pic.content.right);
+    int offLeft = 0, offRight = 0;
+    std::vector<const Marker*> shown;
+    for (const Marker& m : markers) {
+        if (m.z <= zLeftEdge && m.z >= zRightEdge) shown.push_back(&m);
+        else c.offPicture(m.z, m.name, m.z > zLeftEdge ? offLeft++ : offRight++);
+    }
+    for (const Marker* m : shown)
+        if (m->kind == Marker::PrincipalPlane) c.principalPlane(m->z, planeHalf, m->name);
+    c.axis();
+    c.lensLines(outline);
+    c.stop(outline.stop);
+    c.film(filmZ, filmHalf);
+    c.rays(pic.rays);
+    for (const Marker* m : shown) {
+        if (m->kind == Marker::FocalPoint) c.focalPoint(m->z, m->name);
+        if (m->kind == Marker::Pupil) c.pupil(m->z, m->diameter, m->name);
+    }
+    c.caption(lensName, filmZ);
+    c.legend();
+    return pic;
+}
+
+}  // namespace lenslab

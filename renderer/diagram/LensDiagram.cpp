@@ -1,0 +1,76 @@
+#include "LensDiagram.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "DiagramPicture.h"
+#include "DiagramStyle.h"
+#include "LensAnalysis.h"
+#include "PngCodec.h"
+#include "ThreadContexts.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr int kMinWidth = 320, kMinHeight = 200, kMaxSide = 8192;
+constexpr int kMaxRays = 201;
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+// "lenses/dgauss.50mm.dat" -> "dgauss.50mm".
+std::string displayName(const std::string& name) {
+    std::string base = name.substr(name.find_last_of('/') + 1);
+    const std::string suffix = ".dat";
+    if (base.size() > suffix.size() && base.compare(base.size() - suffix.size(), suffix.size(), suffix) == 0)
+        base.resize(base.size() - suffix.size());
+    return base;
+}
+
+void validate(const DiagramOptions& o) {
+    if (o.width < kMinWidth || o.height < kMinHeight || o.width > kMaxSide || o.height > kMaxSide)
+        throw DiagramError("diagram size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+                           " is outside " + std::to_string(kMinWidth) + "x" + std::to_string(kMinHeight) + " to " +
+                           std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide) + " pixels");
+    if (o.rays < 1 || o.rays > kMaxRays)
+        throw DiagramError("rays per fan must be 1 to " + std::to_string(kMaxRays) + ", got " + std::to_string(o.rays));
+    if (o.fstop && !(std::isfinite(*o.fstop) && *o.fstop > 0))
+        throw DiagramError("f-number must be a positive number, got " + number(*o.fstop));
+    if (!(o.focusDistance > 0))  // also refuses NaN; infinity is allowed
+        throw DiagramError("focus distance must be positive (mm in front of the front vertex) or infinity, got " +
+                           number(o.focusDistance));
+    if (o.fieldHeight && !(std::isfinite(*o.fieldHeight) && *o.fieldHeight >= 0))
+        throw DiagramError("field height must be a non-negative number of mm on the film, got " + number(*o.fieldHeight));
+}
+
+}  // namespace
+
+DiagramMode parseDiagramMode(const std::string& name) {
+    if (name == "exact") return DiagramMode::Exact;
+    if (name == "thick") return DiagramMode::Thick;
+    if (name == "overlay") return DiagramMode::Overlay;
+    throw DiagramError("diagram mode must be exact, thick or overlay, got '" + name + "'");
+}
+
+DiagramBackendKind parseDiagramBackend(const std::string& name) {
+    if (name == "osmesa") return DiagramBackendKind::OSMesa;
+    if (name == "egl") return DiagramBackendKind::EGL;
+    if (name == "auto") return DiagramBackendKind::Auto;
+    throw DiagramError("diagram backend must be osmesa, egl or auto, got '" + name + "'");
+}
+
+std::vector<std::uint8_t> drawLensDiagramPng(const LensSystem& lens, const DiagramOptions& options) {
+    validate(options);
+    const LensAnalysis analysis = analyzeLens(lens, options.fstop, options.focusDistance);
+    const DiagramPicture picture = composeDiagram(analysis, displayName(lens.name), options);
+    std::vector<std::uint8_t> pixels = threadCanvas(options.backend)
+                                           .rasterise(picture.shapes, picture.width, picture.height, diagram_style::kBackground);
+    drawTextLabels(pixels, picture.width, picture.height, picture.labels, diagram_style::kBackground);
+    return encodePngRgba8(picture.width, picture.height, pixels.data());
+}
+
+}  // namespace lenslab

@@ -1,0 +1,90 @@
+// Bad requests give clear errors, never a crash or a picture.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "DiagramTestSupport.h"
+#include "LensTable.h"
+#include "OpticsError.h"
+
+namespace lenslab::test {
+namespace {
+
+template <class Error>
+std::string messageOf(const LensSystem& lens, const DiagramOptions& options) {
+    try {
+        drawLensDiagramPng(lens, options);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no error thrown";
+    return "";
+}
+
+TEST(DiagramBadInput, UnknownLensFileNamesThePath) {
+    try {
+        loadLensSystem("/no/such/lens.dat");
+        FAIL() << "no error";
+    } catch (const LensTableError& e) {
+        EXPECT_NE(std::string(e.what()).find("/no/such/lens.dat"), std::string::npos) << e.what();
+    }
+}
+
+TEST(DiagramBadInput, InvalidFstop) {
+    const LensSystem lens = loadBundledLens("dgauss.50mm");
+    DiagramOptions o;
+    for (double bad : {0.0, -2.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+        o.fstop = bad;
+        EXPECT_NE(messageOf<DiagramError>(lens, o).find("f-number"), std::string::npos);
+    }
+    o.fstop = 1.0;  // wider than the lens allows: the optics names the range
+    EXPECT_NE(messageOf<OpticsError>(lens, o).find("f/2.02"), std::string::npos);
+}
+
+TEST(DiagramBadInput, AbsurdSizes) {
+    const LensSystem lens = loadBundledLens("dgauss.50mm");
+    for (auto [w, h] : {std::pair{0, 0}, std::pair{100000, 100000}, std::pair{1200, 0}, std::pair{-5, 600}}) {
+        DiagramOptions o;
+        o.width = w;
+        o.height = h;
+        const std::string message = messageOf<DiagramError>(lens, o);
+        EXPECT_NE(message.find(std::to_string(w) + "x" + std::to_string(h)), std::string::npos) << message;
+    }
+}
+
+TEST(DiagramBadInput, RaysFocusAndField) {
+    const LensSystem lens = loadBundledLens("dgauss.50mm");
+    DiagramOptions o;
+    o.rays = 0;
+    EXPECT_NE(messageOf<DiagramError>(lens, o).find("rays"), std::string::npos);
+    o = {};
+    o.focusDistance = -10;
+    EXPECT_NE(messageOf<DiagramError>(lens, o).find("focus"), std::string::npos);
+    o = {};
+    o.focusDistance = 5;  // inside the front focal length
+    EXPECT_FALSE(messageOf<OpticsError>(lens, o).empty());
+    o = {};
+    o.fieldHeight = -1;
+    EXPECT_NE(messageOf<DiagramError>(lens, o).find("field"), std::string::npos);
+}
+
+TEST(DiagramBadInput, UnknownModeAndBackendNameTheChoices) {
+    EXPECT_EQ(parseDiagramMode("overlay"), DiagramMode::Overlay);
+    EXPECT_EQ(parseDiagramBackend("egl"), DiagramBackendKind::EGL);
+    try {
+        parseDiagramMode("wireframe");
+        FAIL();
+    } catch (const DiagramError& e) {
+        EXPECT_NE(std::string(e.what()).find("exact, thick or overlay"), std::string::npos);
+    }
+    try {
+        parseDiagramBackend("vulkan");
+        FAIL();
+    } catch (const DiagramError& e) {
+        EXPECT_NE(std::string(e.what()).find("osmesa, egl or auto"), std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace lenslab::test
