@@ -12,7 +12,7 @@ constexpr double kMaxFstop = 10000.0;  // any stop opening a simulation can use 
 
 struct ApertureRange {
     double fstopMin = 0;          // the widest the lens allows (table stop or an element clips)
-    double fstopMax = kMaxFstop;
+    double fstopMax = kMaxFstop;  // or fstopMin, for a lens slower than that at its widest
     double stopDiameterMax = 0;   // the stop opening at fstopMin, mm
 };
 
@@ -27,7 +27,8 @@ double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const 
 
 // Full stops (powers of sqrt 2) from the first at or above fstopMin up to fstopMax, exact values.
 std::vector<double> fullStops(double fstopMin, double fstopMax = 64.0);
-// Steps of `step` from fstopMin (rounded up to the step) to fstopMax.
+// Steps of `step` from fstopMin (rounded up to the step) to fstopMax. Throws OpticsError for a step
+// that is not positive or a list longer than 100000.
 std::vector<double> fineStops(double fstopMin, double fstopMax, double step = 0.1);
 
 }  // namespace lenslab

@@ -30,4 +30,10 @@ struct TraceResult {
 TraceResult traceRay(const LensSystem& lens, const Ray& ray, TraceDirection direction,
                      const TraceOptions& options = {});
 
+// The same trace carried out in Scalar arithmetic (float or double; both instantiated), to measure
+// what a float renderer would lose. Input, output and the lens stay double.
+template <class Scalar>
+TraceResult traceRayT(const LensSystem& lens, const Ray& ray, TraceDirection direction,
+                      const TraceOptions& options = {});
+
 }  // namespace lenslab

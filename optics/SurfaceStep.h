@@ -45,19 +45,23 @@ inline BlockReason stepThroughSurface(T& px, T& py, T& pz, T& dx, T& dy, T& dz, 
     const bool missed = !(disc >= T(0)) | !(nearOk | farOk) | !(t < T(1e30));
     const bool outside = hx * hx + hy * hy > apertureRadius2;
 
-    // Orient the normal against the incoming ray. Everything below is selects rather than branches
-    // so that the batch loop vectorises; a blocked ray keeps its state.
-    const T nDotD = curvature * (hx * dx + hy * dy) + nzCap * dz;
+    // The normal c q + e_z is unit length on the sphere; normalising it anyway keeps refraction
+    // unit-length when rounding leaves the hit a little off a tiny, strongly curved surface.
+    // Orient it against the incoming ray. Everything below is selects rather than branches so that
+    // the batch loop vectorises; a blocked ray keeps its state.
+    const T nx = curvature * hx, ny = curvature * hy;
+    const T inv = T(1) / std::sqrt(nx * nx + ny * ny + nzCap * nzCap);
+    const T nDotD = (nx * dx + ny * dy + nzCap * dz) * inv;
     const T sign = nDotD > T(0) ? T(-1) : T(1);
     const T cosi = -sign * nDotD;
     const T k = T(1) - eta * eta * (T(1) - cosi * cosi);
     const bool tir = !(k >= T(0));
     const bool pass = !missed & !outside & !tir;
-    const T m = sign * (eta * cosi - std::sqrt(k > T(0) ? k : T(0)));
+    const T m = sign * inv * (eta * cosi - std::sqrt(k > T(0) ? k : T(0)));
     px = pass ? hx : px;
     py = pass ? hy : py;
     pz = pass ? hqz + zVertex : pz;
-    const T ex = eta * dx + m * curvature * hx, ey = eta * dy + m * curvature * hy, ez = eta * dz + m * nzCap;
+    const T ex = eta * dx + m * nx, ey = eta * dy + m * ny, ez = eta * dz + m * nzCap;
     dx = pass ? ex : dx;
     dy = pass ? ey : dy;
     dz = pass ? ez : dz;

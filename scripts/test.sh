@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The one test command: installs dependencies, builds, and runs every test (unit, integration,
-# browser) through CTest.
+# browser) through CTest, then a short fuzz run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --tests
 scripts/build.sh
 ctest --test-dir build --output-on-failure -j2 --timeout 600
+# A short fuzz of the lens-table parser and the tracer (30 s each; skipped without clang).
+scripts/fuzz.sh 30

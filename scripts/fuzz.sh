@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang, ASan + UBSan) in build-fuzz/ and runs each for SECONDS
+# (default 60) on a scratch copy of tests/fuzz/corpus/<target>; new inputs stay in the copy.
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   (targets: lens_table trace; default both)
+# Exits 0 without fuzzing when clang or its libFuzzer runtime is missing; non-zero on a finding,
+# whose reproducer is left in build-fuzz/findings/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(lens_table trace)
+
+if ! command -v clang++ >/dev/null ||
+   ! echo 'extern "C" int LLVMFuzzerTestOneInput(const char*, unsigned long) { return 0; }' |
+     clang++ -x c++ -fsanitize=fuzzer - -o /dev/null 2>/dev/null; then
+  echo "fuzz.sh: clang++ with libFuzzer not available; skipping (scripts/install-deps.sh --tests installs it)"
+  exit 0
+fi
+
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLENSLAB_FUZZ=ON \
+  -DLENSLAB_BUILD_BENCH=OFF -DLENSLAB_NATIVE=OFF >/dev/null
+cmake --build build-fuzz -j"${LENSLAB_JOBS:-2}" --target "${targets[@]/#/fuzz_}"
+
+rm -rf build-fuzz/findings
+mkdir -p build-fuzz/findings
+for t in "${targets[@]}"; do
+  work="build-fuzz/corpus-$t"
+  log="build-fuzz/fuzz-$t.log"
+  rm -rf "$work"
+  cp -r "tests/fuzz/corpus/$t" "$work"
+  echo "fuzz.sh: fuzz_$t for ${seconds}s (log: $log)"
+  # -timeout: an input taking 10 s counts as a hang; -rss_limit_mb catches runaway allocation.
+  if ! build-fuzz/tests/fuzz/fuzz_"$t" "$work" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+      -max_len=4096 -print_final_stats=1 -artifact_prefix=build-fuzz/findings/"$t"- >"$log" 2>&1; then
+    tail -n 60 "$log"
+    echo "fuzz.sh: fuzz_$t found a problem; reproducer in build-fuzz/findings/"
+    exit 1
+  fi
+  grep -E '^(Done|stat::)' "$log"
+done
