@@ -1,5 +1,6 @@
 #pragma once
 // The ray tracer's entry point: a scene file in, an image (and its statistics) out.
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -28,6 +29,9 @@ struct RenderSettings {
     int threads = 0;                       // 0 = all cores
     int tileSize = 32;
     std::uint64_t seed = 0;
+    // Crop window x0, x1, y0, y1 as fractions of the image (pbrt's cropwindow); unset = the scene's.
+    // The output image holds only the cropped pixels.
+    std::optional<std::array<double, 4>> crop;
 };
 
 struct Image {

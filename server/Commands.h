@@ -7,5 +7,6 @@ namespace lenslab {
 
 int runLensCommand(const std::vector<std::string>& args);
 int runDiagramCommand(const std::vector<std::string>& args);
+int runRenderCommand(const std::vector<std::string>& args);
 
 }  // namespace lenslab

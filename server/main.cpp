@@ -20,6 +20,7 @@ struct Subcommand {
 const Subcommand kSubcommands[] = {
     {"lens", "first-order data of a lens table (EFL, F, F', P, P', pupils, f-number, focus)", lenslab::runLensCommand},
     {"diagram", "the lens cross-section with ray fans as a PNG (offscreen OpenGL)", lenslab::runDiagramCommand},
+    {"render", "render a scene (pbrt-v3 subset) with a perspective or realistic lens camera", lenslab::runRenderCommand},
 };
 
 void printUsage(std::ostream& out) {

@@ -1,0 +1,219 @@
+#include "ExitPupilBounds.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "OpticsError.h"
+#include "RayBatch.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxVertices = 256;
+
+// Which aiming-plane points (x, y) pass the lens from the film point (r, 0, filmZ).
+class PassTest {
+public:
+    PassTest(const LensSystem& lens, double filmZ, double aimZ) : lens_(lens), filmZ_(filmZ), aimZ_(aimZ) {}
+
+    std::vector<bool> operator()(double r, const std::vector<double>& xs, const std::vector<double>& ys) {
+        batch_.resize(xs.size());
+        for (std::size_t i = 0; i < xs.size(); ++i) {
+            const Vec3 from{r, 0, filmZ_};
+            batch_.set(i, {from, normalize(Vec3{xs[i], ys[i], aimZ_} - from)});
+        }
+        traceBatch(lens_, batch_, TraceDirection::FilmToScene);
+        std::vector<bool> pass(xs.size());
+        for (std::size_t i = 0; i < xs.size(); ++i) pass[i] = batch_.blocked[i] == BlockReason::None;
+        return pass;
+    }
+
+private:
+    const LensSystem& lens_;
+    double filmZ_, aimZ_;
+    RayBatch batch_;
+};
+
+struct GridScan {
+    bool any = false;
+    bool touchesEdge = false;
+    double centreX = 0;
+    double reach = 0;  // farthest passing point from the centre
+};
+
+// Passing points of a grid over the half-disc y >= 0 of radius `extent` (the region is symmetric).
+GridScan scanGrid(PassTest& passes, double r, double extent, int cells) {
+    std::vector<double> xs, ys;
+    const double cell = 2.0 * extent / cells;
+    for (int j = 0; j < cells / 2; ++j)
+        for (int i = 0; i < cells; ++i) {
+            xs.push_back(-extent + (i + 0.5) * cell);
+            ys.push_back((j + 0.5) * cell);
+        }
+    const std::vector<bool> pass = passes(r, xs, ys);
+    GridScan g;
+    double sumX = 0;
+    int count = 0;
+    for (std::size_t k = 0; k < pass.size(); ++k) {
+        if (!pass[k]) continue;
+        sumX += xs[k];
+        ++count;
+        if (std::hypot(xs[k], ys[k]) > extent - 1.5 * cell) g.touchesEdge = true;
+    }
+    if (count == 0) return g;
+    g.any = true;
+    g.centreX = sumX / count;
+    for (std::size_t k = 0; k < pass.size(); ++k)
+        if (pass[k]) g.reach = std::max(g.reach, std::hypot(xs[k] - g.centreX, ys[k]) + cell);
+    return g;
+}
+
+// The outermost passing distance along each of the half-polygon's directions: a scan inward from
+// beyond the grid's reach, then bisection of the last step.
+std::vector<double> boundaryDistances(PassTest& passes, double r, const GridScan& g, int vertices) {
+    constexpr int kSteps = 64, kBisections = 16;
+    const int half = vertices / 2 + 1;
+    std::vector<double> cosA(half), sinA(half);
+    for (int k = 0; k < half; ++k) {
+        cosA[k] = std::cos(2.0 * kPi * k / vertices);
+        sinA[k] = std::sin(2.0 * kPi * k / vertices);
+    }
+    const double start = g.reach * 1.25;
+    std::vector<double> xs, ys;
+    for (int k = 0; k < half; ++k)
+        for (int s = 0; s < kSteps; ++s) {
+            const double rho = start * (1.0 - static_cast<double>(s) / kSteps);
+            xs.push_back(g.centreX + rho * cosA[k]);
+            ys.push_back(rho * sinA[k]);
+        }
+    const std::vector<bool> pass = passes(r, xs, ys);
+    std::vector<double> lo(half, 0.0), hi(half, 0.0);
+    for (int k = 0; k < half; ++k) {
+        int s = 0;
+        while (s < kSteps && !pass[k * kSteps + s]) ++s;
+        lo[k] = s < kSteps ? start * (1.0 - static_cast<double>(s) / kSteps) : 0.0;
+        hi[k] = s > 0 ? start * (1.0 - static_cast<double>(s - 1) / kSteps) : start;
+    }
+    for (int it = 0; it < kBisections; ++it) {
+        xs.clear();
+        ys.clear();
+        for (int k = 0; k < half; ++k) {
+            const double mid = 0.5 * (lo[k] + hi[k]);
+            xs.push_back(g.centreX + mid * cosA[k]);
+            ys.push_back(mid * sinA[k]);
+        }
+        const std::vector<bool> midPass = passes(r, xs, ys);
+        for (int k = 0; k < half; ++k) {
+            if (lo[k] == 0.0) continue;  // nothing passed along this direction
+            (midPass[k] ? lo[k] : hi[k]) = 0.5 * (lo[k] + hi[k]);
+        }
+    }
+    return hi;  // the failing side of the bisection: never inside the passing region
+}
+
+// The polygon seen from film radius r, interpolated between the measured radii (full circle).
+struct Polygon {
+    double centreX = 0;
+    int n = 0;
+    std::array<double, kMaxVertices> rho{};
+};
+
+Polygon polygonAt(const ExitPupilBounds& b, double r) {
+    Polygon p;
+    p.n = b.vertices;
+    const int last = b.radiusCount() - 1;
+    const double t = b.maxFilmRadius > 0 ? std::clamp(r / b.maxFilmRadius, 0.0, 1.0) * last : 0.0;
+    const int i = std::min(static_cast<int>(t), std::max(last - 1, 0));
+    const double f = last > 0 ? t - i : 0.0;
+    const int j = std::min(i + 1, last);
+    p.centreX = (1 - f) * b.centreX[i] + f * b.centreX[j];
+    for (int k = 0; k < p.n; ++k)
+        p.rho[k] = (1 - f) * b.rho[i * p.n + k] + f * b.rho[j * p.n + k];
+    return p;
+}
+
+}  // namespace
+
+ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius,
+                                       const ExitPupilBoundsOptions& options) {
+    if (options.vertices < 8 || options.vertices > kMaxVertices || options.vertices % 2 != 0)
+        throw OpticsError("exit pupil bounds: vertices must be even, 8 to 256");
+    if (options.filmRadii < 2) throw OpticsError("exit pupil bounds: need at least 2 film radii");
+    if (!(maxFilmRadius > 0) || !(filmZ < lens.rearZ()))
+        throw OpticsError("exit pupil bounds: the film must lie behind the rear vertex, with a positive size");
+    ExitPupilBounds b;
+    b.filmZ = filmZ;
+    b.aimZ = lens.rearZ();
+    b.maxFilmRadius = maxFilmRadius;
+    b.vertices = options.vertices;
+    const int n = options.vertices;
+    b.centreX.assign(options.filmRadii, 0.0);
+    b.rho.assign(static_cast<std::size_t>(options.filmRadii) * n, 0.0);
+    PassTest passes(lens, filmZ, b.aimZ);
+    const double rearRadius = lens.surfaces.back().apertureRadius;
+    for (int i = 0; i < options.filmRadii; ++i) {
+        const double r = maxFilmRadius * i / (options.filmRadii - 1);
+        double extent = 1.5 * rearRadius;
+        GridScan g = scanGrid(passes, r, extent, 64);
+        for (int grow = 0; grow < 4 && g.touchesEdge; ++grow) {
+            extent *= 2;
+            g = scanGrid(passes, r, extent, 64);
+        }
+        if (!g.any) g = scanGrid(passes, r, extent, 256);  // a sliver the coarse grid missed
+        if (!g.any) continue;
+        const std::vector<double> half = boundaryDistances(passes, r, g, n);
+        b.centreX[i] = g.centreX;
+        for (int k = 0; k < n; ++k) {
+            const int m = k <= n / 2 ? k : n - k;  // mirror image about y = 0
+            b.rho[static_cast<std::size_t>(i) * n + k] = half[m] * (1.0 + options.margin);
+        }
+    }
+    return b;
+}
+
+PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY, double u1, double u2) {
+    const double r = std::hypot(filmX, filmY);
+    const Polygon p = polygonAt(b, r);
+    const double sinStep = std::sin(2.0 * kPi / p.n);
+    std::array<double, kMaxVertices + 1> cdf;
+    cdf[0] = 0;
+    for (int k = 0; k < p.n; ++k) cdf[k + 1] = cdf[k] + 0.5 * p.rho[k] * p.rho[(k + 1) % p.n] * sinStep;
+    PupilSample s;
+    s.area = cdf[p.n];
+    if (!(s.area > 0)) return s;
+    const double target = u1 * s.area;
+    const int k = std::clamp(static_cast<int>(std::upper_bound(cdf.begin() + 1, cdf.begin() + p.n + 1, target) -
+                                              cdf.begin()) - 1,
+                             0, p.n - 1);
+    const double tri = cdf[k + 1] - cdf[k];
+    const double v = tri > 0 ? std::clamp((target - cdf[k]) / tri, 0.0, 1.0) : 0.5;
+    // Uniform over the fan triangle (centre, vertex k, vertex k+1).
+    const double s1 = std::sqrt(v);
+    const double a0 = 2.0 * kPi * k / p.n, a1 = 2.0 * kPi * (k + 1) / p.n;
+    const double lx = s1 * ((1 - u2) * p.rho[k] * std::cos(a0) + u2 * p.rho[(k + 1) % p.n] * std::cos(a1));
+    const double ly = s1 * ((1 - u2) * p.rho[k] * std::sin(a0) + u2 * p.rho[(k + 1) % p.n] * std::sin(a1));
+    const double x = p.centreX + lx;
+    const double c = r > 0 ? filmX / r : 1.0, sn = r > 0 ? filmY / r : 0.0;
+    s.point = {x * c - ly * sn, x * sn + ly * c, b.aimZ};
+    return s;
+}
+
+bool insideExitPupilBounds(const ExitPupilBounds& b, double filmX, double filmY, double x, double y) {
+    const double r = std::hypot(filmX, filmY);
+    const Polygon p = polygonAt(b, r);
+    const double c = r > 0 ? filmX / r : 1.0, sn = r > 0 ? filmY / r : 0.0;
+    const double lx = x * c + y * sn - p.centreX, ly = -x * sn + y * c;
+    double angle = std::atan2(ly, lx);
+    if (angle < 0) angle += 2.0 * kPi;
+    const int k = std::min(static_cast<int>(angle / (2.0 * kPi) * p.n), p.n - 1);
+    const double a0 = 2.0 * kPi * k / p.n, a1 = 2.0 * kPi * (k + 1) / p.n;
+    const double x0 = p.rho[k] * std::cos(a0), y0 = p.rho[k] * std::sin(a0);
+    const double x1 = p.rho[(k + 1) % p.n] * std::cos(a1), y1 = p.rho[(k + 1) % p.n] * std::sin(a1);
+    // Inside the fan triangle: on the centre's side of the edge from vertex k to vertex k+1.
+    return (x1 - x0) * (ly - y0) - (y1 - y0) * (lx - x0) >= 0;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,56 @@
+#pragma once
+// Tight bounds of the exit pupil as seen from each film radius, for aiming camera rays.
+//
+// From a film point, the rays that pass the whole lens cross a plane behind the lens (the aiming
+// plane, at the rear vertex) inside a region: the stop's image cut by the rims of the other
+// elements (the "cat's eye" of vignetting). A box around that region wastes a quarter of the rays
+// on a double Gauss; here each region is a star-shaped polygon around its centroid, measured at a
+// set of film radii with the exact trace, interpolated linearly between them and widened by a
+// small margin so it always contains the passing rays. By rotational symmetry a film point at
+// radius r and angle phi sees the region of the point (r, 0) rotated by phi, and that region is
+// mirror-symmetric about y = 0.
+//
+// Millimetres, lens space (origin at the front vertex, +z toward the scene, film at negative z).
+#include <vector>
+
+#include "LensSystem.h"
+#include "Vec3.h"
+
+namespace lenslab {
+
+struct ExitPupilBoundsOptions {
+    int filmRadii = 64;      // film radii sampled from 0 to the maximum
+    int vertices = 64;       // polygon vertices (even), at equal angles around the centre
+    double margin = 0.01;    // relative widening of every polygon
+};
+
+struct ExitPupilBounds {
+    double filmZ = 0;          // film plane
+    double aimZ = 0;           // aiming plane (rear vertex)
+    double maxFilmRadius = 0;  // the largest film radius covered
+    int vertices = 0;
+    std::vector<double> centreX;  // per film radius: region centre on the aiming plane (y = 0)
+    std::vector<double> rho;      // per film radius, per vertex: distance from the centre; all 0 when
+                                  // no ray passes
+    int radiusCount() const { return static_cast<int>(centreX.size()); }
+};
+
+// Measures the regions with the exact trace (the lens's current stop opening). Film points up to
+// maxFilmRadius (mm) at z = filmZ.
+ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius,
+                                       const ExitPupilBoundsOptions& options = {});
+
+// A point drawn uniformly over the bounding region seen from a film point.
+struct PupilSample {
+    Vec3 point;        // on the aiming plane
+    double area = 0;   // of the bounding region, mm^2 (the sample's pdf is 1 / area); 0 = no ray passes
+};
+
+// Maps (u1, u2) in [0,1)^2 to the region seen from film point (filmX, filmY); stratified inputs
+// stay well stratified (fan triangles chosen by inverting the area CDF with u1).
+PupilSample sampleExitPupil(const ExitPupilBounds& bounds, double filmX, double filmY, double u1, double u2);
+
+// Whether a point of the aiming plane lies inside the bounds seen from the film point.
+bool insideExitPupilBounds(const ExitPupilBounds& bounds, double filmX, double filmY, double x, double y);
+
+}  // namespace lenslab

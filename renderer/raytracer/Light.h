@@ -1,0 +1,45 @@
+#pragma once
+// Light sources: point, spot, distant, infinite (constant) and diffuse area emitters on
+// triangles and spheres. Radiometric quantities in the scene's RGB; positions in metres.
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ParamSet.h"
+#include "Transform.h"
+#include "Vec3f.h"
+
+namespace lenslab {
+
+struct LightSample {
+    Vec3f wi;                  // from the shading point toward the light
+    float distance = std::numeric_limits<float>::infinity();
+    Vec3f radiance;            // arriving at the shading point (unoccluded)
+    float pdf = 0;             // solid angle; 1 for delta lights
+    bool delta = false;
+};
+
+class Light {
+public:
+    virtual ~Light() = default;
+    // Samples light arriving at p; false when none can.
+    virtual bool sample(Vec3f p, float u1, float u2, LightSample& s) const = 0;
+    // For lights a scattered ray can hit: the solid-angle pdf of sample() at p choosing the
+    // direction w, which meets the light at q (area) or escapes (infinite).
+    virtual float pdf(Vec3f p, Vec3f w, Vec3f q) const = 0;
+    // Radiance leaving the light at q toward -w (w the ray direction that hit it).
+    virtual Vec3f emitted(Vec3f q, Vec3f w) const = 0;
+    virtual bool isInfinite() const { return false; }
+};
+
+// LightSource "TYPE" params, with the current transform: point, spot, distant, infinite.
+std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& params, const Transform& lightToWorld,
+                                 std::vector<std::string>& warnings);
+
+// Diffuse area emitters (AreaLightSource "diffuse"): radiance L leaving the side the normal
+// points to, or both sides.
+std::unique_ptr<Light> makeTriangleLight(Vec3f p0, Vec3f p1, Vec3f p2, Vec3f normal, Vec3f L, bool twoSided);
+std::unique_ptr<Light> makeSphereLight(Vec3f centre, float radius, bool inward, Vec3f L, bool twoSided);
+
+}  // namespace lenslab

@@ -1,0 +1,207 @@
+#include <cmath>
+
+#include "Light.h"
+#include "Sampling.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+class PointLight : public Light {
+public:
+    PointLight(Vec3f position, Vec3f intensity) : position_(position), intensity_(intensity) {}
+    bool sample(Vec3f p, float, float, LightSample& s) const override {
+        const Vec3f d = position_ - p;
+        s.distance = length(d);
+        if (!(s.distance > 0)) return false;
+        s.wi = d / s.distance;
+        s.radiance = intensity_ / (s.distance * s.distance);
+        s.pdf = 1;
+        s.delta = true;
+        return true;
+    }
+    float pdf(Vec3f, Vec3f, Vec3f) const override { return 0; }
+    Vec3f emitted(Vec3f, Vec3f) const override { return {}; }
+
+protected:
+    Vec3f position_, intensity_;
+};
+
+// pbrt-v3's spot: full intensity inside coneangle - conedelta, a smooth falloff to zero at coneangle.
+class SpotLight : public PointLight {
+public:
+    SpotLight(Vec3f position, Vec3f axis, Vec3f intensity, float coneAngle, float coneDelta)
+        : PointLight(position, intensity), axis_(axis), cosTotal_(std::cos(coneAngle * float(M_PI) / 180)),
+          cosFalloff_(std::cos((coneAngle - coneDelta) * float(M_PI) / 180)) {}
+    bool sample(Vec3f p, float u1, float u2, LightSample& s) const override {
+        if (!PointLight::sample(p, u1, u2, s)) return false;
+        const float c = dot(-s.wi, axis_);
+        float falloff = 1;
+        if (c < cosTotal_) falloff = 0;
+        else if (c < cosFalloff_) {
+            const float d = (c - cosTotal_) / (cosFalloff_ - cosTotal_);
+            falloff = (d * d) * (d * d);
+        }
+        s.radiance = falloff * s.radiance;
+        return falloff > 0;
+    }
+
+private:
+    Vec3f axis_;
+    float cosTotal_, cosFalloff_;
+};
+
+class DistantLight : public Light {
+public:
+    DistantLight(Vec3f towardLight, Vec3f radiance) : toward_(towardLight), radiance_(radiance) {}
+    bool sample(Vec3f, float, float, LightSample& s) const override {
+        s.wi = toward_;
+        s.distance = kInf;
+        s.radiance = radiance_;
+        s.pdf = 1;
+        s.delta = true;
+        return true;
+    }
+    float pdf(Vec3f, Vec3f, Vec3f) const override { return 0; }
+    Vec3f emitted(Vec3f, Vec3f) const override { return {}; }
+
+private:
+    Vec3f toward_, radiance_;
+};
+
+class InfiniteLight : public Light {
+public:
+    explicit InfiniteLight(Vec3f radiance) : radiance_(radiance) {}
+    bool sample(Vec3f, float u1, float u2, LightSample& s) const override {
+        s.wi = uniformSphere(u1, u2);
+        s.distance = kInf;
+        s.radiance = radiance_;
+        s.pdf = 1.0f / (4.0f * float(M_PI));
+        s.delta = false;
+        return true;
+    }
+    float pdf(Vec3f, Vec3f, Vec3f) const override { return 1.0f / (4.0f * float(M_PI)); }
+    Vec3f emitted(Vec3f, Vec3f) const override { return radiance_; }
+    bool isInfinite() const override { return true; }
+
+private:
+    Vec3f radiance_;
+};
+
+// Area emitters sampled uniformly by area; pdf converted to solid angle at the shading point.
+class AreaLight : public Light {
+public:
+    AreaLight(Vec3f L, bool twoSided, float area) : L_(L), twoSided_(twoSided), area_(area) {}
+    bool sample(Vec3f p, float u1, float u2, LightSample& s) const override {
+        Vec3f n;
+        const Vec3f q = samplePoint(u1, u2, n);
+        const Vec3f d = q - p;
+        const float d2 = dot(d, d);
+        if (!(d2 > 0)) return false;
+        s.distance = std::sqrt(d2);
+        s.wi = d / s.distance;
+        const float cosL = dot(-s.wi, n);
+        if (!twoSided_ && cosL <= 0) return false;
+        if (std::fabs(cosL) < 1e-7f) return false;
+        s.pdf = d2 / (std::fabs(cosL) * area_);
+        s.radiance = L_;
+        s.delta = false;
+        return true;
+    }
+    float pdf(Vec3f p, Vec3f w, Vec3f q) const override {
+        const Vec3f d = q - p;
+        const float cosL = std::fabs(dot(w, normalAt(q)));
+        return cosL > 1e-7f ? dot(d, d) / (cosL * area_) : 0.0f;
+    }
+    Vec3f emitted(Vec3f q, Vec3f w) const override {
+        return twoSided_ || dot(normalAt(q), w) < 0 ? L_ : Vec3f{};
+    }
+
+protected:
+    virtual Vec3f samplePoint(float u1, float u2, Vec3f& normal) const = 0;
+    virtual Vec3f normalAt(Vec3f q) const = 0;
+
+private:
+    Vec3f L_;
+    bool twoSided_;
+    float area_;
+};
+
+class TriangleLight : public AreaLight {
+public:
+    TriangleLight(Vec3f p0, Vec3f p1, Vec3f p2, Vec3f n, Vec3f L, bool twoSided)
+        : AreaLight(L, twoSided, 0.5f * length(cross(p1 - p0, p2 - p0))), p0_(p0), e1_(p1 - p0), e2_(p2 - p0), n_(n) {}
+
+protected:
+    Vec3f samplePoint(float u1, float u2, Vec3f& normal) const override {
+        const float r = std::sqrt(u1);
+        normal = n_;
+        return p0_ + (1 - r) * e1_ + (u2 * r) * e2_;
+    }
+    Vec3f normalAt(Vec3f) const override { return n_; }
+
+private:
+    Vec3f p0_, e1_, e2_, n_;
+};
+
+class SphereLight : public AreaLight {
+public:
+    SphereLight(Vec3f c, float r, bool inward, Vec3f L, bool twoSided)
+        : AreaLight(L, twoSided, 4.0f * float(M_PI) * r * r), c_(c), r_(r), sign_(inward ? -1.0f : 1.0f) {}
+
+protected:
+    Vec3f samplePoint(float u1, float u2, Vec3f& normal) const override {
+        const Vec3f d = uniformSphere(u1, u2);
+        normal = sign_ * d;
+        return c_ + r_ * d;
+    }
+    Vec3f normalAt(Vec3f q) const override { return sign_ * normalize(q - c_); }
+
+private:
+    Vec3f c_;
+    float r_, sign_;
+};
+
+}  // namespace
+
+std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& p, const Transform& toWorld,
+                                 std::vector<std::string>& warnings) {
+    const Vec3f scale = p.getRgb("scale", {1, 1, 1});
+    std::unique_ptr<Light> light;
+    if (type == "point") {
+        const Vec3f from = transformPoint(toWorld, p.getPoint("from", {0, 0, 0}));
+        light = std::make_unique<PointLight>(from, scale * p.getRgb("I", {1, 1, 1}));
+    } else if (type == "spot") {
+        const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
+        const Vec3f axis = transformVector(toWorld, toL - fromL);
+        if (!(length(axis) > 0)) p.fail("\"from\" and \"to\" must differ");
+        const float cone = float(p.getFloat("coneangle", 30)), delta = float(p.getFloat("conedelta", 5));
+        if (!(cone > 0 && cone <= 180) || !(delta >= 0 && delta <= cone)) p.fail("coneangle must lie in (0, 180] and conedelta in [0, coneangle]");
+        light = std::make_unique<SpotLight>(transformPoint(toWorld, fromL), normalize(axis),
+                                            scale * p.getRgb("I", {1, 1, 1}), cone, delta);
+    } else if (type == "distant") {
+        const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
+        const Vec3f toward = transformVector(toWorld, fromL - toL);
+        if (!(length(toward) > 0)) p.fail("\"from\" and \"to\" must differ");
+        light = std::make_unique<DistantLight>(normalize(toward), scale * p.getRgb("L", {1, 1, 1}));
+    } else if (type == "infinite") {
+        if (p.has("mapname")) p.fail("environment maps (\"mapname\") are not supported; use a constant \"rgb L\"");
+        light = std::make_unique<InfiniteLight>(scale * p.getRgb("L", {1, 1, 1}));
+    } else {
+        p.fail("light \"" + type + "\" is not supported (point, spot, distant, infinite)");
+    }
+    p.checkAllUsed(warnings, {"nsamples", "samples"});
+    return light;
+}
+
+std::unique_ptr<Light> makeTriangleLight(Vec3f p0, Vec3f p1, Vec3f p2, Vec3f normal, Vec3f L, bool twoSided) {
+    return std::make_unique<TriangleLight>(p0, p1, p2, normal, L, twoSided);
+}
+
+std::unique_ptr<Light> makeSphereLight(Vec3f centre, float radius, bool inward, Vec3f L, bool twoSided) {
+    return std::make_unique<SphereLight>(centre, radius, inward, L, twoSided);
+}
+
+}  // namespace lenslab

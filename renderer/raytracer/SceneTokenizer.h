@@ -1,0 +1,18 @@
+#pragma once
+// Splits pbrt-v3 scene text into tokens: bare words and numbers, "quoted strings", [ and ], with
+// '#' comments dropped. Every token keeps its line for messages.
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+struct Token {
+    std::string text;     // without the quotes
+    int line = 0;
+    bool quoted = false;
+};
+
+// Throws SceneError for an unterminated string (naming file and line).
+std::vector<Token> tokenizeScene(const std::string& text, const std::string& fileName);
+
+}  // namespace lenslab

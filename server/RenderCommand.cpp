@@ -1,0 +1,141 @@
+// `lenslab render`: renders a scene to one or more images, with a progress bar and ETA on stderr.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "ArgParser.h"
+#include "Commands.h"
+#include "Render.h"
+
+namespace lenslab {
+
+namespace {
+
+std::array<double, 4> parseCrop(const std::string& text) {
+    std::array<double, 4> c{};
+    std::istringstream in(text);
+    std::string part;
+    for (int i = 0; i < 4; ++i) {
+        if (!std::getline(in, part, ',')) throw UsageError("render: --crop needs x0,x1,y0,y1 (fractions of the image)");
+        try {
+            std::size_t used = 0;
+            c[i] = std::stod(part, &used);
+            if (used != part.size()) throw std::invalid_argument(part);
+        } catch (const std::exception&) {
+            throw UsageError("render: --crop: '" + part + "' is not a number");
+        }
+    }
+    if (std::getline(in, part, ',')) throw UsageError("render: --crop takes exactly 4 numbers");
+    return c;
+}
+
+// Redraws one terminal line: a bar, the tile count and the time left at the current rate.
+class ProgressBar {
+public:
+    explicit ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+    void update(int done, int total) {
+        if (!enabled_) return;
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        const double eta = done > 0 ? elapsed * (total - done) / done : 0.0;
+        constexpr int kWidth = 40;
+        const int filled = total > 0 ? kWidth * done / total : kWidth;
+        std::fprintf(stderr, "\r[%s%s] %d/%d tiles  %.1fs  ETA %.1fs ", std::string(filled, '#').c_str(),
+                     std::string(kWidth - filled, '.').c_str(), done, total, elapsed, eta);
+        if (done == total) std::fputc('\n', stderr);
+        std::fflush(stderr);
+    }
+
+private:
+    bool enabled_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+int runRenderCommand(const std::vector<std::string>& argsIn) {
+    ArgParser p("render", "SCENE [-o out.exr] [-o out.png] [--spp N] [--threads N] [--tile N] [--crop x0,x1,y0,y1]",
+                "Renders a pbrt-v3 scene (lenslab's subset; world in metres, lens in millimetres) with the\n"
+                "perspective or the realistic lens camera. Output by extension: .exr (linear float RGB, tiled,\n"
+                "camera and lens parameters in the header) or .png (sRGB, scaled by --exposure).");
+    p.positional("SCENE", "scene file (.pbrt)");
+    p.option("-o", "FILE", "output image, .exr or .png; repeat for several (default: the scene's Film filename)");
+    p.option("--spp", "N", "samples per pixel (default: the scene's)");
+    p.option("--threads", "N", "worker threads (default: all cores)");
+    p.option("--tile", "N", "tile size in pixels (default 32)");
+    p.option("--crop", "X0,X1,Y0,Y1", "render only this window (fractions of the image)");
+    p.option("--width", "N", "image width (default: the scene's)");
+    p.option("--height", "N", "image height (default: the scene's)");
+    p.option("--seed", "N", "random seed (default 0)");
+    p.option("--exposure", "E", "PNG exposure scale (default 1)");
+    p.option("--lens", "FILE", "realistic camera: lens table instead of the scene's specfile");
+    p.option("--fstop", "N", "realistic camera: f-number");
+    p.option("--focus", "MM", "realistic camera: focus distance from the front vertex, mm");
+    p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
+    p.option("--mode", "M", "realistic camera: accurate | approximate");
+    p.flag("--quiet", "no progress bar, no summary");
+
+    // -o may repeat: collect every occurrence before the parser (which keeps one value per option).
+    std::vector<std::string> outputs, args;
+    for (std::size_t i = 0; i < argsIn.size(); ++i) {
+        const std::string& a = argsIn[i];
+        if (a == "-o" || a == "--output") {
+            if (i + 1 >= argsIn.size()) throw UsageError("render: -o needs a file name");
+            outputs.push_back(argsIn[++i]);
+        } else if (a.rfind("-o=", 0) == 0) {
+            outputs.push_back(a.substr(3));
+        } else {
+            args.push_back(a);
+        }
+    }
+    if (!p.parse(args)) {
+        std::cout << p.help();
+        return 0;
+    }
+    RenderSettings s;
+    s.scenePath = p.arg(0);
+    if (auto v = p.integer("--spp")) s.spp = int(*v);
+    if (auto v = p.integer("--threads")) s.threads = int(*v);
+    if (auto v = p.integer("--tile")) s.tileSize = int(*v);
+    if (auto v = p.integer("--width")) s.width = int(*v);
+    if (auto v = p.integer("--height")) s.height = int(*v);
+    if (auto v = p.integer("--seed")) s.seed = std::uint64_t(*v);
+    if (p.has("--crop")) s.crop = parseCrop(p.get("--crop"));
+    if (p.has("--lens")) s.camera.lensFile = p.get("--lens");
+    if (auto v = p.number("--fstop")) s.camera.fstop = *v;
+    if (p.has("--focus")) s.camera.focalDistance = parseDistance(p.get("--focus"), "--focus");
+    if (auto v = p.number("--filmdiag")) s.camera.filmDiagonal = *v;
+    if (p.has("--mode")) s.camera.mode = p.get("--mode");
+    const double exposure = p.number("--exposure").value_or(1.0);
+    if (!(exposure > 0)) throw UsageError("render: --exposure must be positive");
+    for (const auto& o : outputs) {
+        const auto dot = o.rfind('.');
+        const std::string ext = dot == std::string::npos ? "" : o.substr(dot);
+        if (ext != ".exr" && ext != ".png" && ext != ".EXR" && ext != ".PNG")
+            throw UsageError("render: output '" + o + "' must end in .exr or .png");
+    }
+    const bool quiet = p.has("--quiet");
+
+    ProgressBar bar(!quiet && ::isatty(STDERR_FILENO));
+    const RenderOutput out = renderScene(s, [&](const TileUpdate& u, const Image&) { bar.update(u.tilesDone, u.tilesTotal); });
+    if (outputs.empty()) {
+        auto it = out.metadata.find("filmFilename");
+        outputs.push_back(it != out.metadata.end() ? it->second : "lenslab.exr");
+    }
+    for (const auto& o : outputs) writeImageFile(out, o, exposure);
+    if (auto it = out.metadata.find("warnings"); it != out.metadata.end()) std::cerr << "warnings:\n" << it->second << "\n";
+    if (!quiet) {
+        const RenderStats& st = out.stats;
+        const double blocked = st.cameraRays ? double(st.blockedCameraRays) / st.cameraRays : 0.0;
+        std::fprintf(stderr, "setup %.3f s, render %.3f s, %.2f Mrays/s, %.2f%% of camera rays blocked by the lens\n",
+                     st.setupSeconds, st.renderSeconds, st.raysTraced / std::max(st.renderSeconds, 1e-9) * 1e-6,
+                     100.0 * blocked);
+        for (const auto& o : outputs) std::fprintf(stderr, "wrote %s\n", o.c_str());
+    }
+    return 0;
+}
+
+}  // namespace lenslab

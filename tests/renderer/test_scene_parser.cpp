@@ -1,0 +1,154 @@
+// Scene syntax: transforms and shapes land where pbrt-v3 puts them; bad scenes give clear errors
+// naming the file, the line and the directive.
+#include <gtest/gtest.h>
+
+#include "SceneDescription.h"
+#include "TestScenes.h"
+
+namespace lenslab {
+namespace {
+
+const char* kHeader = "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+                      "Film \"image\" \"integer xresolution\" 16 \"integer yresolution\" 16\n";
+
+std::string errorOf(const std::string& path) {
+    try {
+        parseSceneFile(path);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+// Renders (tiny) and returns the message of the SceneError it must throw.
+std::string renderErrorOf(const std::string& path, RenderSettings s = {}) {
+    s.scenePath = path;
+    if (!s.width) s.width = 8;
+    if (!s.height) s.height = 8;
+    s.spp = 1;
+    s.threads = 1;
+    try {
+        renderScene(s);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(SceneParser, TransformsPlaceShapesAsPbrtDoes) {
+    test::TempDir dir;
+    const std::string scene = dir.write("s.pbrt", std::string(kHeader) +
+        "WorldBegin\n"
+        "AttributeBegin\n  Translate 1 2 3\n  Scale 2 2 2\n  Shape \"sphere\" \"float radius\" 0.5\nAttributeEnd\n"
+        "TransformBegin\n  Rotate 90 0 0 1\n"
+        "  Shape \"trianglemesh\" \"integer indices\" [0 1 2] \"point P\" [1 0 0  0 1 0  0 0 1]\nTransformEnd\n"
+        "Shape \"sphere\"\n"
+        "WorldEnd\n");
+    const SceneDescription s = parseSceneFile(scene);
+    ASSERT_EQ(s.spheres.size(), 2u);
+    EXPECT_FLOAT_EQ(s.spheres[0].centre.x, 1);
+    EXPECT_FLOAT_EQ(s.spheres[0].centre.y, 2);
+    EXPECT_FLOAT_EQ(s.spheres[0].centre.z, 3);
+    EXPECT_FLOAT_EQ(s.spheres[0].radius, 1.0f);
+    EXPECT_FLOAT_EQ(s.spheres[1].centre.x, 0);  // attributes restored
+    EXPECT_FLOAT_EQ(s.spheres[1].radius, 1.0f);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    EXPECT_NEAR(s.meshes[0].p[0].x, 0, 1e-6);   // (1,0,0) rotated 90 degrees about z
+    EXPECT_NEAR(s.meshes[0].p[0].y, 1, 1e-6);
+    EXPECT_EQ(s.camera.type, "perspective");
+    EXPECT_EQ(s.film.xresolution, 16);
+}
+
+TEST(SceneParser, IncludeStaysInsideTheSceneFolder) {
+    test::TempDir dir;
+    dir.write("parts/ball.pbrt", "Shape \"sphere\" \"float radius\" 2\n");
+    const std::string ok = dir.write("scene/s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"../parts/ball.pbrt\"\nWorldEnd\n");
+    EXPECT_NE(errorOf(ok).find("outside the scene's folder"), std::string::npos) << errorOf(ok);
+    const std::string inside = dir.write("s2.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"parts/ball.pbrt\"\nWorldEnd\n");
+    EXPECT_EQ(parseSceneFile(inside).spheres.size(), 1u);
+}
+
+TEST(SceneErrors, UnknownDirectiveNamesFileLineAndDirective) {
+    test::TempDir dir;
+    const std::string p = dir.write("bad.pbrt", std::string(kHeader) + "WorldBegin\n\nMakeItPretty 3\nWorldEnd\n");
+    const std::string e = errorOf(p);
+    EXPECT_NE(e.find("bad.pbrt:6"), std::string::npos) << e;
+    EXPECT_NE(e.find("MakeItPretty"), std::string::npos) << e;
+}
+
+TEST(SceneErrors, MissingIncludeFile) {
+    test::TempDir dir;
+    const std::string p = dir.write("s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"nothere.pbrt\"\nWorldEnd\n");
+    const std::string e = errorOf(p);
+    EXPECT_NE(e.find("s.pbrt:5: Include"), std::string::npos) << e;
+    EXPECT_NE(e.find("cannot open 'nothere.pbrt'"), std::string::npos) << e;
+    EXPECT_NE(errorOf(dir.path() + "/missing.pbrt").find("cannot open scene file"), std::string::npos);
+}
+
+TEST(SceneErrors, BadNumbers) {
+    test::TempDir dir;
+    const std::string a = dir.write("a.pbrt", std::string(kHeader) + "WorldBegin\nTranslate 1 2 x3\nWorldEnd\n");
+    EXPECT_NE(errorOf(a).find("a.pbrt:5: Translate: bad number 'x3'"), std::string::npos) << errorOf(a);
+    const std::string b = dir.write("b.pbrt", std::string(kHeader) + "WorldBegin\nShape \"sphere\" \"float radius\" [ 1e999 ]\nWorldEnd\n");
+    EXPECT_NE(errorOf(b).find("bad number '1e999'"), std::string::npos) << errorOf(b);
+    const std::string c = dir.write("c.pbrt", std::string(kHeader) + "WorldBegin\nShape \"sphere\" \"float radius\" -1\nWorldEnd\n");
+    EXPECT_NE(errorOf(c).find("radius must be positive"), std::string::npos) << errorOf(c);
+    const std::string d = dir.write("d.pbrt", std::string(kHeader) +
+        "WorldBegin\nShape \"trianglemesh\" \"integer indices\" [0 1 5] \"point P\" [0 0 0 1 0 0 0 1 0]\nWorldEnd\n");
+    EXPECT_NE(errorOf(d).find("index 5 out of range"), std::string::npos) << errorOf(d);
+}
+
+TEST(SceneErrors, AbsurdResolution) {
+    test::TempDir dir;
+    const std::string p = dir.write("r.pbrt", "Camera \"perspective\"\nFilm \"image\" \"integer xresolution\" 100000 "
+                                              "\"integer yresolution\" 10\nWorldBegin\nWorldEnd\n");
+    RenderSettings s;
+    s.scenePath = p;
+    s.threads = 1;
+    try {
+        renderScene(s);
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("r.pbrt:2: Film \"image\": resolution 100000x10 is out of range"), std::string::npos)
+            << e.what();
+    }
+    RenderSettings zero;
+    zero.width = 0;
+    EXPECT_NE(renderErrorOf(p, zero).find("out of range"), std::string::npos);
+}
+
+TEST(SceneErrors, UnsupportedFeaturesAreNamedNeverIgnored) {
+    test::TempDir dir;
+    const auto check = [&](const std::string& world, const std::string& expected) {
+        const std::string p = dir.write("u.pbrt", std::string(kHeader) + "WorldBegin\n" + world + "\nWorldEnd\n");
+        const std::string e = errorOf(p);
+        EXPECT_NE(e.find(expected), std::string::npos) << e;
+    };
+    check("Shape \"plymesh\" \"string filename\" \"x.ply\"", "plymesh is not supported");
+    check("Material \"metal\"", "material \"metal\" is not supported");
+    check("Material \"matte\" \"float sigmaa\" 2", "unsupported parameter \"float sigmaa\"");
+    check("LightSource \"goniometric\"", "light \"goniometric\" is not supported");
+    check("ObjectBegin \"x\"", "unsupported directive 'ObjectBegin'");
+    check("Shape \"sphere\" \"spectrum Kd\" [300 .3 800 .6]", "spectrum values are not supported");
+    check("AttributeBegin\nShape \"sphere\"", "not closed by AttributeEnd");
+}
+
+TEST(SceneErrors, RealisticCameraRangesAreNamed) {
+    test::TempDir dir;
+    const auto scene = [&](const std::string& params) {
+        return dir.write("cam.pbrt", "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" " + params +
+                                         "\nFilm \"image\"\nWorldBegin\nWorldEnd\n");
+    };
+    const std::string fstop = renderErrorOf(scene("\"float fstop\" 1.2 \"float focaldistance\" 3000"));
+    EXPECT_NE(fstop.find("cam.pbrt:1: Camera \"realistic\""), std::string::npos) << fstop;
+    EXPECT_NE(fstop.find("range"), std::string::npos) << fstop;
+    const std::string focus = renderErrorOf(scene("\"float fstop\" 4 \"float focaldistance\" 20"));
+    EXPECT_NE(focus.find("closest"), std::string::npos) << focus;
+    EXPECT_EQ(renderErrorOf(scene("\"float fstop\" 4 \"float focaldistance\" 3000")), "(no error)");
+    const std::string missing = renderErrorOf(dir.write("m.pbrt", "Camera \"realistic\" \"string specfile\" \"nolens.dat\"\n"
+                                                                  "WorldBegin\nWorldEnd\n"));
+    EXPECT_NE(missing.find("lens file 'nolens.dat' not found"), std::string::npos) << missing;
+}
+
+}  // namespace
+}  // namespace lenslab
