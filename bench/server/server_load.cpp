@@ -1,0 +1,208 @@
+// Load test of `lenslab serve`, loopback only and bounded (fixed numbers of requests):
+//   1. diagrams: 16 concurrent keep-alive clients, each a fixed number of requests over a set of
+//      parameter combinations (first drawings, then cache hits); requests/s, p50/p99, errors;
+//   2. the same with every request distinct (every one drawn);
+//   3. a full render queue: submissions past --max-queue get 429 while the API stays responsive.
+// usage: server_load [LENSLAB_BINARY]   (prints a Markdown summary)
+#include <httplib.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using nlohmann::json;
+
+struct Server {
+    pid_t pid = -1;
+    int port = 0;
+    std::string folder;
+};
+
+Server startServer(const std::string& binary, const std::vector<std::string>& extra) {
+    Server s;
+    char pattern[] = "/tmp/lenslab-load-XXXXXX";
+    s.folder = mkdtemp(pattern);
+    const std::string log = s.folder + "/server.out";
+    std::vector<std::string> args = {binary, "serve", "--port", "0", "--data", s.folder + "/data",
+                                     "--access-log", s.folder + "/access.log"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    std::cout.flush();
+    s.pid = fork();
+    if (s.pid == 0) {
+        freopen(log.c_str(), "w", stdout);
+        freopen(log.c_str(), "a", stderr);
+        std::vector<char*> argv;
+        for (auto& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execv(binary.c_str(), argv.data());
+        _exit(127);
+    }
+    const std::regex listening(R"(listening on http://[^:]+:(\d+)/)");
+    for (int i = 0; i < 400; ++i) {
+        std::ifstream in(log);
+        std::stringstream text;
+        text << in.rdbuf();
+        std::smatch m;
+        const std::string t = text.str();
+        if (std::regex_search(t, m, listening)) {
+            s.port = std::stoi(m[1]);
+            return s;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    throw std::runtime_error("server did not start");
+}
+
+void stopServer(const Server& s) {
+    kill(s.pid, SIGTERM);
+    int status = 0;
+    waitpid(s.pid, &status, 0);
+    std::filesystem::remove_all(s.folder);
+}
+
+struct Sample {
+    double ms;
+    bool ok;
+};
+
+double percentile(std::vector<double> v, double p) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5))];
+}
+
+// `clients` threads, each `perClient` GETs of urlFor(client, i); returns the summary row.
+std::string loadRow(const std::string& label, int port, int clients, int perClient,
+                    const std::function<std::string(int, int)>& urlFor) {
+    std::vector<std::vector<Sample>> samples(clients);
+    const auto start = Clock::now();
+    std::vector<std::thread> threads;
+    for (int c = 0; c < clients; ++c)
+        threads.emplace_back([&, c] {
+            httplib::Client client("127.0.0.1", port);
+            client.set_keep_alive(true);
+            client.set_tcp_nodelay(true);
+            client.set_read_timeout(30);
+            for (int i = 0; i < perClient; ++i) {
+                const auto t0 = Clock::now();
+                auto r = client.Get(urlFor(c, i));
+                const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+                const bool ok = r && r->status == 200 && r->body.size() > 8 && r->body.compare(1, 3, "PNG") == 0;
+                samples[c].push_back({ms, ok});
+            }
+        });
+    for (auto& t : threads) t.join();
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    std::vector<double> ms;
+    int errors = 0;
+    for (const auto& list : samples)
+        for (const Sample& s : list) {
+            ms.push_back(s.ms);
+            errors += s.ok ? 0 : 1;
+        }
+    std::ostringstream row;
+    row.setf(std::ios::fixed);
+    row.precision(1);
+    row << "| " << label << " | " << clients << " | " << ms.size() << " | " << ms.size() / seconds << " | "
+        << percentile(ms, 0.5) << " | " << percentile(ms, 0.99) << " | " << percentile(ms, 1.0) << " | " << errors << " |";
+    return row.str();
+}
+
+std::string fullQueueReport(const std::string& binary) {
+    const int maxQueue = 4;
+    const Server s = startServer(binary, {"--max-queue", std::to_string(maxQueue), "--renders", "1", "--max-spp", "4096"});
+    httplib::Client c("127.0.0.1", s.port);
+    c.set_read_timeout(30);
+    const std::string body = json{{"lens", "dgauss.50mm"}, {"spp", 4096}, {"width", 320}, {"height", 240}}.dump();
+    std::vector<std::string> ids;
+    std::vector<int> statuses;
+    std::string refusal;
+    std::vector<double> refusalMs;
+    for (int i = 0; i < maxQueue + 1 + 20; ++i) {
+        const auto t0 = Clock::now();
+        auto r = c.Post("/api/renders", body, "application/json");
+        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+        statuses.push_back(r ? r->status : 0);
+        if (r && r->status == 202) ids.push_back(json::parse(r->body)["id"]);
+        if (r && r->status == 429) {
+            refusal = r->body;
+            refusalMs.push_back(ms);
+        }
+        if (i == 0) std::this_thread::sleep_for(std::chrono::milliseconds(300));  // first one starts running
+    }
+    std::vector<double> healthMs;
+    for (int i = 0; i < 200; ++i) {
+        const auto t0 = Clock::now();
+        auto r = c.Get("/api/health");
+        if (r && r->status == 200) healthMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    }
+    const std::string healthBody = c.Get("/api/health")->body;
+    std::vector<int> cancelStatuses;
+    for (const std::string& id : ids) cancelStatuses.push_back(c.Delete("/api/renders/" + id)->status);
+    int cancelled = 0;
+    for (int i = 0; i < 100 && cancelled < static_cast<int>(ids.size()); ++i) {
+        cancelled = 0;
+        for (const std::string& id : ids)
+            cancelled += json::parse(c.Get("/api/renders/" + id)->body)["state"] == "cancelled" ? 1 : 0;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    stopServer(s);
+    const auto count = [&](int code) { return std::count(statuses.begin(), statuses.end(), code); };
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(2);
+    out << "- `--max-queue " << maxQueue << " --renders 1`, " << statuses.size() << " submissions of a 320x240, 4096 spp render: "
+        << count(202) << " accepted (202: 1 running + " << maxQueue << " queued), " << count(429) << " refused with 429, "
+        << (statuses.size() - count(202) - count(429)) << " other\n";
+    out << "- 429 answer (" << percentile(refusalMs, 0.5) << " ms median): `" << refusal << "`\n";
+    out << "- `GET /api/health` while the queue is full and a render runs: " << healthMs.size() << "/200 answered, p50 "
+        << percentile(healthMs, 0.5) << " ms, p99 " << percentile(healthMs, 0.99) << " ms: `" << healthBody << "`\n";
+    out << "- cancelling all " << ids.size() << " jobs: statuses";
+    for (int st : cancelStatuses) out << " " << st;
+    out << "; " << cancelled << "/" << ids.size() << " reached `cancelled`\n";
+    return out.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::string binary = argc > 1 ? argv[1] : LENSLAB_BINARY;
+    std::cout << "## Diagrams (GET /api/lenses/{id}/diagram.png, 800x400)\n\n"
+              << "| workload | clients | requests | requests/s | p50 ms | p99 ms | max ms | errors |\n"
+              << "|---|---|---|---|---|---|---|---|\n";
+    {
+        const Server s = startServer(binary, {});
+        const std::vector<std::string> lenses = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
+        const std::vector<std::string> modes = {"exact", "thick", "overlay"};
+        const std::vector<std::string> fstops = {"", "&fstop=5.6"};
+        const auto mixed = [&](int c, int i) {
+            const int k = (c * 7 + i) % 24;
+            return "/api/lenses/" + lenses[k % 4] + "/diagram.png?size=800x400&mode=" + modes[(k / 4) % 3] + fstops[k / 12];
+        };
+        std::cout << loadRow("24 parameter sets, repeated (cache hits after the first drawing)", s.port, 16, 250, mixed) << "\n";
+        const auto distinct = [&](int c, int i) {
+            return "/api/lenses/dgauss.50mm/diagram.png?size=800x400&mode=overlay&focus=" + std::to_string(1000 + c * 100 + i);
+        };
+        std::cout << loadRow("every request distinct (each one drawn)", s.port, 16, 10, distinct) << "\n";
+        std::cout << "\nServer after the runs: `" << httplib::Client("127.0.0.1", s.port).Get("/api/health")->body << "`\n";
+        stopServer(s);
+    }
+    std::cout << "\n## Full render queue\n\n" << fullQueueReport(binary);
+    return 0;
+}

@@ -1,0 +1,68 @@
+// GET /api/lenses/{id}/diagram.png: the lens cross-section drawn on request and cached by its
+// parameters (lens, mode, f-number, focus, field height, size).
+#include <cstdio>
+#include <sstream>
+
+#include "HttpError.h"
+#include "HttpReply.h"
+#include "LensDiagram.h"
+#include "QueryParameters.h"
+#include "ServiceParts.h"
+
+namespace lenslab {
+
+namespace {
+
+const int kMinWidth = 200, kMaxWidth = 2400, kMinHeight = 100, kMaxHeight = 1600;
+
+// "W" (height W/2) or "WxH", in pixels.
+std::pair<int, int> diagramSize(const httplib::Request& req) {
+    const auto text = queryText(req, "size");
+    if (!text) return {1200, 600};
+    int width = 0, height = 0;
+    char separator = 0, rest = 0;
+    const int fields = std::sscanf(text->c_str(), "%d%c%d%c", &width, &separator, &height, &rest);
+    if (fields == 1) height = width / 2;
+    else if (fields != 3 || separator != 'x') throw HttpError(400, "size must be WIDTH or WIDTHxHEIGHT in pixels");
+    if (width < kMinWidth || width > kMaxWidth || height < kMinHeight || height > kMaxHeight)
+        throw HttpError(400, "size must lie between " + std::to_string(kMinWidth) + "x" + std::to_string(kMinHeight) +
+                                 " and " + std::to_string(kMaxWidth) + "x" + std::to_string(kMaxHeight));
+    return {width, height};
+}
+
+DiagramOptions diagramOptions(const httplib::Request& req) {
+    DiagramOptions o;
+    try {
+        o.mode = parseDiagramMode(queryText(req, "mode").value_or("exact"));
+    } catch (const DiagramError& e) {
+        throw HttpError(400, e.what());
+    }
+    o.fstop = queryNumber(req, "fstop", 0.5, 128);
+    if (auto focus = queryDistance(req, "focus", 1, 1e7)) o.focusDistance = *focus;
+    o.fieldHeight = queryNumber(req, "field", 0, 100);
+    std::tie(o.width, o.height) = diagramSize(req);
+    return o;
+}
+
+std::string cacheKey(const std::string& lensId, const DiagramOptions& o) {
+    std::ostringstream key;
+    key.precision(17);
+    key << lensId << "|" << static_cast<int>(o.mode) << "|" << (o.fstop ? *o.fstop : 0.0) << "|" << o.focusDistance
+        << "|" << (o.fieldHeight ? *o.fieldHeight : -1.0) << "|" << o.width << "x" << o.height;
+    return key.str();
+}
+
+}  // namespace
+
+void addDiagramRoutes(httplib::Server& server, ServiceParts& parts) {
+    server.Get(R"(/api/lenses/([^/]+)/diagram\.png)", [&parts](const httplib::Request& req, httplib::Response& res) {
+        const auto lens = findLens(parts, req.matches[1]);
+        const DiagramOptions options = diagramOptions(req);
+        const auto png = parts.diagrams.getOrDraw(cacheKey(lens->id, options),
+                                                  [&] { return drawLensDiagramPng(lens->system, options); });
+        replyBytes(res, *png, "image/png");
+        res.set_header("Cache-Control", "max-age=300");
+    });
+}
+
+}  // namespace lenslab

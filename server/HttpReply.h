@@ -1,0 +1,18 @@
+#pragma once
+// How handlers answer: JSON bodies, {"error": ...} bodies, binary files.
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+void replyJson(httplib::Response& res, int status, const nlohmann::json& body);
+void replyError(httplib::Response& res, int status, const std::string& message);
+void replyBytes(httplib::Response& res, const std::vector<std::uint8_t>& bytes, const std::string& contentType);
+// Sends a file in full (read once; the files the service serves are small). False if unreadable.
+bool replyFile(httplib::Response& res, const std::string& path, const std::string& contentType);
+
+}  // namespace lenslab

@@ -1,0 +1,154 @@
+#include "LensStore.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <mutex>
+
+#include "AtomicFile.h"
+#include "Identifiers.h"
+#include "OpticsError.h"
+#include "WallClock.h"
+
+namespace lenslab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Builds the geometry and the widest-aperture, infinity-focus data every listing shows.
+std::shared_ptr<StoredLens> describeLens(const LensTable& table) {
+    auto lens = std::make_shared<StoredLens>();
+    lens->system = buildLensSystem(table);
+    const LensAnalysis a = analyzeLens(lens->system, std::nullopt, std::numeric_limits<double>::infinity());
+    lens->efl = a.firstOrder.efl;
+    lens->fstopMin = a.aperture.fstopMin;
+    lens->fstopMax = a.aperture.fstopMax;
+    if (!table.comments.empty()) {
+        std::string d = table.comments.front();
+        d.erase(0, d.find_first_not_of(' '));
+        lens->description = d;
+    }
+    return lens;
+}
+
+}  // namespace
+
+std::string uploadDisplayName(const std::string& clientName) {
+    const std::size_t slash = clientName.find_last_of("/\\");
+    const std::string base = slash == std::string::npos ? clientName : clientName.substr(slash + 1);
+    std::string name;
+    for (char c : base)
+        if (std::isalnum(static_cast<unsigned char>(c)) || std::string("._-+() ").find(c) != std::string::npos)
+            name += c;
+    name = name.substr(0, 64);
+    name.erase(0, name.find_first_not_of(". "));
+    return name.empty() ? "upload.dat" : name;
+}
+
+LensStore::LensStore(const std::string& bundledDir, const std::string& uploadDir, Database& database, int maxUploads)
+    : uploadDir_(uploadDir), database_(database), maxUploads_(maxUploads) {
+    fs::create_directories(uploadDir_);
+    database_.run(
+        "CREATE TABLE IF NOT EXISTS lenses (id TEXT PRIMARY KEY, name TEXT NOT NULL, created REAL NOT NULL, "
+        "layout TEXT)");
+    loadBundled(bundledDir);
+    loadUploads();
+}
+
+void LensStore::loadBundled(const std::string& folder) {
+    std::error_code ec;
+    std::vector<fs::path> files;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+        if (it->path().extension() == ".dat" && isSafeIdentifier(it->path().stem().string()))
+            files.push_back(it->path());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& file : files) {
+        try {
+            auto lens = describeLens(readLensTable(file.string()));
+            lens->id = file.stem().string();
+            lens->name = file.filename().string();
+            lens->bundled = true;
+            lens->path = file.string();
+            lenses_.push_back(std::move(lens));
+        } catch (const std::exception& e) {
+            std::cerr << "lenslab serve: skipping bundled lens " << file << ": " << e.what() << "\n";
+        }
+    }
+}
+
+void LensStore::loadUploads() {
+    std::vector<std::string> known;
+    database_.run("SELECT id, name, created, layout FROM lenses ORDER BY created", {}, [&](const SqlRow& row) {
+        const std::string id = row.text(0);
+        known.push_back(id + ".dat");
+        if (!isSafeIdentifier(id)) return;
+        const std::string path = (fs::path(uploadDir_) / (id + ".dat")).string();
+        try {
+            const auto layoutName = row.optionalText(3);
+            auto lens = describeLens(parseLensTable(readWholeFile(path), row.text(1),
+                                                    layoutName ? parseLayoutName(*layoutName) : std::nullopt));
+            lens->id = id;
+            lens->name = row.text(1);
+            lens->created = row.real(2);
+            lens->path = path;
+            lenses_.push_back(std::move(lens));
+        } catch (const std::exception& e) {
+            std::cerr << "lenslab serve: skipping uploaded lens " << id << ": " << e.what() << "\n";
+        }
+    });
+    std::error_code ec;
+    for (fs::directory_iterator it(uploadDir_, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string file = it->path().filename().string();
+        if (std::find(known.begin(), known.end(), file) == known.end()) fs::remove(it->path(), ec);
+    }
+}
+
+std::vector<std::shared_ptr<const StoredLens>> LensStore::list() const {
+    std::shared_lock<std::shared_mutex> lock(mutex_);
+    return lenses_;
+}
+
+std::shared_ptr<const StoredLens> LensStore::find(const std::string& id) const {
+    std::shared_lock<std::shared_mutex> lock(mutex_);
+    for (const auto& lens : lenses_)
+        if (lens->id == id) return lens;
+    return nullptr;
+}
+
+std::shared_ptr<const StoredLens> LensStore::add(const std::string& uploadName, const std::string& text,
+                                                 std::optional<TableLayout> layout) {
+    const std::string name = uploadDisplayName(uploadName);
+    auto lens = describeLens(parseLensTable(text, name, layout));
+    lens->id = newRandomIdentifier("upload-");
+    lens->name = name;
+    lens->created = secondsSinceEpoch();
+    lens->path = (fs::path(uploadDir_) / (lens->id + ".dat")).string();
+
+    std::unique_lock<std::shared_mutex> lock(mutex_);
+    const auto uploads = std::count_if(lenses_.begin(), lenses_.end(), [](const auto& l) { return !l->bundled; });
+    if (uploads >= maxUploads_)
+        throw LensStoreFull("the service holds " + std::to_string(uploads) + " uploaded lenses, its limit; delete some first");
+    writeFileAtomically(lens->path, text);
+    database_.run("INSERT INTO lenses (id, name, created, layout) VALUES (?, ?, ?, ?)",
+                  {lens->id, lens->name, lens->created,
+                   layout ? SqlValue(std::string(layoutName(*layout))) : SqlValue(nullptr)});
+    lenses_.push_back(lens);
+    return lens;
+}
+
+LensStore::Removal LensStore::remove(const std::string& id) {
+    std::unique_lock<std::shared_mutex> lock(mutex_);
+    auto it = std::find_if(lenses_.begin(), lenses_.end(), [&](const auto& l) { return l->id == id; });
+    if (it == lenses_.end()) return Removal::NotFound;
+    if ((*it)->bundled) return Removal::ReadOnly;
+    database_.run("DELETE FROM lenses WHERE id = ?", {id});
+    std::error_code ec;
+    fs::remove((*it)->path, ec);
+    lenses_.erase(it);
+    return Removal::Removed;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,50 @@
+#include "QueryParameters.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+
+#include "HttpError.h"
+
+namespace lenslab {
+
+namespace {
+
+std::string shown(const std::string& value) { return "'" + value.substr(0, 40) + "'"; }
+
+std::string formatNumber(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
+
+}  // namespace
+
+std::optional<std::string> queryText(const httplib::Request& req, const std::string& name) {
+    if (!req.has_param(name.c_str())) return std::nullopt;
+    return req.get_param_value(name.c_str());
+}
+
+std::optional<double> queryNumber(const httplib::Request& req, const std::string& name, double min, double max) {
+    const auto text = queryText(req, name);
+    if (!text) return std::nullopt;
+    char* end = nullptr;
+    errno = 0;
+    const double x = std::strtod(text->c_str(), &end);
+    if (text->empty() || *end != '\0' || errno == ERANGE || !std::isfinite(x))
+        throw HttpError(400, name + " must be a number, got " + shown(*text));
+    if (x < min || x > max)
+        throw HttpError(400, name + " must lie between " + formatNumber(min) + " and " + formatNumber(max) + ", got " +
+                                 shown(*text));
+    return x;
+}
+
+std::optional<double> queryDistance(const httplib::Request& req, const std::string& name, double min, double max) {
+    const auto text = queryText(req, name);
+    if (text && (*text == "inf" || *text == "infinity")) return std::numeric_limits<double>::infinity();
+    return queryNumber(req, name, min, max);
+}
+
+}  // namespace lenslab

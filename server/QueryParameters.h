@@ -1,0 +1,15 @@
+#pragma once
+// Reading query parameters with their ranges checked; HttpError 400 naming the parameter.
+#include <httplib.h>
+
+#include <optional>
+#include <string>
+
+namespace lenslab {
+
+std::optional<double> queryNumber(const httplib::Request& req, const std::string& name, double min, double max);
+// Millimetres, or "inf"/"infinity" (returned as infinity); nullopt when absent.
+std::optional<double> queryDistance(const httplib::Request& req, const std::string& name, double min, double max);
+std::optional<std::string> queryText(const httplib::Request& req, const std::string& name);
+
+}  // namespace lenslab

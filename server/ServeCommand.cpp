@@ -1,0 +1,42 @@
+#include "ServeCommand.h"
+
+#include <signal.h>
+
+#include <iostream>
+
+#include "Commands.h"
+#include "EngineRenderer.h"
+#include "ServeOptions.h"
+#include "Service.h"
+
+namespace lenslab {
+
+int serveUntilStopped(const ServiceConfig& config, std::unique_ptr<Renderer> renderer) {
+    // A client that hangs up mid-response must not end the process.
+    ::signal(SIGPIPE, SIG_IGN);
+    // SIGINT and SIGTERM are taken by sigwait below; blocked before any thread starts so that no
+    // other thread receives them.
+    sigset_t stopSignals;
+    sigemptyset(&stopSignals);
+    sigaddset(&stopSignals, SIGINT);
+    sigaddset(&stopSignals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
+
+    Service service(config, std::move(renderer));
+    const int port = service.start();
+    std::cout << "lenslab serve: listening on http://" << config.host << ":" << port << "/ (data: " << config.dataDir
+              << ")" << std::endl;
+    int received = 0;
+    sigwait(&stopSignals, &received);
+    std::cout << "lenslab serve: stopping (signal " << received << ")" << std::endl;
+    service.stop();
+    return 0;
+}
+
+int runServeCommand(const std::vector<std::string>& args) {
+    const auto config = parseServeOptions(args);
+    if (!config) return 0;
+    return serveUntilStopped(*config, std::make_unique<EngineRenderer>(config->limits.threadsPerRender));
+}
+
+}  // namespace lenslab

@@ -1,0 +1,14 @@
+#pragma once
+// Running the service until SIGINT or SIGTERM, with a given renderer (the ray tracer for
+// `lenslab serve`; tests substitute their own).
+#include <memory>
+
+#include "Renderer.h"
+#include "ServiceConfig.h"
+
+namespace lenslab {
+
+// Prints "lenslab serve: listening on http://HOST:PORT/" once it accepts requests.
+int serveUntilStopped(const ServiceConfig& config, std::unique_ptr<Renderer> renderer);
+
+}  // namespace lenslab

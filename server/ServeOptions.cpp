@@ -1,0 +1,81 @@
+#include "ServeOptions.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "ArgParser.h"
+
+#ifndef LENSLAB_SOURCE_DIR
+#error "LENSLAB_SOURCE_DIR must be defined by the build"
+#endif
+
+namespace lenslab {
+
+namespace fs = std::filesystem;
+
+std::string defaultDataDir() {
+    if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg) return (fs::path(xdg) / "lenslab").string();
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return (fs::path(home) / ".local" / "share" / "lenslab").string();
+    return "data";
+}
+
+namespace {
+
+int boundedInteger(const ArgParser& p, const std::string& name, int fallback, long min, long max) {
+    const auto value = p.integer(name);
+    if (!value) return fallback;
+    if (*value < min || *value > max)
+        throw UsageError("serve: " + name + " must lie between " + std::to_string(min) + " and " + std::to_string(max));
+    return static_cast<int>(*value);
+}
+
+}  // namespace
+
+std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& args) {
+    const std::string source = LENSLAB_SOURCE_DIR;
+    ArgParser p("serve", "[--host 127.0.0.1] [--port 8080] [--data DIR] [options]",
+                "Runs the lenslab HTTP service: the REST API (docs/api.md) and the web page at /.\n"
+                "Uploaded lenses, render jobs and their images live in the data folder and survive restarts.");
+    p.option("--host", "ADDR", "address to listen on (default 127.0.0.1, loopback only)");
+    p.option("--port", "N", "port (default 8080; 0 picks a free one)");
+    p.option("--data", "DIR", "uploads, jobs, database (default " + defaultDataDir() + ")");
+    p.option("--lenses", "DIR", "bundled lens tables (default " + source + "/lenses)");
+    p.option("--scenes", "DIR", "bundled scenes (default " + source + "/scenes)");
+    p.option("--web", "DIR", "the web page (default " + source + "/web)");
+    p.option("--report", "DIR", "the report served at /report/ (default DATA/report)");
+    p.option("--access-log", "FILE", "JSON-lines access log (default: standard output)");
+    p.option("--renders", "N", "renders running at once (default 1)");
+    p.option("--max-queue", "N", "renders waiting at most (default 8)");
+    p.option("--max-width", "PX", "largest render width (default 1920)");
+    p.option("--max-height", "PX", "largest render height (default 1920)");
+    p.option("--max-spp", "N", "most samples per pixel (default 1024)");
+    p.option("--render-threads", "N", "threads per render (default 0: all cores)");
+    p.option("--max-body", "BYTES", "largest request body (default 1048576)");
+    p.option("--http-threads", "N", "threads answering requests (default 32)");
+    if (!p.parse(args)) {
+        std::cout << p.help();
+        return std::nullopt;
+    }
+    ServiceConfig c;
+    c.host = p.get("--host", c.host);
+    c.port = boundedInteger(p, "--port", c.port, 0, 65535);
+    c.dataDir = p.get("--data", defaultDataDir());
+    c.lensesDir = p.get("--lenses", source + "/lenses");
+    c.scenesDir = p.get("--scenes", source + "/scenes");
+    c.webDir = p.get("--web", source + "/web");
+    c.reportDir = p.get("--report", (fs::path(c.dataDir) / "report").string());
+    c.accessLogPath = p.get("--access-log");
+    c.limits.concurrentRenders = boundedInteger(p, "--renders", c.limits.concurrentRenders, 1, 16);
+    c.limits.maxQueued = boundedInteger(p, "--max-queue", c.limits.maxQueued, 0, 1000);
+    c.limits.maxWidth = boundedInteger(p, "--max-width", c.limits.maxWidth, 8, 16384);
+    c.limits.maxHeight = boundedInteger(p, "--max-height", c.limits.maxHeight, 8, 16384);
+    c.limits.maxSpp = boundedInteger(p, "--max-spp", c.limits.maxSpp, 1, 1 << 16);
+    c.limits.threadsPerRender = boundedInteger(p, "--render-threads", c.limits.threadsPerRender, 0, 256);
+    c.maxBodyBytes = static_cast<std::size_t>(boundedInteger(p, "--max-body", static_cast<int>(c.maxBodyBytes), 1024, 64 << 20));
+    c.httpThreads = boundedInteger(p, "--http-threads", c.httpThreads, 2, 256);
+    return c;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,71 @@
+#include "Service.h"
+
+#include <filesystem>
+#include <iostream>
+
+#include "AtomicFile.h"
+#include "RenderJobResolver.h"
+#include "WallClock.h"
+
+namespace lenslab {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Prepares the data folder before anything opens files in it.
+std::string databasePath(const ServiceConfig& config) {
+    fs::create_directories(config.dataDir);
+    const int removed = removeStaleTemporaries(config.dataDir);
+    if (removed > 0) std::cerr << "lenslab serve: removed " << removed << " half-written files\n";
+    return (fs::path(config.dataDir) / "lenslab.db").string();
+}
+
+}  // namespace
+
+Service::Service(const ServiceConfig& config, std::unique_ptr<Renderer> renderer)
+    : config_(config),
+      accessLog_(config.accessLogPath),
+      database_(databasePath(config)),
+      lenses_(config.lensesDir, (fs::path(config.dataDir) / "lenses").string(), database_, config.maxUploadedLenses),
+      scenes_(config.scenesDir),
+      diagrams_(config.diagramCacheBytes),
+      jobStore_(database_),
+      renderer_(std::move(renderer)),
+      jobs_(jobStore_, *renderer_, config.limits, (fs::path(config.dataDir) / "renders").string()),
+      parts_{config_, lenses_, scenes_, diagrams_, jobs_, secondsSinceEpoch()},
+      http_(config_, accessLog_) {
+    const int interrupted = jobStore_.markInterrupted();
+    if (interrupted > 0) std::cerr << "lenslab serve: " << interrupted << " render(s) were interrupted; marked failed\n";
+    restoreQueuedJobs();
+    addHealthRoutes(http_.routes(), parts_);
+    addLensRoutes(http_.routes(), parts_);
+    addDiagramRoutes(http_.routes(), parts_);
+    addRenderRoutes(http_.routes(), parts_);
+    addStaticRoutes(http_.routes(), parts_);
+}
+
+Service::~Service() { stop(); }
+
+void Service::restoreQueuedJobs() {
+    for (JobRecord record : jobStore_.queued()) {
+        try {
+            const RenderRequest request = parseRenderRequest(record.request, config_.limits, "");
+            jobs_.restore(record, resolveRenderJob(record.id, request, lenses_, scenes_));
+        } catch (const std::exception& e) {
+            record.state = JobState::Failed;
+            record.finished = secondsSinceEpoch();
+            record.error = std::string("could not be restarted: ") + e.what();
+            jobStore_.save(record);
+        }
+    }
+}
+
+int Service::start() { return http_.start(config_.host, config_.port); }
+
+void Service::stop() {
+    http_.stop();
+    jobs_.shutdown();
+}
+
+}  // namespace lenslab

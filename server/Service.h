@@ -1,0 +1,46 @@
+#pragma once
+// The whole service: data folder, database, lens store, scenes, diagram cache, render queue and the
+// HTTP server with its routes. Construction recovers from an earlier abrupt stop: half-written
+// files are removed, jobs left running are marked interrupted, queued jobs are scheduled again.
+#include <memory>
+
+#include "AccessLog.h"
+#include "Database.h"
+#include "DiagramCache.h"
+#include "HttpServer.h"
+#include "JobQueue.h"
+#include "JobStore.h"
+#include "LensStore.h"
+#include "Renderer.h"
+#include "SceneCatalog.h"
+#include "ServiceConfig.h"
+#include "ServiceParts.h"
+
+namespace lenslab {
+
+class Service {
+public:
+    Service(const ServiceConfig& config, std::unique_ptr<Renderer> renderer);
+    ~Service();  // stop()
+
+    int start();  // returns the port it listens on
+    // Stops listening, then stops the render workers (running jobs go back to the queue).
+    void stop();
+
+private:
+    void restoreQueuedJobs();
+
+    ServiceConfig config_;
+    AccessLog accessLog_;
+    Database database_;
+    LensStore lenses_;
+    SceneCatalog scenes_;
+    DiagramCache diagrams_;
+    JobStore jobStore_;
+    std::unique_ptr<Renderer> renderer_;
+    JobQueue jobs_;
+    ServiceParts parts_;
+    HttpServer http_;
+};
+
+}  // namespace lenslab

@@ -1,0 +1,31 @@
+#pragma once
+// What the route handlers work with; owned by Service, which outlives the HTTP server.
+#include <httplib.h>
+
+#include "DiagramCache.h"
+#include "JobQueue.h"
+#include "LensStore.h"
+#include "SceneCatalog.h"
+#include "ServiceConfig.h"
+
+namespace lenslab {
+
+struct ServiceParts {
+    const ServiceConfig& config;
+    LensStore& lenses;
+    const SceneCatalog& scenes;
+    DiagramCache& diagrams;
+    JobQueue& jobs;
+    double startedAt;  // seconds since the epoch
+};
+
+// The lens a URL names: HttpError 400 for an id outside the safe alphabet, 404 for an unknown one.
+std::shared_ptr<const StoredLens> findLens(const ServiceParts& parts, const std::string& id);
+
+void addHealthRoutes(httplib::Server& server, ServiceParts& parts);
+void addLensRoutes(httplib::Server& server, ServiceParts& parts);
+void addDiagramRoutes(httplib::Server& server, ServiceParts& parts);
+void addRenderRoutes(httplib::Server& server, ServiceParts& parts);
+void addStaticRoutes(httplib::Server& server, ServiceParts& parts);  // last: it owns "/"
+
+}  // namespace lenslab

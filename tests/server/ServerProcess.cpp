@@ -1,0 +1,167 @@
+#include "ServerProcess.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace lenslab::test {
+
+namespace fs = std::filesystem;
+
+TempDir::TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "lenslab-test-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+    path_ = pattern;
+}
+
+TempDir::~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+}
+
+ServerProcess::ServerProcess(const std::string& binary, const std::string& dataDir,
+                             const std::vector<std::string>& extraArgs) {
+    static int started = 0;
+    logPath_ = dataDir + "-server-" + std::to_string(::getpid()) + "-" + std::to_string(started++) + ".log";
+    std::vector<std::string> args = {binary};
+    if (fs::path(binary).filename() == "lenslab") args.push_back("serve");
+    for (const std::string& a : {std::string("--port"), std::string("0"), std::string("--data"), dataDir}) args.push_back(a);
+    args.insert(args.end(), extraArgs.begin(), extraArgs.end());
+    pid_ = ::fork();
+    if (pid_ < 0) throw std::runtime_error("fork failed");
+    if (pid_ == 0) {
+        const int fd = ::open(logPath_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        ::dup2(fd, 1);
+        ::dup2(fd, 2);
+        std::vector<char*> argv;
+        for (std::string& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        ::execv(binary.c_str(), argv.data());
+        ::_exit(127);
+    }
+    const std::regex listening(R"(listening on http://[^:]+:(\d+)/)");
+    for (int attempt = 0; attempt < 600; ++attempt) {
+        std::smatch m;
+        const std::string text = output();
+        if (std::regex_search(text, m, listening)) {
+            port_ = std::stoi(m[1]);
+            return;
+        }
+        int status = 0;
+        if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+            pid_ = -1;
+            throw std::runtime_error("the server exited at start:\n" + text);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    kill9();
+    throw std::runtime_error("the server did not start listening within 30 s:\n" + output());
+}
+
+ServerProcess::~ServerProcess() {
+    stop();
+    std::error_code ec;
+    fs::remove(logPath_, ec);
+}
+
+httplib::Client ServerProcess::client() const {
+    httplib::Client c("127.0.0.1", port_);
+    c.set_connection_timeout(5);
+    c.set_read_timeout(30);
+    return c;
+}
+
+void ServerProcess::stop() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGTERM);
+    for (int i = 0; i < 400; ++i) {
+        int status = 0;
+        if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+            pid_ = -1;
+            return;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    kill9();
+}
+
+void ServerProcess::kill9() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGKILL);
+    wait();
+}
+
+void ServerProcess::wait() {
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+}
+
+std::string ServerProcess::output() const {
+    std::ifstream in(logPath_);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string Reply::header(const std::string& name) const {
+    auto it = headers.find(name);
+    return it == headers.end() ? "" : it->second;
+}
+
+namespace {
+
+Reply toReply(const httplib::Result& result) {
+    Reply r;
+    if (!result) throw std::runtime_error("request failed: " + httplib::to_string(result.error()));
+    r.status = result->status;
+    r.raw = result->body;
+    r.headers = result->headers;
+    r.body = nlohmann::json::parse(result->body, nullptr, false);
+    if (r.body.is_discarded()) r.body = nullptr;
+    return r;
+}
+
+}  // namespace
+
+Reply get(httplib::Client& client, const std::string& path) { return toReply(client.Get(path)); }
+
+Reply postJson(httplib::Client& client, const std::string& path, const nlohmann::json& body) {
+    return toReply(client.Post(path, body.dump(), "application/json"));
+}
+
+Reply postRaw(httplib::Client& client, const std::string& path, const std::string& body) {
+    return toReply(client.Post(path, body, "text/plain"));
+}
+
+Reply remove(httplib::Client& client, const std::string& path) { return toReply(client.Delete(path)); }
+
+bool isPng(const std::string& bytes) { return bytes.size() > 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0; }
+
+bool isExr(const std::string& bytes) { return bytes.size() > 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0; }
+
+nlohmann::json waitForRenderState(httplib::Client& client, const std::string& id, const std::vector<std::string>& states,
+                                  double timeoutSeconds) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds);
+    nlohmann::json status;
+    while (std::chrono::steady_clock::now() < deadline) {
+        status = get(client, "/api/renders/" + id).body;
+        if (status.is_object() && std::find(states.begin(), states.end(), status.value("state", "")) != states.end())
+            return status;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return status;
+}
+
+}  // namespace lenslab::test

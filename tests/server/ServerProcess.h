@@ -1,0 +1,65 @@
+#pragma once
+// Test helpers: a temporary folder, and a service process started on a free loopback port
+// (`serve --port 0`), stopped with SIGTERM or killed with SIGKILL.
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace lenslab::test {
+
+class TempDir {
+public:
+    TempDir();
+    ~TempDir();
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
+
+class ServerProcess {
+public:
+    // Starts `binary serve --port 0 --data dataDir extraArgs...` and waits until it listens.
+    ServerProcess(const std::string& binary, const std::string& dataDir, const std::vector<std::string>& extraArgs = {});
+    ~ServerProcess();  // stop()
+    ServerProcess(const ServerProcess&) = delete;
+    ServerProcess& operator=(const ServerProcess&) = delete;
+
+    int port() const { return port_; }
+    httplib::Client client() const;
+    void stop();   // SIGTERM, then waits (SIGKILL after 20 s)
+    void kill9();  // SIGKILL, then waits
+    std::string output() const;  // everything it printed
+
+private:
+    void wait();
+    pid_t pid_ = -1;
+    int port_ = 0;
+    std::string logPath_;
+};
+
+// GET/POST/DELETE helpers returning status and the parsed JSON body (null when not JSON).
+struct Reply {
+    int status = 0;
+    nlohmann::json body;
+    std::string raw;
+    std::string header(const std::string& name) const;
+    httplib::Headers headers;
+};
+Reply get(httplib::Client& client, const std::string& path);
+Reply postJson(httplib::Client& client, const std::string& path, const nlohmann::json& body);
+Reply postRaw(httplib::Client& client, const std::string& path, const std::string& body);
+Reply remove(httplib::Client& client, const std::string& path);
+
+bool isPng(const std::string& bytes);
+bool isExr(const std::string& bytes);
+
+// Polls GET /api/renders/{id} until its state is one of `states` (or the timeout passes);
+// returns the last status.
+nlohmann::json waitForRenderState(httplib::Client& client, const std::string& id,
+                                  const std::vector<std::string>& states, double timeoutSeconds);
+
+}  // namespace lenslab::test

@@ -1,0 +1,280 @@
+// The real `lenslab serve` on a free loopback port, driven over HTTP: health, lenses (bundled,
+// uploads good and bad, deletion, restart), diagrams, input checking, and a real render.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <future>
+#include <thread>
+
+#include "ServerProcess.h"
+
+using namespace lenslab::test;
+using nlohmann::json;
+
+namespace {
+
+const std::string kBinary = LENSLAB_BINARY;
+const std::string kSource = LENSLAB_SOURCE_DIR;
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class ServerApi : public ::testing::Test {
+protected:
+    void SetUp() override { server_ = std::make_unique<ServerProcess>(kBinary, data_.path() + "/data"); }
+    void restart() {
+        server_.reset();
+        server_ = std::make_unique<ServerProcess>(kBinary, data_.path() + "/data");
+    }
+    httplib::Client client() { return server_->client(); }
+
+    TempDir data_;
+    std::unique_ptr<ServerProcess> server_;
+};
+
+Reply uploadMultipart(httplib::Client& c, const std::string& filename, const std::string& content) {
+    httplib::MultipartFormDataItems items = {{"file", content, filename, "text/plain"}};
+    auto result = c.Post("/api/lenses", items);
+    Reply r;
+    r.status = result->status;
+    r.raw = result->body;
+    r.body = json::parse(result->body, nullptr, false);
+    return r;
+}
+
+}  // namespace
+
+TEST_F(ServerApi, HealthAndVersion) {
+    auto c = client();
+    const Reply health = get(c, "/api/health");
+    ASSERT_EQ(health.status, 200);
+    EXPECT_EQ(health.body["status"], "ok");
+    EXPECT_FALSE(health.body["version"].get<std::string>().empty());
+    const Reply version = get(c, "/api/version");
+    ASSERT_EQ(version.status, 200);
+    EXPECT_EQ(version.body["version"], health.body["version"]);
+    EXPECT_EQ(version.body["api"], 1);
+}
+
+TEST_F(ServerApi, ListsBundledLensesByFileName) {
+    auto c = client();
+    const Reply list = get(c, "/api/lenses");
+    ASSERT_EQ(list.status, 200);
+    bool found = false;
+    for (const json& lens : list.body["lenses"])
+        if (lens["id"] == "dgauss.50mm") {
+            found = true;
+            EXPECT_TRUE(lens["bundled"].get<bool>());
+            EXPECT_NEAR(lens["efl"].get<double>(), 50.3578, 1e-3);
+        }
+    EXPECT_TRUE(found) << list.raw;
+}
+
+TEST_F(ServerApi, LensDataMatchesTheCommandLine) {
+    auto c = client();
+    const Reply api = get(c, "/api/lenses/dgauss.50mm?fstop=4&focus=1000");
+    ASSERT_EQ(api.status, 200) << api.raw;
+    const std::string command = kBinary + " lens " + kSource + "/lenses/dgauss.50mm.dat --fstop 4 --focus 1000 --json";
+    std::string cliText;
+    {
+        FILE* pipe = popen(command.c_str(), "r");
+        ASSERT_NE(pipe, nullptr);
+        char buffer[4096];
+        while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) cliText.append(buffer, n);
+        ASSERT_EQ(pclose(pipe), 0);
+    }
+    const json cli = json::parse(cliText);
+    for (const auto& field : cli.items()) {
+        if (field.key() == "name") continue;
+        EXPECT_EQ(api.body[field.key()], field.value()) << field.key();
+    }
+    EXPECT_EQ(api.body["id"], "dgauss.50mm");
+    EXPECT_DOUBLE_EQ(api.body["fstop"].get<double>(), 4.0);
+    EXPECT_DOUBLE_EQ(api.body["focus"]["distance"].get<double>(), 1000.0);
+}
+
+TEST_F(ServerApi, RefusesOutOfRangeLensSettingsInWords) {
+    auto c = client();
+    const Reply tooWide = get(c, "/api/lenses/dgauss.50mm?fstop=0.9");
+    EXPECT_EQ(tooWide.status, 422) << tooWide.raw;
+    EXPECT_FALSE(tooWide.body["error"].get<std::string>().empty());
+    const Reply notANumber = get(c, "/api/lenses/dgauss.50mm?fstop=abc");
+    EXPECT_EQ(notANumber.status, 400);
+    EXPECT_NE(notANumber.body["error"].get<std::string>().find("fstop"), std::string::npos);
+    EXPECT_EQ(get(c, "/api/lenses/dgauss.50mm?focus=-5").status, 400);
+    EXPECT_EQ(get(c, "/api/lenses/no-such-lens").status, 404);
+}
+
+TEST_F(ServerApi, UploadsLensesThatSurviveARestartAndDeletesThem) {
+    auto c = client();
+    const Reply multipart = uploadMultipart(c, "my wide.dat", readFile(kSource + "/lenses/wide.dat"));
+    ASSERT_EQ(multipart.status, 201) << multipart.raw;
+    const std::string id = multipart.body["id"];
+    EXPECT_EQ(id.rfind("upload-", 0), 0u);
+    EXPECT_EQ(multipart.body["name"], "my wide.dat");
+    EXPECT_NEAR(multipart.body["efl"].get<double>(), 100.11, 0.05);
+    EXPECT_FALSE(multipart.body["bundled"].get<bool>());
+
+    const Reply raw = postRaw(c, "/api/lenses?name=tele.dat", readFile(kSource + "/lenses/telephoto.dat"));
+    ASSERT_EQ(raw.status, 201) << raw.raw;
+    const std::string rawId = raw.body["id"];
+
+    restart();
+    auto after = client();
+    const Reply again = get(after, "/api/lenses/" + id);
+    ASSERT_EQ(again.status, 200) << again.raw;
+    EXPECT_EQ(again.body["efl"], multipart.body["efl"]);
+    EXPECT_EQ(get(after, "/api/lenses/" + rawId).status, 200);
+
+    EXPECT_EQ(remove(after, "/api/lenses/" + id).status, 200);
+    EXPECT_EQ(get(after, "/api/lenses/" + id).status, 404);
+    EXPECT_EQ(remove(after, "/api/lenses/" + id).status, 404);
+    const Reply bundled = remove(after, "/api/lenses/dgauss.50mm");
+    EXPECT_EQ(bundled.status, 403);
+    EXPECT_EQ(get(after, "/api/lenses/dgauss.50mm").status, 200);
+}
+
+TEST_F(ServerApi, RejectsABadLensWithFileAndLine) {
+    auto c = client();
+    const Reply bad = uploadMultipart(c, "broken.dat", "# a broken table\n50 0 1.5 20\n-50 five 1 20\n");
+    ASSERT_EQ(bad.status, 400) << bad.raw;
+    EXPECT_EQ(bad.body["file"], "broken.dat");
+    EXPECT_EQ(bad.body["line"], 3);
+    EXPECT_EQ(bad.body["error"].get<std::string>().rfind("broken.dat:3: ", 0), 0u) << bad.raw;
+    EXPECT_EQ(postRaw(c, "/api/lenses", "   \n").status, 400);
+    httplib::MultipartFormDataItems wrongField = {{"table", "1 2 3 4", "x.dat", "text/plain"}};
+    EXPECT_EQ(c.Post("/api/lenses", wrongField)->status, 400);
+}
+
+TEST_F(ServerApi, UploadNamesNeverBecomePaths) {
+    auto c = client();
+    const Reply r = postRaw(c, "/api/lenses?name=../../../evil.dat", readFile(kSource + "/lenses/dgauss.dat"));
+    ASSERT_EQ(r.status, 201) << r.raw;
+    EXPECT_EQ(r.body["name"], "evil.dat");
+    EXPECT_FALSE(std::filesystem::exists(data_.path() + "/evil.dat"));
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(data_.path()))
+        EXPECT_EQ(entry.path().filename().string().find("evil"), std::string::npos) << entry.path();
+}
+
+TEST_F(ServerApi, RefusesOversizedBodies) {
+    auto c = client();
+    const Reply big = postRaw(c, "/api/lenses", std::string(2 << 20, '1'));
+    EXPECT_EQ(big.status, 413);
+    EXPECT_TRUE(big.body.contains("error")) << big.raw;
+    EXPECT_EQ(get(c, "/api/health").status, 200);
+}
+
+TEST_F(ServerApi, RefusesPathTraversal) {
+    auto c = client();
+    for (const std::string path : {"/../../../../etc/passwd", "/%2e%2e/%2e%2e/etc/passwd", "/report/../../etc/passwd",
+                                   "/api/lenses/..%2f..%2fetc%2fpasswd", "/api/lenses/.hidden",
+                                   "/api/renders/..%2fx/image.png", "/.git/config", "/report/%2e%2e/lenslab.db"}) {
+        const auto result = c.Get(path);
+        ASSERT_TRUE(result) << path;
+        EXPECT_GE(result->status, 400) << path;
+        EXPECT_LT(result->status, 500) << path;
+        EXPECT_EQ(result->body.find("root:"), std::string::npos) << path;
+        EXPECT_EQ(result->body.find("SQLite"), std::string::npos) << path;
+    }
+    const Reply badScene = postJson(c, "/api/renders", {{"scene", "../../etc/passwd"}});
+    EXPECT_EQ(badScene.status, 400);
+    const Reply badLens = postJson(c, "/api/renders", {{"lens", "/etc/passwd"}});
+    EXPECT_EQ(badLens.status, 400);
+}
+
+TEST_F(ServerApi, ServesThePageAndExplainsAMissingReport) {
+    auto c = client();
+    const auto page = c.Get("/");
+    ASSERT_EQ(page->status, 200);
+    EXPECT_NE(page->body.find("lenslab"), std::string::npos);
+    EXPECT_EQ(c.Get("/app.js")->status, 200);
+    const auto report = c.Get("/report/");
+    EXPECT_EQ(report->status, 404);
+    EXPECT_NE(report->body.find("lenslab report"), std::string::npos);
+    std::filesystem::create_directories(data_.path() + "/data/report");
+    std::ofstream(data_.path() + "/data/report/index.html") << "<html>the report</html>";
+    const auto generated = c.Get("/report/");
+    EXPECT_EQ(generated->status, 200);
+    EXPECT_NE(generated->body.find("the report"), std::string::npos);
+}
+
+TEST_F(ServerApi, DrawsCachedDiagramsUnderConcurrentRequests) {
+    auto c = client();
+    for (const std::string mode : {"exact", "thick", "overlay"}) {
+        const auto r = c.Get("/api/lenses/dgauss.50mm/diagram.png?mode=" + mode + "&fstop=2.8&focus=2000&size=600x300");
+        ASSERT_EQ(r->status, 200) << mode << " " << r->body;
+        EXPECT_TRUE(isPng(r->body)) << mode;
+        EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
+    }
+    const std::string url = "/api/lenses/dgauss.50mm/diagram.png?mode=exact&fstop=4&size=400";
+    const int hitsBefore = get(c, "/api/health").body["diagram_cache"]["hits"];
+    std::vector<std::future<std::pair<int, std::string>>> answers;
+    for (int i = 0; i < 16; ++i)
+        answers.push_back(std::async(std::launch::async, [&, i] {
+            httplib::Client own = server_->client();
+            const std::string u = i % 2 ? url : url + "&field=" + std::to_string(5 + i);
+            auto r = own.Get(u);
+            return r ? std::make_pair(r->status, r->body) : std::make_pair(0, std::string());
+        }));
+    std::string first;
+    for (auto& a : answers) {
+        auto [status, body] = a.get();
+        EXPECT_EQ(status, 200);
+        EXPECT_TRUE(isPng(body));
+    }
+    const int hitsAfter = get(c, "/api/health").body["diagram_cache"]["hits"];
+    EXPECT_GE(hitsAfter - hitsBefore, 7);  // 8 identical requests: one draws, the others share it
+
+    EXPECT_EQ(c.Get("/api/lenses/dgauss.50mm/diagram.png?mode=sideways")->status, 400);
+    EXPECT_EQ(c.Get("/api/lenses/dgauss.50mm/diagram.png?size=99999")->status, 400);
+    EXPECT_EQ(c.Get("/api/lenses/dgauss.50mm/diagram.png?size=12xq")->status, 400);
+    EXPECT_EQ(c.Get("/api/lenses/dgauss.50mm/diagram.png?fstop=0.9")->status, 422);
+    EXPECT_EQ(c.Get("/api/lenses/nope/diagram.png")->status, 404);
+}
+
+TEST_F(ServerApi, ChecksEveryRenderField) {
+    auto c = client();
+    EXPECT_EQ(postRaw(c, "/api/renders", "{not json").status, 400);
+    EXPECT_EQ(postJson(c, "/api/renders", json::array()).status, 400);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"spp", 100000}}).status, 400);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"width", 100000}}).status, 400);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"height", 0}}).status, 400);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"spp", 2.5}}).status, 400);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"fstop", "wide"}}).status, 400);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"mode", "magic"}}).status, 400);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"sp", 4}}).status, 400);
+    const Reply unknownLens = postJson(c, "/api/renders", {{"lens", "missing"}});
+    EXPECT_EQ(unknownLens.status, 400);
+    EXPECT_NE(unknownLens.body["error"].get<std::string>().find("missing"), std::string::npos);
+    EXPECT_EQ(get(c, "/api/renders/render-0000").status, 404);
+    EXPECT_EQ(c.Post("/api/nothing", "", "text/plain")->status, 404);
+}
+
+TEST_F(ServerApi, RendersASmallSceneWithTheRayTracer) {
+    auto c = client();
+    const Reply scenes = get(c, "/api/scenes");
+    ASSERT_EQ(scenes.status, 200);
+    ASSERT_FALSE(scenes.body["scenes"].empty()) << "no scenes in " << kSource << "/scenes";
+    const std::string scene = scenes.body["scenes"][0]["id"];
+    const Reply submitted = postJson(c, "/api/renders",
+                                     {{"scene", scene}, {"lens", "dgauss.50mm"}, {"fstop", 4}, {"focaldistance", 2000},
+                                      {"mode", "accurate"}, {"spp", 4}, {"width", 64}, {"height", 64}});
+    ASSERT_EQ(submitted.status, 202) << submitted.raw;
+    const std::string id = submitted.body["id"];
+    const json done = waitForRenderState(c, id, {"done", "failed", "cancelled"}, 120);
+    ASSERT_EQ(done["state"], "done") << done.dump();
+    EXPECT_EQ(done["progress"]["tiles_done"], done["progress"]["tiles_total"]);
+    EXPECT_GT(done["progress"]["tiles_total"].get<int>(), 0);
+    const auto png = c.Get("/api/renders/" + id + "/image.png");
+    ASSERT_EQ(png->status, 200);
+    EXPECT_TRUE(isPng(png->body));
+    const auto exr = c.Get("/api/renders/" + id + "/image.exr");
+    ASSERT_EQ(exr->status, 200);
+    EXPECT_TRUE(isExr(exr->body));
+}
