@@ -125,7 +125,7 @@ Polygon polygonAt(const ExitPupilBounds& b, double r) {
     Polygon p;
     p.n = b.vertices;
     const int last = b.radiusCount() - 1;
-    const double t = b.maxFilmRadius > 0 ? std::clamp(r / b.maxFilmRadius, 0.0, 1.0) * last : 0.0;
+    const double t = b.radiusStep > 0 ? std::clamp(r / b.radiusStep - b.firstRadius, 0.0, double(last)) : 0.0;
     const int i = std::min(static_cast<int>(t), std::max(last - 1, 0));
     const double f = last > 0 ? t - i : 0.0;
     const int j = std::min(i + 1, last);
@@ -139,23 +139,32 @@ Polygon polygonAt(const ExitPupilBounds& b, double r) {
 
 ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius,
                                        const ExitPupilBoundsOptions& options) {
+    if (options.filmRadii < 2) throw OpticsError("exit pupil bounds: need at least 2 film radii");
+    if (!(maxFilmRadius > 0)) throw OpticsError("exit pupil bounds: the film needs a positive size");
+    return computeExitPupilBounds(lens, filmZ, maxFilmRadius / (options.filmRadii - 1), 0, options.filmRadii - 1,
+                                  options);
+}
+
+ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, double radiusStep, int firstRadius,
+                                       int lastRadius, const ExitPupilBoundsOptions& options) {
     if (options.vertices < 8 || options.vertices > kMaxVertices || options.vertices % 2 != 0)
         throw OpticsError("exit pupil bounds: vertices must be even, 8 to 256");
-    if (options.filmRadii < 2) throw OpticsError("exit pupil bounds: need at least 2 film radii");
-    if (!(maxFilmRadius > 0) || !(filmZ < lens.rearZ()))
-        throw OpticsError("exit pupil bounds: the film must lie behind the rear vertex, with a positive size");
+    if (!(radiusStep > 0) || firstRadius < 0 || lastRadius <= firstRadius)
+        throw OpticsError("exit pupil bounds: need a positive radius step and at least 2 film radii");
+    if (!(filmZ < lens.rearZ())) throw OpticsError("exit pupil bounds: the film must lie behind the rear vertex");
     ExitPupilBounds b;
     b.filmZ = filmZ;
     b.aimZ = lens.rearZ();
-    b.maxFilmRadius = maxFilmRadius;
+    b.radiusStep = radiusStep;
+    b.firstRadius = firstRadius;
     b.vertices = options.vertices;
-    const int n = options.vertices;
-    b.centreX.assign(options.filmRadii, 0.0);
-    b.rho.assign(static_cast<std::size_t>(options.filmRadii) * n, 0.0);
+    const int n = options.vertices, count = lastRadius - firstRadius + 1;
+    b.centreX.assign(count, 0.0);
+    b.rho.assign(static_cast<std::size_t>(count) * n, 0.0);
     PassTest passes(lens, filmZ, b.aimZ);
     const double rearRadius = lens.surfaces.back().apertureRadius;
-    for (int i = 0; i < options.filmRadii; ++i) {
-        const double r = maxFilmRadius * i / (options.filmRadii - 1);
+    for (int i = 0; i < count; ++i) {
+        const double r = (firstRadius + i) * radiusStep;
         double extent = 1.5 * rearRadius;
         GridScan g = scanGrid(passes, r, extent, 64);
         for (int grow = 0; grow < 4 && g.touchesEdge; ++grow) {

@@ -19,7 +19,7 @@
 namespace lenslab {
 
 struct ExitPupilBoundsOptions {
-    int filmRadii = 64;      // film radii sampled from 0 to the maximum
+    int filmRadii = 64;      // film radii sampled from 0 to the maximum (whole-disc form)
     int vertices = 64;       // polygon vertices (even), at equal angles around the centre
     double margin = 0.01;    // relative widening of every polygon
 };
@@ -27,16 +27,26 @@ struct ExitPupilBoundsOptions {
 struct ExitPupilBounds {
     double filmZ = 0;          // film plane
     double aimZ = 0;           // aiming plane (rear vertex)
-    double maxFilmRadius = 0;  // the largest film radius covered
+    // Film radii measured: (firstRadius + i) * radiusStep for i < radiusCount(). A crop window
+    // needs a ring of them; the same step keeps its regions identical to the whole frame's.
+    double radiusStep = 0;
+    int firstRadius = 0;
     int vertices = 0;
     std::vector<double> centreX;  // per film radius: region centre on the aiming plane (y = 0)
     std::vector<double> rho;      // per film radius, per vertex: distance from the centre; all 0 when
                                   // no ray passes
     int radiusCount() const { return static_cast<int>(centreX.size()); }
+    double minFilmRadius() const { return firstRadius * radiusStep; }
+    double maxFilmRadius() const { return (firstRadius + radiusCount() - 1) * radiusStep; }
 };
 
-// Measures the regions with the exact trace (the lens's current stop opening). Film points up to
-// maxFilmRadius (mm) at z = filmZ.
+// Measures the regions with the exact trace (the lens's current stop opening) for film points at
+// z = filmZ and radii k * radiusStep (mm), k = firstRadius to lastRadius; beyond that ring the
+// nearest measured region is used, so callers cover every radius they will sample.
+// options.filmRadii is unused here.
+ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, double radiusStep, int firstRadius,
+                                       int lastRadius, const ExitPupilBoundsOptions& options = {});
+// options.filmRadii radii over the whole disc, 0 to maxFilmRadius.
 ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius,
                                        const ExitPupilBoundsOptions& options = {});
 

@@ -75,7 +75,7 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.option("--fstop", "N", "realistic camera: f-number");
     p.option("--focus", "MM", "realistic camera: focus distance from the front vertex, mm");
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
-    p.option("--mode", "M", "realistic camera: accurate | approximate");
+    p.option("--mode", "M", "realistic camera: accurate | approximate | auto (thick lens where its error < 0.5 px)");
     p.flag("--quiet", "no progress bar, no summary");
 
     // -o may repeat: collect every occurrence before the parser (which keeps one value per option).

@@ -66,8 +66,8 @@ RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, c
     r.focalDistance = fieldNumber(body, "focaldistance", 1, 1e7);
     r.filmDiagonal = fieldNumber(body, "filmdiagonal", 1, 500);
     r.mode = fieldText(body, "mode", r.mode);
-    if (r.mode != "accurate" && r.mode != "approximate")
-        throw HttpError(400, "mode must be accurate or approximate, got '" + r.mode.substr(0, 40) + "'");
+    if (r.mode != "accurate" && r.mode != "approximate" && r.mode != "auto")
+        throw HttpError(400, "mode must be accurate|approximate|auto, got '" + r.mode.substr(0, 40) + "'");
     r.spp = fieldInteger(body, "spp", r.spp, 1, limits.maxSpp, "the service's spp limit");
     r.width = fieldInteger(body, "width", r.width, 8, limits.maxWidth, "the service's width limit");
     r.height = fieldInteger(body, "height", r.height, 8, limits.maxHeight, "the service's height limit");

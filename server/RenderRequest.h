@@ -16,7 +16,7 @@ struct RenderRequest {
     std::optional<double> fstop;         // unset: as in the scene
     std::optional<double> focalDistance; // front vertex to the plane of focus; unset: as in the scene
     std::optional<double> filmDiagonal;  // unset: as in the scene
-    std::string mode = "accurate";       // accurate (exact trace) | approximate (thick lens)
+    std::string mode = "accurate";       // accurate (exact trace) | approximate (thick lens) | auto
     int spp = 16;
     int width = 320, height = 240;
 };

@@ -57,8 +57,13 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     }
     r.filmDiagonalMm = o.filmDiagonal.value_or(p.getFloat("filmdiagonal", scene.film.diagonalMm));
     const std::string mode = o.mode.value_or(p.getString("mode", "accurate"));
-    if (mode != "accurate" && mode != "approximate") p.fail("mode must be \"accurate\" or \"approximate\", got \"" + mode + "\"");
-    r.approximate = mode == "approximate";
+    const std::optional<LensMode> lensMode = parseLensMode(mode);
+    if (!lensMode) p.fail("mode must be accurate|approximate|auto, got \"" + mode + "\"");
+    r.mode = *lensMode;
+    r.autoThresholdPixels = p.getFloat("autothreshold", r.autoThresholdPixels);
+    // The scene's crop window: RenderSettings::crop does not reach makeCamera yet, so a render that
+    // overrides a scene's cropwindow must pass its crop in scene.film.crop.
+    r.crop = scene.film.crop;
     r.exposureTime = p.getFloat("shutterclose", 1) - p.getFloat("shutteropen", 0);
     r.simpleWeighting = p.getBool("simpleweighting", pbrtStyle);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});

@@ -43,13 +43,16 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     if (!(params.filmDiagonalMm > 0 && params.filmDiagonalMm < 1e4))
         throw OpticsError("film diagonal must lie in (0, 10000) mm, got " + num(params.filmDiagonalMm));
     if (!(params.exposureTime > 0)) throw OpticsError("exposure time (shutterclose) must be positive");
+    if (!(params.autoThresholdPixels > 0)) throw OpticsError("the auto threshold must be a positive number of pixels");
     const double diag = std::hypot(double(width), double(height));
     halfWidthMm_ = 0.5 * params.filmDiagonalMm * width / diag;
     halfHeightMm_ = 0.5 * params.filmDiagonalMm * height / diag;
+    const double fullFrameRadius = findFilmRadiusRange(filmMarginPixels);
 
     const LensSystem lens = loadLensSystem(params.lensPath);
     std::optional<double> fstop = params.fstop;
     if (!fstop && params.stopDiameterMm) fstop = fstopForStopDiameter(lens, *params.stopDiameterMm);
+    const bool thickFilm = params.mode == LensMode::Approximate;
     if (params.focusFromFilm) {
         // Object distance from the film = focus distance: the film position depends on the focus,
         // so iterate (the film moves by far less than the distance).
@@ -57,32 +60,82 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         for (int it = 0; it < 8; ++it) {
             const double fromVertex = params.focusDistanceMm + filmZ - lens.frontZ();
             analysis_ = analyzeLens(lens, fstop, fromVertex);
-            const double next = params.approximate ? analysis_.focus.imageZThick : analysis_.focus.imageZExact;
+            const double next = thickFilm ? analysis_.focus.imageZThick : analysis_.focus.imageZExact;
             if (std::fabs(next - filmZ) < 1e-9) break;
             filmZ = next;
         }
     } else {
         analysis_ = analyzeLens(lens, fstop, params.focusDistanceMm);
     }
-    filmZ_ = params.approximate ? analysis_.focus.imageZThick : analysis_.focus.imageZExact;
-    if (!(filmZ_ < analysis_.lens.rearZ()))
-        throw OpticsError("the film would sit at z = " + num(filmZ_) + " mm, in front of the rear vertex");
+    filmZExact_ = analysis_.focus.imageZExact;
+    filmZThick_ = analysis_.focus.imageZThick;
 
     const double pixelMm = params.filmDiagonalMm / diag;
-    const double maxRadius = 0.5 * params.filmDiagonalMm + (filmMarginPixels + 1) * pixelMm;
-    double centreWeight;
-    if (params.approximate) {
-        const Pupil& xp = analysis_.pupils.exit;
-        if (!(xp.z > filmZ_)) throw OpticsError("the exit pupil lies behind the film; the thick-lens model cannot aim at it");
-        const double dz = xp.z - filmZ_;
-        centreWeight = M_PI * 0.25 * xp.diameter * xp.diameter / (dz * dz);
-    } else {
-        bounds_ = computeExitPupilBounds(analysis_.lens, filmZ_, maxRadius);
-        const double dz = bounds_.aimZ - filmZ_;
-        centreWeight = sampleExitPupil(bounds_, 0, 0, 0.5, 0.5).area / (dz * dz);
+    switch (params.mode) {
+        case LensMode::Accurate: modes_ = LensModeMap::exactEverywhere(minFilmRadius_, maxFilmRadius_); break;
+        case LensMode::Approximate: modes_ = LensModeMap::thickEverywhere(minFilmRadius_, maxFilmRadius_); break;
+        case LensMode::Auto:
+            errors_ = measureThickLensFilmError(analysis_, minFilmRadius_, maxFilmRadius_);
+            modes_ = LensModeMap::fromErrors(errors_, params.autoThresholdPixels * pixelMm);
+            break;
     }
-    weightScale_ = params.simpleWeighting ? (centreWeight > 0 ? 1.0 / centreWeight : 0.0) : params.exposureTime;
+    const auto checkFilm = [&](double z) {
+        if (!(z < analysis_.lens.rearZ()))
+            throw OpticsError("the film would sit at z = " + num(z) + " mm, in front of the rear vertex");
+    };
+    if (modes_.usesThick()) {
+        checkFilm(filmZThick_);
+        const Pupil& xp = analysis_.pupils.exit;
+        if (!(xp.z > filmZThick_)) throw OpticsError("the exit pupil lies behind the film; the thick-lens model cannot aim at it");
+        const double dz = xp.z - filmZThick_;
+        const double centreWeight = M_PI * 0.25 * xp.diameter * xp.diameter / (dz * dz);
+        weightScaleThick_ = params.simpleWeighting ? (centreWeight > 0 ? 1.0 / centreWeight : 0.0) : params.exposureTime;
+    }
+    if (modes_.usesExact()) {
+        checkFilm(filmZExact_);
+        // The whole frame's radii (64 over the disc), only those around the radii traced exactly: a
+        // crop's regions are then the whole frame's, and so are its pixels.
+        const double step = fullFrameRadius / (ExitPupilBoundsOptions{}.filmRadii - 1);
+        const double slack = 1e-9;  // a radius on a measured one must not pull in the next
+        const int first = int(std::floor(modes_.exactMinRadius() / step + slack));
+        const int last = std::max(first + 1, int(std::ceil(modes_.exactMaxRadius() / step - slack)));
+        bounds_ = computeExitPupilBounds(analysis_.lens, filmZExact_, step, first, last);
+        const double centreWeight = params.simpleWeighting ? exactCentreWeight() : 0;
+        weightScaleExact_ = params.simpleWeighting ? (centreWeight > 0 ? 1.0 / centreWeight : 0.0) : params.exposureTime;
+    }
 }
+
+double RealisticCamera::findFilmRadiusRange(double filmMarginPixels) {
+    // The crop window in pixels (pbrt-v3's rounding), widened by the pixel filter's reach.
+    const std::array<double, 4>& c = params_.crop;
+    if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
+        throw OpticsError("crop window x0,x1,y0,y1 must satisfy 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
+    const double reach = filmMarginPixels + 1;
+    const auto span = [&](double a, double b, int pixels, double halfMm, double& nearMm, double& farMm) {
+        const double lo = (std::ceil(pixels * a) - reach) / pixels, hi = (std::ceil(pixels * b) + reach) / pixels;
+        const double mmLo = (2 * lo - 1) * halfMm, mmHi = (2 * hi - 1) * halfMm;  // film axis, up to sign
+        nearMm = mmLo <= 0 && mmHi >= 0 ? 0.0 : std::min(std::fabs(mmLo), std::fabs(mmHi));
+        farMm = std::max(std::fabs(mmLo), std::fabs(mmHi));
+    };
+    double nearX, farX, nearY, farY;
+    span(c[0], c[1], width_, halfWidthMm_, nearX, farX);
+    span(c[2], c[3], height_, halfHeightMm_, nearY, farY);
+    minFilmRadius_ = std::hypot(nearX, nearY);
+    maxFilmRadius_ = std::hypot(farX, farY);
+    const double marginMm = 2 * reach / width_ * halfWidthMm_;
+    return std::hypot(halfWidthMm_ + marginMm, halfHeightMm_ + marginMm);
+}
+
+double RealisticCamera::exactCentreWeight() const {
+    // The film centre's region, measured apart when the crop leaves the centre out.
+    const ExitPupilBounds centre = bounds_.firstRadius == 0
+                                       ? bounds_
+                                       : computeExitPupilBounds(analysis_.lens, filmZExact_, bounds_.radiusStep, 0, 1);
+    const double dz = centre.aimZ - filmZExact_;
+    return sampleExitPupil(centre, 0, 0, 0.5, 0.5).area / (dz * dz);
+}
+
+double RealisticCamera::filmZ() const { return params_.mode == LensMode::Approximate ? filmZThick_ : filmZExact_; }
 
 void RealisticCamera::filmPoint(double rasterX, double rasterY, double& x, double& y) const {
     const double sx = 2.0 * rasterX / width_ - 1.0;   // -1 left, +1 right
@@ -91,29 +144,26 @@ void RealisticCamera::filmPoint(double rasterX, double rasterY, double& x, doubl
     y = -sy * halfHeightMm_;
 }
 
-double RealisticCamera::aim(double rasterX, double rasterY, float u1, float u2, Ray& ray) const {
-    double fx, fy;
-    filmPoint(rasterX, rasterY, fx, fy);
-    const Vec3 from{fx, fy, filmZ_};
-    Vec3 target;
-    double area;
-    if (params_.approximate) {
-        float dx, dy;
-        concentricDisk(u1, u2, dx, dy);
-        const Pupil& xp = analysis_.pupils.exit;
-        target = {0.5 * xp.diameter * dx, 0.5 * xp.diameter * dy, xp.z};
-        area = M_PI * 0.25 * xp.diameter * xp.diameter;
-    } else {
-        const PupilSample s = sampleExitPupil(bounds_, fx, fy, u1, u2);
-        if (!(s.area > 0)) return 0;
-        target = s.point;
-        area = s.area;
-    }
-    const Vec3 d = target - from;
+// Irradiance from a patch dA of the aiming plane: L cos^2 / dist^2 dA = L cos^4 / dz^2 dA.
+double RealisticCamera::aimThick(double fx, double fy, float u1, float u2, Ray& ray) const {
+    float dx, dy;
+    concentricDisk(u1, u2, dx, dy);
+    const Pupil& xp = analysis_.pupils.exit;
+    const Vec3 from{fx, fy, filmZThick_};
+    const Vec3 d = Vec3{0.5 * xp.diameter * dx, 0.5 * xp.diameter * dy, xp.z} - from;
     ray = {from, (1.0 / length(d)) * d};
-    // Irradiance from a patch dA of the aiming plane: L cos^2 / dist^2 dA = L cos^4 / dz^2 dA.
-    const double dz = target.z - filmZ_;
-    return cos4(ray.direction.z) * area / (dz * dz) * weightScale_;
+    const double dz = xp.z - filmZThick_;
+    return cos4(ray.direction.z) * (M_PI * 0.25 * xp.diameter * xp.diameter) / (dz * dz) * weightScaleThick_;
+}
+
+double RealisticCamera::aimExact(double fx, double fy, float u1, float u2, Ray& ray) const {
+    const PupilSample s = sampleExitPupil(bounds_, fx, fy, u1, u2);
+    if (!(s.area > 0)) return 0;
+    const Vec3 from{fx, fy, filmZExact_};
+    const Vec3 d = s.point - from;
+    ray = {from, (1.0 / length(d)) * d};
+    const double dz = s.point.z - filmZExact_;
+    return cos4(ray.direction.z) * s.area / (dz * dz) * weightScaleExact_;
 }
 
 bool RealisticCamera::finish(const Ray& lensRay, double weight, CameraRay& out) const {
@@ -127,52 +177,84 @@ bool RealisticCamera::finish(const Ray& lensRay, double weight, CameraRay& out) 
 }
 
 bool RealisticCamera::generateRay(double rasterX, double rasterY, float u1, float u2, CameraRay& out) const {
+    double fx, fy;
+    filmPoint(rasterX, rasterY, fx, fy);
     Ray ray;
-    const double weight = aim(rasterX, rasterY, u1, u2, ray);
+    if (modes_.thickAt(std::hypot(fx, fy))) {
+        const double weight = aimThick(fx, fy, u1, u2, ray);
+        const TraceResult r = traceThick(analysis_.thick, ray, TraceDirection::FilmToScene);
+        return weight > 0 && r.ok() && finish(r.ray, weight, out);
+    }
+    const double weight = aimExact(fx, fy, u1, u2, ray);
     if (!(weight > 0)) return false;
-    const TraceResult r = params_.approximate ? traceThick(analysis_.thick, ray, TraceDirection::FilmToScene)
-                                              : traceRay(analysis_.lens, ray, TraceDirection::FilmToScene);
+    const TraceResult r = traceRay(analysis_.lens, ray, TraceDirection::FilmToScene);
     return r.ok() && finish(r.ray, weight, out);
 }
 
 void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const {
-    if (params_.approximate) {
+    if (!modes_.usesExact()) {
         Camera::generateRays(samples, n, out);
         return;
     }
+    // Thick-lens samples are traced one by one; the exact ones together, as one batch.
     thread_local RayBatch batch;
     thread_local std::vector<double> weights;
+    thread_local std::vector<std::size_t> sampleOf;
     batch.resize(n);
     weights.resize(n);
+    sampleOf.clear();
     for (std::size_t i = 0; i < n; ++i) {
-        Ray ray{{0, 0, filmZ_}, {0, 0, 1}};
-        weights[i] = aim(samples[i].rasterX, samples[i].rasterY, samples[i].u1, samples[i].u2, ray);
-        batch.set(i, ray);
+        const CameraSample& s = samples[i];
+        double fx, fy;
+        filmPoint(s.rasterX, s.rasterY, fx, fy);
+        if (modes_.thickAt(std::hypot(fx, fy))) {
+            if (!generateRay(s.rasterX, s.rasterY, s.u1, s.u2, out[i])) out[i].weight = 0;
+            continue;
+        }
+        Ray ray{{0, 0, filmZExact_}, {0, 0, 1}};
+        weights[sampleOf.size()] = aimExact(fx, fy, s.u1, s.u2, ray);
+        batch.set(sampleOf.size(), ray);
+        sampleOf.push_back(i);
     }
+    batch.resize(sampleOf.size());
     traceBatch(analysis_.lens, batch, TraceDirection::FilmToScene);
-    for (std::size_t i = 0; i < n; ++i) {
-        out[i].weight = 0;
-        if (weights[i] > 0 && batch.blocked[i] == BlockReason::None) finish(batch.get(i), weights[i], out[i]);
+    for (std::size_t k = 0; k < sampleOf.size(); ++k) {
+        CameraRay& o = out[sampleOf[k]];
+        o.weight = 0;
+        if (weights[k] > 0 && batch.blocked[k] == BlockReason::None) finish(batch.get(k), weights[k], o);
     }
 }
 
 std::map<std::string, std::string> RealisticCamera::describe() const {
     const LensAnalysis& a = analysis_;
-    return {{"camera", "realistic"},
+    std::map<std::string, std::string> d{{"camera", "realistic"},
             {"lensFile", params_.lensPath},
             {"lensName", a.lens.name},
-            {"mode", params_.approximate ? "approximate" : "accurate"},
+            {"mode", lensModeName(params_.mode)},
+            {"lensModelByFilmRadius", modes_.describe()},
+            {"renderedFilmRadiiMm", num(minFilmRadius_) + " to " + num(maxFilmRadius_)},
+            {"exitPupilBoundsRadii", std::to_string(bounds_.radiusCount())},
             {"fstop", num(a.fstop)},
             {"stopDiameterMm", num(a.stopDiameter)},
             {"focusDistanceMm", a.focus.infinity ? "inf" : num(a.focus.objectZ - a.lens.frontZ())},
             {"filmDiagonalMm", num(params_.filmDiagonalMm)},
-            {"filmZMm", num(filmZ_)},
+            {"filmZMm", num(filmZ())},
             {"eflMm", num(a.firstOrder.efl)},
             {"exitPupilZMm", num(a.pupils.exit.z)},
             {"exitPupilDiameterMm", num(a.pupils.exit.diameter)},
             {"exposureTimeS", num(params_.exposureTime)},
             {"weighting", params_.simpleWeighting ? "simple (centre = 1)" : "radiometric (cos^4 A / d^2 * t)"},
             {"units", "lens mm, world m"}};
+    if (params_.mode == LensMode::Auto) {
+        // The prediction behind the split: worst film error of the thick lens, in pixels, per radius.
+        const double pixelMm = params_.filmDiagonalMm / std::hypot(double(width_), double(height_));
+        std::string errors;
+        for (const ThickLensFilmError& e : errors_)
+            errors += (errors.empty() ? "" : ", ") + num(e.filmRadius) + " mm: " + num(e.maxErrorMm / pixelMm);
+        d["autoThresholdPixels"] = num(params_.autoThresholdPixels);
+        d["thickLensErrorPixels"] = errors;
+    }
+    return d;
 }
 
 }  // namespace lenslab

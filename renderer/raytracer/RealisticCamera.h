@@ -1,14 +1,22 @@
 #pragma once
 // The realistic camera of Kolb, Mitchell & Hanrahan (1995): rays from the film through a real lens
-// (exact trace, "accurate") or its thick-lens model ("approximate"). Lens space is millimetres with
+// (exact trace, "accurate"), its thick-lens model ("approximate"), or each by film radius ("auto":
+// the thick lens where its predicted error stays under a threshold). Lens space is millimetres with
 // the origin at the front vertex and +z toward the scene, like pbrt's camera space; a lens-space
 // ray leaving the front element maps to camera space by dividing by 1000 (metres).
+//
+// Each model keeps its own film plane (exact: best focus of the real lens; thick: the thick-lens
+// conjugate of the plane of focus), so an auto picture equals the accurate one where the exact
+// trace is used and the approximate one elsewhere, sample for sample.
+#include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "Camera.h"
 #include "ExitPupilBounds.h"
 #include "LensAnalysis.h"
+#include "LensModeMap.h"
 #include "Transform.h"
 
 namespace lenslab {
@@ -20,7 +28,11 @@ struct RealisticParams {
     double focusDistanceMm = 10000;        // front vertex to the plane of focus
     bool focusFromFilm = false;            // pbrt-v3: focusDistanceMm is measured from the film instead
     double filmDiagonalMm = 35;
-    bool approximate = false;              // thick-lens model instead of the exact trace
+    LensMode mode = LensMode::Accurate;
+    double autoThresholdPixels = 0.5;      // auto: the largest predicted thick-lens film error allowed
+    // The rendered part of the image, x0, x1, y0, y1 as fractions (pbrt's cropwindow): only the film
+    // radii it reaches are prepared (error map, exit-pupil bounds).
+    std::array<double, 4> crop = {0, 1, 0, 1};
     double exposureTime = 1;               // seconds the shutter is open
     bool simpleWeighting = false;          // pbrt-v3: weights normalised to 1 at the image centre
 };
@@ -36,25 +48,39 @@ public:
     std::map<std::string, std::string> describe() const override;
 
     const LensAnalysis& analysis() const { return analysis_; }
-    double filmZ() const { return filmZ_; }  // mm, lens space
-    const ExitPupilBounds& pupilBounds() const { return bounds_; }
+    double filmZ() const;  // mm, lens space: the thick-lens film in approximate mode, else the exact one
+    const ExitPupilBounds& pupilBounds() const { return bounds_; }  // radiusCount() 0 when unused
+    const LensModeMap& lensModes() const { return modes_; }
+    // Auto mode: the predicted thick-lens error over the rendered film radii (empty otherwise).
+    const std::vector<ThickLensFilmError>& thickLensErrors() const { return errors_; }
+    double minFilmRadius() const { return minFilmRadius_; }  // mm: the film radii rays can start from
+    double maxFilmRadius() const { return maxFilmRadius_; }
     // The film point (mm, lens space z = filmZ) a raster position maps to; the lens inverts the
     // image, so the top-left pixel sits at +x, -y (pbrt's camera x points right, y up).
     void filmPoint(double rasterX, double rasterY, double& x, double& y) const;
 
 private:
-    // Where a film ray is aimed and the weight it will carry if the lens passes it (0: no aim).
-    double aim(double rasterX, double rasterY, float u1, float u2, Ray& ray) const;
+    // Sets the film radii the crop window reaches; returns the whole frame's reach.
+    double findFilmRadiusRange(double filmMarginPixels);
+    double exactCentreWeight() const;
+    // Where a ray from film point (fx, fy) is aimed and the weight it will carry if the lens passes
+    // it (0: no aim), for the thick lens or the exact trace.
+    double aimThick(double fx, double fy, float u1, float u2, Ray& ray) const;
+    double aimExact(double fx, double fy, float u1, float u2, Ray& ray) const;
     bool finish(const Ray& lensRay, double weight, CameraRay& out) const;
 
     RealisticParams params_;
     Transform cameraToWorld_;
     int width_, height_;
     double halfWidthMm_, halfHeightMm_;
+    double minFilmRadius_ = 0, maxFilmRadius_ = 0;
     LensAnalysis analysis_;
-    double filmZ_ = 0;
-    ExitPupilBounds bounds_;         // accurate mode
-    double weightScale_ = 1;         // exposure time, or 1 / centre weight for simple weighting
+    double filmZExact_ = 0, filmZThick_ = 0;
+    std::vector<ThickLensFilmError> errors_;
+    LensModeMap modes_;
+    ExitPupilBounds bounds_;         // for the exact trace's film radii
+    // Exposure time, or 1 / centre weight for simple weighting (each model normalised by its own).
+    double weightScaleExact_ = 1, weightScaleThick_ = 1;
 };
 
 }  // namespace lenslab

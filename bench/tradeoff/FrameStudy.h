@@ -1,0 +1,24 @@
+#pragma once
+// Whole frames of the shared world (scenes/shared-dgauss.pbrt with the study's lens, stop, focus
+// and 36 x 24 mm film put in by overrides) in one mode, timed, and their error against a reference.
+#include <string>
+
+#include "Render.h"
+#include "TradeoffCases.h"
+
+namespace lenslab::tradeoff {
+
+struct TimedFrame {
+    Image image;
+    double setupSeconds = 0, renderSeconds = 0;  // setup: scene, camera (bounds, error map), BVH
+    std::string split;                           // which film radii the thick lens drew
+    double seconds() const { return setupSeconds + renderSeconds; }
+};
+
+TimedFrame renderFrame(const LensCase& lens, const StopCase& stop, const std::string& mode, int width, int height, int spp,
+                  int threads = 2);
+
+// RMS over pixels and channels of (image - reference), divided by the reference's mean value.
+double relativeRmse(const Image& image, const Image& reference);
+
+}  // namespace lenslab::tradeoff

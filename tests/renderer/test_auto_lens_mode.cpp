@@ -1,0 +1,175 @@
+// Mode "auto": the thick lens where its predicted film error stays under the threshold, the exact
+// trace elsewhere, with the work limited to the film radii the crop window reaches.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "RealisticCamera.h"
+#include "TestScenes.h"
+
+namespace lenslab {
+namespace {
+
+// A 36 x 24 mm film at 240 x 160 pixels (0.15 mm pixels), focused at 5.5 m.
+RealisticParams params(const std::string& lens, double fstop, LensMode mode) {
+    RealisticParams p;
+    p.lensPath = test::lensPath(lens);
+    p.fstop = fstop;
+    p.focusDistanceMm = 5500;
+    p.filmDiagonalMm = std::hypot(36.0, 24.0);
+    p.mode = mode;
+    return p;
+}
+
+TEST(AutoLensMode, FisheyeUsesTheThickLensNearTheAxisAndTheExactTraceAtTheRim) {
+    const RealisticCamera c(params("fisheye.10mm.dat", 5.6, LensMode::Auto), {}, 240, 160, 0.5);
+    const LensModeMap& m = c.lensModes();
+    EXPECT_TRUE(m.thickAt(0.0));
+    EXPECT_TRUE(m.thickAt(1.5));
+    // The fisheye's projection leaves the thick lens's (rectilinear) by 0.25 mm at 4 mm already.
+    EXPECT_FALSE(m.thickAt(5.0));
+    EXPECT_FALSE(m.thickAt(12.0));
+    EXPECT_FALSE(m.thickAt(21.0));  // beyond the image circle: only the exact trace draws it black
+    EXPECT_EQ(c.describe().at("lensModelByFilmRadius"), "thick for r < 2 mm, exact beyond");
+    // The prediction behind it: the worst exact ray strays 0.04 mm at r = 2 mm (under 0.075 mm,
+    // half a pixel), 0.25 mm at 4 mm.
+    const auto& e = c.thickLensErrors();
+    ASSERT_GE(e.size(), 3u);
+    EXPECT_LT(e[1].maxErrorMm, 0.075);
+    EXPECT_GT(e[2].maxErrorMm, 0.2);
+}
+
+TEST(AutoLensMode, TelephotoAtF11UsesTheThickLensEverywhereOnASmallFrameButNotOnALargeOne) {
+    const RealisticCamera small(params("telephoto.250mm.dat", 11, LensMode::Auto), {}, 240, 160, 0.5);
+    EXPECT_FALSE(small.lensModes().usesExact());
+    EXPECT_EQ(small.pupilBounds().radiusCount(), 0) << "no exit-pupil bounds for a lens never traced exactly";
+    // 2400 x 1600: 15 um pixels, and the telephoto's 7-70 um errors no longer fit under half of one.
+    const RealisticCamera large(params("telephoto.250mm.dat", 11, LensMode::Auto), {}, 2400, 1600, 0.5);
+    EXPECT_TRUE(large.lensModes().usesExact());
+    EXPECT_GT(large.pupilBounds().radiusCount(), 0);
+}
+
+TEST(AutoLensMode, AccurateAndApproximateModesKeepOneModelEverywhere) {
+    const RealisticCamera accurate(params("dgauss.50mm.dat", 4, LensMode::Accurate), {}, 240, 160, 0.5);
+    EXPECT_FALSE(accurate.lensModes().usesThick());
+    EXPECT_EQ(accurate.pupilBounds().radiusCount(), 64);
+    EXPECT_TRUE(accurate.thickLensErrors().empty());
+    const RealisticCamera approximate(params("dgauss.50mm.dat", 4, LensMode::Approximate), {}, 240, 160, 0.5);
+    EXPECT_FALSE(approximate.lensModes().usesExact());
+    EXPECT_EQ(approximate.pupilBounds().radiusCount(), 0);
+}
+
+TEST(AutoLensMode, ACropWindowPreparesOnlyTheFilmRadiiItReaches) {
+    // The top-right corner tenth of the frame: film radii from about 17 to 22 mm.
+    RealisticParams p = params("fisheye.10mm.dat", 5.6, LensMode::Auto);
+    p.crop = {0.9, 1.0, 0.0, 0.1};
+    const RealisticCamera c(p, {}, 240, 160, 0.5);
+    EXPECT_GT(c.minFilmRadius(), 16.0);
+    EXPECT_LT(c.maxFilmRadius(), 22.0);
+    EXPECT_GE(c.thickLensErrors().front().filmRadius, c.minFilmRadius());
+    EXPECT_FALSE(c.lensModes().usesThick());
+    EXPECT_GE(c.pupilBounds().minFilmRadius(), c.minFilmRadius() - c.pupilBounds().radiusStep);
+    // The whole frame measures 64 radii over 0-21.8 mm; the ring takes those it spans, one more
+    // at each end.
+    const ExitPupilBounds& b = c.pupilBounds();
+    EXPECT_NEAR(b.radiusStep * 63, 0.5 * std::hypot(36.0, 24.0), 0.4);  // and the pixel filter's reach
+    EXPECT_LE(b.radiusCount(), std::ceil((c.maxFilmRadius() - c.minFilmRadius()) / b.radiusStep) + 2);
+    EXPECT_LT(b.radiusCount(), 20);
+}
+
+TEST(AutoLensMode, TheSceneCropWindowReachesTheCameraOfARender) {
+    test::TempDir dir;
+    const std::string scene = dir.write("crop.pbrt",
+        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"float fstop\" 4 \"string mode\" \"auto\"\n"
+        "Film \"image\" \"float cropwindow\" [0.45 0.55 0.45 0.55]\nWorldBegin\nWorldEnd\n");
+    const RenderOutput full = test::render(dir.write("full.pbrt",
+        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"float fstop\" 4 \"string mode\" \"accurate\"\n"
+        "Film \"image\"\nWorldBegin\nWorldEnd\n"), 100, 100, 1);
+    EXPECT_EQ(full.metadata.at("exitPupilBoundsRadii"), "64");
+    const RenderOutput crop = test::render(scene, 100, 100, 1);
+    EXPECT_EQ(crop.metadata.at("mode"), "auto");
+    EXPECT_EQ(crop.metadata.at("exitPupilBoundsRadii"), "0") << "the centre of a 50 mm lens needs no exact trace";
+    EXPECT_EQ(crop.metadata.at("lensModelByFilmRadius").rfind("thick for 0 <= r <= ", 0), 0u)
+        << crop.metadata.at("lensModelByFilmRadius");
+    EXPECT_EQ(crop.metadata.at("autoThresholdPixels"), "0.5");
+    EXPECT_FALSE(crop.metadata.at("thickLensErrorPixels").empty());
+}
+
+// A checkerboard wall 3 m ahead under a uniform sky, through the fisheye on a 24 x 24 mm film.
+std::string fisheyeWall(const std::string& mode) {
+    return "Camera \"realistic\" \"string specfile\" \"fisheye.10mm.dat\" \"float fstop\" 5.6 \"float focaldistance\" "
+           "3000 \"float filmdiagonal\" 33.94 \"string mode\" \"" + mode + "\"\n"
+           "Film \"image\"\nPixelFilter \"box\"\nIntegrator \"directlighting\" \"integer maxdepth\" 1\n"
+           "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+           "Texture \"c\" \"spectrum\" \"checkerboard\" \"float uscale\" 24 \"float vscale\" 24 \"rgb tex1\" [0.9 0.9 0.9] "
+           "\"rgb tex2\" [0.1 0.1 0.1]\nMaterial \"matte\" \"texture Kd\" \"c\"\n"
+           "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point P\" [-9 -9 3  9 -9 3  9 9 3  -9 9 3] "
+           "\"float uv\" [0 0 1 0 1 1 0 1]\nWorldEnd\n";
+}
+
+TEST(AutoLensMode, AutoImageIsTheApproximateOneWhereThickAndTheAccurateOneWhereExact) {
+    test::TempDir dir;
+    constexpr int kSize = 48;
+    const auto render = [&](const std::string& mode) {
+        return test::render(dir.write(mode + ".pbrt", fisheyeWall(mode)), kSize, kSize, 4).image;
+    };
+    const Image accurate = render("accurate"), approximate = render("approximate"), automatic = render("auto");
+    RealisticParams p;
+    p.lensPath = test::lensPath("fisheye.10mm.dat");
+    p.fstop = 5.6;
+    p.focusDistanceMm = 3000;
+    p.filmDiagonalMm = 33.94;
+    p.mode = LensMode::Auto;
+    const RealisticCamera camera(p, {}, kSize, kSize, 0.5);
+    ASSERT_TRUE(camera.lensModes().usesThick());
+    ASSERT_TRUE(camera.lensModes().usesExact());
+    int thickPixels = 0, exactPixels = 0, thickSame = 0, exactSame = 0, thickDiffersFromAccurate = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            // A box-filtered pixel takes samples from its own square only: all four corners on one side.
+            int thickCorners = 0;
+            for (int c = 0; c < 4; ++c) {
+                double fx, fy;
+                camera.filmPoint(x + (c & 1), y + (c >> 1), fx, fy);
+                thickCorners += camera.lensModes().thickAt(std::hypot(fx, fy));
+            }
+            const float a = test::lum(automatic, x, y);
+            if (thickCorners == 4) {
+                ++thickPixels;
+                thickSame += a == test::lum(approximate, x, y);
+                thickDiffersFromAccurate += a != test::lum(accurate, x, y);
+            } else if (thickCorners == 0) {
+                ++exactPixels;
+                exactSame += a == test::lum(accurate, x, y);
+            }
+        }
+    EXPECT_GT(thickPixels, 20);
+    EXPECT_GT(exactPixels, 1000);
+    EXPECT_EQ(thickSame, thickPixels);
+    EXPECT_EQ(exactSame, exactPixels);
+    EXPECT_GT(thickDiffersFromAccurate, thickPixels / 2) << "the two models must differ for the check to mean anything";
+}
+
+TEST(AutoLensMode, ModeAutoIsAcceptedAsAnOverrideAndABadModeNamesTheChoices) {
+    test::TempDir dir;
+    const std::string scene = dir.write("m.pbrt",
+        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"float fstop\" 8\nFilm \"image\"\nWorldBegin\nWorldEnd\n");
+    RenderSettings s;
+    s.camera.mode = "auto";  // what the CLI's --mode and the API's "mode" pass on
+    EXPECT_EQ(test::render(scene, 16, 16, 1, s).metadata.at("mode"), "auto");
+    s.camera.mode = "fast";
+    try {
+        test::render(scene, 16, 16, 1, s);
+        FAIL() << "mode \"fast\" was accepted";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("mode must be accurate|approximate|auto, got \"fast\""), std::string::npos)
+            << e.what();
+    }
+    const std::string threshold = dir.write("t.pbrt",
+        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"string mode\" \"auto\" \"float autothreshold\" 0\n"
+        "Film \"image\"\nWorldBegin\nWorldEnd\n");
+    EXPECT_THROW(test::render(threshold, 16, 16, 1), SceneError);
+}
+
+}  // namespace
+}  // namespace lenslab
