@@ -9,5 +9,6 @@ int runLensCommand(const std::vector<std::string>& args);
 int runDiagramCommand(const std::vector<std::string>& args);
 int runServeCommand(const std::vector<std::string>& args);
 int runRenderCommand(const std::vector<std::string>& args);
+int runReportCommand(const std::vector<std::string>& args);
 
 }  // namespace lenslab

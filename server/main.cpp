@@ -21,6 +21,7 @@ const Subcommand kSubcommands[] = {
     {"lens", "first-order data of a lens table (EFL, F, F', P, P', pupils, f-number, focus)", lenslab::runLensCommand},
     {"diagram", "the lens cross-section with ray fans as a PNG (offscreen OpenGL)", lenslab::runDiagramCommand},
     {"render", "render a scene (pbrt-v3 subset) with a perspective or realistic lens camera", lenslab::runRenderCommand},
+    {"report", "the report web page: lens data, diagrams, renders and plots in a folder", lenslab::runReportCommand},
     {"serve", "the HTTP service and web page (REST API: docs/api.md)", lenslab::runServeCommand},
 };
 

@@ -1,0 +1,60 @@
+#include "LensItems.h"
+
+#include "LensDiagram.h"
+#include "SiteFiles.h"
+
+namespace lenslab {
+
+LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::string& path, const ReportOptions& o) {
+    LensEntry entry;
+    const LensFactsRequest request{o.fstop, o.focusDistance, o.quick};
+    InputsHash lensInputs = itemInputs("lens");
+    lensInputs.addFile(path).add(o.fstop.value_or(0)).add(o.focusDistance).add(o.quick ? "quick" : "full");
+    const std::string jsonFile = "assets/lenses/" + id + ".json";
+    const ManifestItem* facts = runner.run("lens/" + id, "lens data " + id, lensInputs.hex(), [&] {
+        const LensFacts f = measureLens(id, path, request);
+        ManifestItem item;
+        item.data = lensFactsJson(f);
+        if (f.error.empty()) {
+            writeSiteFile(runner.site(), jsonFile, f.analysis.dump(2) + "\n");
+            item.files = {jsonFile};
+        }
+        return item;
+    });
+    if (facts) {
+        entry.facts = lensFactsFromJson(facts->data);
+    } else {
+        entry.facts.id = id;
+        entry.facts.path = path;
+        entry.facts.error = "the lens data could not be stored (see the problems list)";
+    }
+    if (entry.facts.error.empty()) entry.jsonFile = jsonFile;
+
+    for (const char* mode : {"exact", "thick", "overlay"}) {
+        const std::string label = std::string("diagram ") + id + " (" + mode + ")";
+        if (!entry.facts.error.empty()) {
+            runner.skip(label);
+            continue;
+        }
+        DiagramOptions d;
+        d.mode = parseDiagramMode(mode);
+        d.fstop = o.fstop;
+        d.focusDistance = o.focusDistance;
+        d.width = o.quick ? 480 : 960;
+        d.height = o.quick ? 240 : 480;
+        const std::string image = "assets/lenses/" + id + "-" + mode + ".png";
+        InputsHash h = itemInputs("diagram");
+        h.addFile(path).add(mode).add(o.fstop.value_or(0)).add(o.focusDistance).add(double(d.width)).add(double(d.height));
+        const ManifestItem* item = runner.run("diagram/" + id + "/" + mode, label, h.hex(), [&] {
+            writeSiteFile(runner.site(), image, drawLensDiagramPng(loadLensSystem(path), d));
+            ManifestItem m;
+            m.files = {image};
+            return m;
+        });
+        if (item) entry.diagrams.push_back({mode, image, d.width, d.height});
+        else entry.problem = "a diagram could not be drawn (see the problems list)";
+    }
+    return entry;
+}
+
+}  // namespace lenslab

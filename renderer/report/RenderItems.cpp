@@ -1,0 +1,208 @@
+#include "RenderItems.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "ImageDifference.h"
+#include "Render.h"
+#include "SiteFiles.h"
+
+namespace lenslab {
+
+namespace fs = std::filesystem;
+
+RenderPlan renderPlan(const ReportOptions& o) {
+    RenderPlan p;
+    p.spp = o.quick ? 4 : o.spp;
+    p.width = o.quick ? 96 : o.width;
+    for (int s = 1; s * 4 <= p.spp; s *= 2) p.speedSpps.push_back(s);
+    return p;
+}
+
+namespace {
+
+constexpr double kDifferenceGain = 4;
+
+int heightFor(const SceneSource& scene, int width) {
+    if (scene.xResolution > 0 && scene.yResolution > 0)
+        return std::max(1, static_cast<int>(std::lround(double(width) * scene.yResolution / scene.xResolution)));
+    return std::max(1, width * 2 / 3);
+}
+
+nlohmann::json renderRecordJson(const RenderRecord& r) {
+    return {{"image", r.image}, {"mode", r.mode}, {"width", r.width}, {"height", r.height}, {"spp", r.spp},
+            {"fstop", r.fstop}, {"exposure", r.exposure}, {"setup_seconds", r.setupSeconds}, {"render_seconds", r.renderSeconds},
+            {"camera_rays", r.cameraRays}, {"blocked_camera_rays", r.blockedCameraRays}, {"rays_traced", r.raysTraced}};
+}
+
+RenderRecord renderRecordFromJson(const nlohmann::json& j) {
+    RenderRecord r;
+    r.image = j.at("image").get<std::string>();
+    r.mode = j.at("mode").get<std::string>();
+    r.width = j.at("width").get<int>();
+    r.height = j.at("height").get<int>();
+    r.spp = j.at("spp").get<int>();
+    r.fstop = j.at("fstop").get<double>();
+    r.exposure = j.at("exposure").get<double>();
+    r.setupSeconds = j.at("setup_seconds").get<double>();
+    r.renderSeconds = j.at("render_seconds").get<double>();
+    r.cameraRays = j.at("camera_rays").get<std::uint64_t>();
+    r.blockedCameraRays = j.at("blocked_camera_rays").get<std::uint64_t>();
+    r.raysTraced = j.at("rays_traced").get<std::uint64_t>();
+    return r;
+}
+
+struct RenderJob {
+    const SceneSource& scene;
+    const LensEntry& lens;
+    std::string mode;
+    int spp, width, height;
+    double fstop;
+
+    // The radiometric camera weight averages the exit pupil's solid angle, about pi / (4 N^2) of the
+    // scene radiance: scaling by its inverse shows every lens and f-number at the scene's brightness.
+    double exposure() const { return 4 * fstop * fstop / M_PI; }
+
+    RenderSettings settings(int threads) const {
+        RenderSettings s;
+        s.scenePath = scene.path;
+        s.camera.lensFile = lens.facts.path;
+        s.camera.fstop = fstop;
+        s.camera.mode = mode;
+        s.spp = spp;
+        s.width = width;
+        s.height = height;
+        s.threads = threads;
+        return s;
+    }
+
+    std::string hash() const {
+        InputsHash h = itemInputs("render");
+        for (const std::string& f : scene.files) h.addFile(f);
+        h.addFile(lens.facts.path).add(mode).add(double(spp)).add(double(width)).add(double(height)).add(fstop).add(exposure());
+        return h.hex();
+    }
+};
+
+// Runs a render through the cache, counting actual renders; nullopt when it failed.
+std::optional<RenderRecord> renderItem(ItemRunner& runner, const RenderJob& job, int threads) {
+    const std::string id = "render/" + job.scene.id + "/" + job.lens.facts.id + "/" + job.mode;
+    const std::string image = "assets/renders/" + job.scene.id + "/" + job.lens.facts.id + "-" + job.mode + ".png";
+    const ManifestItem* item =
+        runner.run(id, "render " + job.lens.facts.id + " in " + job.scene.id + " (" + job.mode + ")", job.hash(), [&] {
+            runner.countRender();
+            const RenderOutput out = renderScene(job.settings(threads), {}, runner.cancel());
+            writeSiteFile(runner.site(), image, encodePng(out.image, job.exposure()));
+            RenderRecord r;
+            r.image = image;
+            r.mode = job.mode;
+            r.width = out.image.width;
+            r.height = out.image.height;
+            r.spp = job.spp;
+            r.fstop = job.fstop;
+            r.exposure = job.exposure();
+            r.setupSeconds = out.stats.setupSeconds;
+            r.renderSeconds = out.stats.renderSeconds;
+            r.cameraRays = out.stats.cameraRays;
+            r.blockedCameraRays = out.stats.blockedCameraRays;
+            r.raysTraced = out.stats.raysTraced;
+            ManifestItem m;
+            m.files = {image};
+            m.data = renderRecordJson(r);
+            return m;
+        });
+    if (!item) return std::nullopt;
+    return renderRecordFromJson(item->data);
+}
+
+RgbaImage decodeSitePng(const fs::path& site, const std::string& relative) {
+    return decodePng(readBinaryFile(site / relative));
+}
+
+double renderFstopFor(const LensEntry& lens, double requested) {
+    return std::max(requested, lens.facts.analysis.at("fstop_min").get<double>());
+}
+
+}  // namespace
+
+RenderPair buildRenderPair(ItemRunner& runner, const SceneSource& scene, const LensEntry& lens, const RenderPlan& plan,
+                           const ReportOptions& o) {
+    RenderPair pair;
+    pair.lensId = lens.facts.id;
+    const int height = heightFor(scene, plan.width);
+    const double fstop = renderFstopFor(lens, o.renderFstop);
+    const RenderJob accurate{scene, lens, "accurate", plan.spp, plan.width, height, fstop};
+    const RenderJob approximate{scene, lens, "approximate", plan.spp, plan.width, height, fstop};
+    const std::optional<RenderRecord> accurateRecord = renderItem(runner, accurate, o.threads);
+    const std::optional<RenderRecord> approximateRecord = renderItem(runner, approximate, o.threads);
+    const std::string label = "difference " + lens.facts.id + " in " + scene.id;
+    if (!accurateRecord || !approximateRecord) {
+        pair.problem = "the render failed (see the problems list)";
+        runner.skip(label);
+        return pair;
+    }
+    pair.accurate = *accurateRecord;
+    pair.approximate = *approximateRecord;
+    const std::string image = "assets/renders/" + scene.id + "/" + lens.facts.id + "-difference.png";
+    InputsHash h = itemInputs("difference");
+    h.add(accurate.hash()).add(approximate.hash()).add(kDifferenceGain);
+    const ManifestItem* item = runner.run("difference/" + scene.id + "/" + lens.facts.id, label, h.hex(), [&] {
+        const RgbaImage a = decodeSitePng(runner.site(), pair.accurate.image);
+        const RgbaImage b = decodeSitePng(runner.site(), pair.approximate.image);
+        const RgbaImage d = differenceImage(a, b, kDifferenceGain);
+        writeSiteFile(runner.site(), image, encodePngRgba8(d.width, d.height, d.rgba.data()));
+        ManifestItem m;
+        m.files = {image};
+        m.data = {{"rms", rmsDifference(a, b)}};
+        return m;
+    });
+    if (item) {
+        pair.differenceImage = image;
+        pair.differenceGain = kDifferenceGain;
+        pair.rmsDifference = item->data.at("rms").get<double>();
+    } else {
+        pair.problem = "the difference image failed (see the problems list)";
+    }
+    return pair;
+}
+
+// The error of lower sample counts against the accurate render at the report's count, in both modes.
+SpeedStudy buildSpeedStudy(ItemRunner& runner, const ReportScene& scene, const LensEntry& lens, const RenderPlan& plan,
+                           const ReportOptions& o) {
+    SpeedStudy study{scene.scene.id, lens.facts.id, plan.spp, {}};
+    const RenderPair* reference = nullptr;
+    for (const RenderPair& p : scene.pairs)
+        if (p.lensId == lens.facts.id && p.problem.empty()) reference = &p;
+    const int height = heightFor(scene.scene, plan.width);
+    const double fstop = renderFstopFor(lens, o.renderFstop);
+    const RenderJob referenceJob{scene.scene, lens, "accurate", plan.spp, plan.width, height, fstop};
+    for (const char* mode : {"accurate", "approximate"})
+        for (int spp : plan.speedSpps) {
+            const std::string label = "speed study " + std::string(mode) + " at " + std::to_string(spp) + " spp";
+            if (!reference) {
+                runner.skip(label);
+                continue;
+            }
+            const RenderJob job{scene.scene, lens, mode, spp, plan.width, height, fstop};
+            InputsHash h = itemInputs("speed");
+            h.add(job.hash()).add(referenceJob.hash());
+            const std::string id = "speed/" + scene.scene.id + "/" + lens.facts.id + "/" + mode + "/" + std::to_string(spp);
+            const ManifestItem* item = runner.run(id, label, h.hex(), [&] {
+                runner.countRender();
+                const RenderOutput out = renderScene(job.settings(o.threads), {}, runner.cancel());
+                const std::vector<std::uint8_t> png = encodePng(out.image, job.exposure());
+                const double rms = rmsDifference(decodePng(png), decodeSitePng(runner.site(), reference->accurate.image));
+                ManifestItem m;
+                m.data = {{"seconds", out.stats.setupSeconds + out.stats.renderSeconds}, {"rms", rms}};
+                return m;
+            });
+            if (item) study.points.push_back({mode, spp, item->data.at("seconds").get<double>(), item->data.at("rms").get<double>()});
+        }
+    if (reference)
+        study.points.push_back({"approximate", plan.spp, reference->approximate.setupSeconds + reference->approximate.renderSeconds,
+                                reference->rmsDifference});
+    return study;
+}
+
+}  // namespace lenslab

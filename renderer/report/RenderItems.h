@@ -1,0 +1,29 @@
+#pragma once
+// The report's renders: each lens through each scene with a realistic camera, accurate and
+// approximate, their difference image, and the speed-against-accuracy study. Every render is an
+// item of the cache, keyed by the scene's files, the lens table and the settings.
+#include <vector>
+
+#include "BuildReport.h"
+#include "ItemRunner.h"
+#include "ReportContent.h"
+
+namespace lenslab {
+
+// The settings every render of the report shares.
+struct RenderPlan {
+    int spp = 0, width = 0;
+    std::vector<int> speedSpps;  // the sample counts of the speed study: 1, 2, 4, ... up to spp / 4
+};
+
+RenderPlan renderPlan(const ReportOptions& options);
+
+RenderPair buildRenderPair(ItemRunner& runner, const SceneSource& scene, const LensEntry& lens, const RenderPlan& plan,
+                           const ReportOptions& options);
+
+// Lower sample counts of `lens` in the scene against its accurate render at the plan's count (taken
+// from scene.pairs; the study is empty when that render is missing).
+SpeedStudy buildSpeedStudy(ItemRunner& runner, const ReportScene& scene, const LensEntry& lens, const RenderPlan& plan,
+                           const ReportOptions& options);
+
+}  // namespace lenslab

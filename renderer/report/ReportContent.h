@@ -1,0 +1,72 @@
+#pragma once
+// Everything the report page shows, gathered (or read from the cache) before the HTML is written.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "LensFacts.h"
+#include "SceneFiles.h"
+
+namespace lenslab {
+
+struct DiagramImage {
+    std::string mode;   // "exact", "thick", "overlay"
+    std::string image;  // path relative to the site folder
+    int width = 0, height = 0;
+};
+
+struct LensEntry {
+    LensFacts facts;
+    std::vector<DiagramImage> diagrams;
+    std::string jsonFile;  // the table's JSON, as `lenslab lens --json` prints it
+    std::string problem;   // a diagram that could not be drawn
+};
+
+struct RenderRecord {
+    std::string image;  // relative to the site folder
+    std::string mode;   // "accurate" | "approximate"
+    int width = 0, height = 0, spp = 0;
+    double fstop = 0;
+    double exposure = 1;  // PNG scale of the linear image
+    double setupSeconds = 0, renderSeconds = 0;
+    std::uint64_t cameraRays = 0, blockedCameraRays = 0, raysTraced = 0;
+};
+
+struct RenderPair {
+    std::string lensId;
+    RenderRecord accurate, approximate;
+    std::string differenceImage;  // |accurate - approximate| of the 8-bit sRGB images, times differenceGain
+    double differenceGain = 0;
+    double rmsDifference = 0;     // in 8-bit sRGB levels
+    std::string problem;          // why the pair is missing
+};
+
+struct ReportScene {
+    SceneSource scene;
+    std::vector<RenderPair> pairs;  // empty for a scene without a realistic camera
+};
+
+// Error against a converged render as the sample count grows: the cost of accuracy.
+struct SpeedPoint {
+    std::string mode;
+    int spp = 0;
+    double seconds = 0;    // setup + render
+    double rmsError = 0;   // against the accurate render at the report's sample count, 8-bit sRGB levels
+};
+
+struct SpeedStudy {
+    std::string sceneId, lensId;
+    int referenceSpp = 0;
+    std::vector<SpeedPoint> points;
+};
+
+struct ReportContent {
+    std::string version, generatedAt;
+    std::vector<std::string> parameters;  // "name: value" lines shown in the header
+    std::vector<LensEntry> lenses;
+    std::vector<ReportScene> scenes;
+    SpeedStudy speed;
+    std::vector<std::string> problems;
+};
+
+}  // namespace lenslab

@@ -1,0 +1,73 @@
+// Relative illumination by exact tracing: the cos^4 law for a bare stop, and the falloff of a real lens.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "FirstOrder.h"
+#include "LensSystem.h"
+#include "OpticsError.h"
+#include "RelativeIllumination.h"
+
+using namespace lenslab;
+
+namespace {
+
+// A lone circular stop at z = 0: nothing vignettes, so only the cos^4 law remains.
+LensSystem bareStop(double radius) {
+    LensSystem lens;
+    Surface s;
+    s.apertureRadius = radius;
+    s.isStop = true;
+    lens.surfaces = {s};
+    lens.stopIndex = 0;
+    return lens;
+}
+
+LensSystem bundled(const char* name) { return loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name); }
+
+}  // namespace
+
+TEST(RelativeIllumination, BareStopFollowsCosineFourthLaw) {
+    const double filmDistance = 50;
+    const auto samples = relativeIllumination(bareStop(0.5), -filmDistance, 40.0);
+    ASSERT_EQ(samples.size(), 48u);
+    for (const auto& s : samples) {
+        SCOPED_TRACE(s.filmRadius);
+        const double c = std::cos(std::atan(s.filmRadius / filmDistance));
+        EXPECT_NEAR(s.relativeIllumination, c * c * c * c, 2e-3);
+        EXPECT_NEAR(s.passingArea, 1.0, 1e-9);  // the stop is the aiming plane: no vignetting
+    }
+}
+
+TEST(RelativeIllumination, DoubleGaussFallsOffMonotonicallyFromOneAtTheCentre) {
+    const LensSystem lens = bundled("dgauss.50mm.dat");
+    const FirstOrder fo = computeFirstOrder(lens);
+    const auto samples = relativeIllumination(lens, fo.zFPrime, 21.6);  // 35 mm film half-diagonal
+    EXPECT_DOUBLE_EQ(samples.front().relativeIllumination, 1.0);
+    EXPECT_DOUBLE_EQ(samples.front().passingArea, 1.0);
+    for (std::size_t k = 1; k < samples.size(); ++k) {
+        SCOPED_TRACE(samples[k].filmRadius);
+        EXPECT_LE(samples[k].relativeIllumination, samples[k - 1].relativeIllumination + 2e-3);
+        // cos^4 only takes light away: illumination never exceeds the unweighted passing area.
+        EXPECT_LE(samples[k].relativeIllumination, samples[k].passingArea + 1e-3);
+    }
+    // Wide open at the corner of 35 mm film a double Gauss keeps well under two thirds of the light.
+    EXPECT_LT(samples.back().relativeIllumination, 0.65);
+    EXPECT_GT(samples.back().relativeIllumination, 0.05);
+}
+
+TEST(RelativeIllumination, ImageCircleEndsWhereNoLightPasses) {
+    const LensSystem lens = bundled("dgauss.50mm.dat");
+    const FirstOrder fo = computeFirstOrder(lens);
+    const double circle = imageCircleRadius(lens, fo.zFPrime, 200.0);
+    EXPECT_GT(circle, 21.6);
+    EXPECT_LT(circle, 100.0);
+    const auto beyond = relativeIllumination(lens, fo.zFPrime, 1.05 * circle, {11, 64});
+    EXPECT_GT(beyond[9].relativeIllumination, 0.0);  // at 0.945 of the circle
+    EXPECT_EQ(beyond.back().relativeIllumination, 0.0);
+    EXPECT_DOUBLE_EQ(imageCircleRadius(bareStop(1.0), -50.0, 30.0), 30.0);
+}
+
+TEST(RelativeIllumination, RefusesAFilmInFrontOfTheLens) {
+    EXPECT_THROW(relativeIllumination(bareStop(1.0), 10.0, 5.0), OpticsError);
+}

@@ -1,0 +1,224 @@
+// Builds the quick report with the real `lenslab report` binary and checks the site: every lens and
+// scene present, every image a valid PNG of its stated size, every link relative and resolving, the
+// tables equal to `lenslab lens --json`, the HTML well formed, and a second build reusing everything.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "HtmlCheck.h"
+#include "PngCodec.h"
+
+namespace fs = std::filesystem;
+using lenslab::test::checkHtml;
+using lenslab::test::HtmlCheck;
+
+namespace {
+
+const std::vector<std::string> kCommonScale = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
+
+struct CommandRun {
+    int status = -1;
+    std::string out;
+    double seconds = 0;
+};
+
+CommandRun run(const std::string& command) {
+    CommandRun r;
+    const auto start = std::chrono::steady_clock::now();
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return r;
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.out.append(buffer, n);
+    const int status = pclose(pipe);
+    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
+std::string readFile(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::vector<std::string> stems(const fs::path& dir, const std::string& extension) {
+    std::vector<std::string> ids;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().extension() == extension) ids.push_back(e.path().stem().string());
+    return ids;
+}
+
+// The numbers `report: ... N built, M reused; K renders` from the command's summary line.
+struct Counts {
+    int built = -1, reused = -1, renders = -1;
+};
+
+Counts counts(const std::string& out) {
+    std::smatch m;
+    Counts c;
+    if (std::regex_search(out, m, std::regex(R"((\d+) built, (\d+) reused; (\d+) renders)")))
+        c = {std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3])};
+    return c;
+}
+
+class ReportPage : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        site_ = fs::temp_directory_path() / ("lenslab-report-test-" + std::to_string(getpid()));
+        fs::remove_all(site_);
+        first_ = run(std::string(LENSLAB_BINARY) + " report --quick --quiet -o " + site_.string());
+        html_ = readFile(site_ / "index.html");
+    }
+    static void TearDownTestSuite() { fs::remove_all(site_); }
+
+    static fs::path site_;
+    static CommandRun first_;
+    static std::string html_;
+};
+
+fs::path ReportPage::site_;
+CommandRun ReportPage::first_;
+std::string ReportPage::html_;
+
+TEST_F(ReportPage, BuildsQuicklyAndWellFormed) {
+    ASSERT_EQ(first_.status, 0) << first_.out;
+    EXPECT_LT(first_.seconds, 60.0);
+    const Counts c = counts(first_.out);
+    EXPECT_GT(c.built, 0) << first_.out;
+    EXPECT_EQ(c.reused, 0);
+    const HtmlCheck check = checkHtml(html_);
+    for (const std::string& e : check.errors) ADD_FAILURE() << e;
+    EXPECT_EQ(html_.rfind("<!DOCTYPE html>", 0), 0u);
+}
+
+TEST_F(ReportPage, EveryLensAndSceneAppears) {
+    ASSERT_EQ(first_.status, 0) << first_.out;
+    const fs::path source = LENSLAB_SOURCE_DIR;
+    for (const std::string& lens : stems(source / "lenses", ".dat")) {
+        EXPECT_NE(html_.find("id=\"lens-" + lens + "\""), std::string::npos) << lens;
+        for (const char* mode : {"exact", "thick", "overlay"})
+            EXPECT_NE(html_.find("src=\"assets/lenses/" + lens + "-" + mode + ".png\""), std::string::npos) << lens << " " << mode;
+    }
+    const auto scenes = stems(source / "scenes", ".pbrt");
+    ASSERT_FALSE(scenes.empty());
+    for (const std::string& scene : scenes) {
+        EXPECT_NE(html_.find("id=\"scene-" + scene + "\""), std::string::npos) << scene;
+        for (const std::string& lens : kCommonScale)
+            for (const char* kind : {"accurate", "approximate", "difference"})
+                EXPECT_NE(html_.find("src=\"assets/renders/" + scene + "/" + lens + "-" + kind + ".png\""), std::string::npos)
+                    << scene << " " << lens << " " << kind;
+    }
+    // One inline SVG plot per lens for each of thick error, illumination and distortion, plus the comparisons.
+    std::size_t plots = 0;
+    for (std::size_t at = html_.find("<svg"); at != std::string::npos; at = html_.find("<svg", at + 1)) ++plots;
+    EXPECT_EQ(plots, 3 * stems(source / "lenses", ".dat").size() + 3);
+}
+
+TEST_F(ReportPage, EveryImageIsAValidPngOfItsStatedSizeAndEveryLinkIsLocal) {
+    ASSERT_EQ(first_.status, 0) << first_.out;
+    const HtmlCheck check = checkHtml(html_);
+    std::set<std::string> ids;
+    for (const auto& e : check.elements)
+        if (e.attributes.count("id")) ids.insert(e.attributes.at("id"));
+    int images = 0;
+    for (const auto& e : check.elements) {
+        for (const char* attribute : {"src", "href"}) {
+            if (!e.attributes.count(attribute)) continue;
+            const std::string link = e.attributes.at(attribute);
+            SCOPED_TRACE(link);
+            EXPECT_EQ(link.find("://"), std::string::npos);
+            EXPECT_NE(link.rfind("/", 0), 0u) << "absolute path";
+            if (link == "data:,") continue;  // the empty favicon
+            if (link[0] == '#') {
+                EXPECT_TRUE(ids.count(link.substr(1))) << "no element with that id";
+                continue;
+            }
+            EXPECT_TRUE(fs::is_regular_file(site_ / link));
+        }
+        if (e.name != "img") continue;
+        ++images;
+        const std::string src = e.attributes.at("src");
+        const std::string bytes = readFile(site_ / src);
+        try {
+            const lenslab::RgbaImage png = lenslab::decodePng(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+            EXPECT_EQ(std::to_string(png.width), e.attributes.at("width")) << src;
+            EXPECT_EQ(std::to_string(png.height), e.attributes.at("height")) << src;
+            EXPECT_FALSE(e.attributes.at("alt").empty()) << src;
+        } catch (const std::exception& x) {
+            ADD_FAILURE() << src << ": " << x.what();
+        }
+    }
+    EXPECT_GT(images, 24);
+    for (const std::string& text : {html_, readFile(site_ / "style.css")}) {
+        EXPECT_EQ(text.find("http://"), std::string::npos);
+        EXPECT_EQ(text.find("https://"), std::string::npos);
+        EXPECT_EQ(text.find("url("), text.find("url(#")) << "a stylesheet or SVG fetch";
+    }
+}
+
+TEST_F(ReportPage, TablesHoldTheNumbersOfLensJson) {
+    ASSERT_EQ(first_.status, 0) << first_.out;
+    const fs::path source = LENSLAB_SOURCE_DIR;
+    const std::regex cell(R"re(<td data-key="([^"]+)">([^<]*)</td>)re");
+    for (const std::string& lens : stems(source / "lenses", ".dat")) {
+        SCOPED_TRACE(lens);
+        const CommandRun cli = run(std::string(LENSLAB_BINARY) + " lens " + (source / "lenses" / (lens + ".dat")).string() +
+                            " --focus 2000 --json");
+        ASSERT_EQ(cli.status, 0) << cli.out;
+        const nlohmann::json expected = nlohmann::json::parse(cli.out);
+        EXPECT_EQ(nlohmann::json::parse(readFile(site_ / "assets/lenses" / (lens + ".json"))), expected);
+
+        const std::size_t begin = html_.find("<article class=\"lens\" id=\"lens-" + lens + "\">");
+        ASSERT_NE(begin, std::string::npos);
+        const std::string article = html_.substr(begin, html_.find("</article>", begin) - begin);
+        int cells = 0;
+        for (std::sregex_iterator it(article.begin(), article.end(), cell), end; it != end; ++it, ++cells) {
+            const std::string key = (*it)[1], text = (*it)[2];
+            nlohmann::json node = expected;
+            std::istringstream path(key);
+            for (std::string part; std::getline(path, part, '.');) node = node.at(part);
+            const std::size_t dot = text.find('.');
+            const int decimals = dot == std::string::npos ? 0 : static_cast<int>(text.size() - dot - 1);
+            EXPECT_NEAR(std::stod(text), node.get<double>(), 0.5 * std::pow(10.0, -decimals) + 1e-12) << key;
+        }
+        EXPECT_GE(cells, 20);
+    }
+}
+
+TEST_F(ReportPage, SecondBuildReusesEverythingAndRendersNothing) {
+    ASSERT_EQ(first_.status, 0) << first_.out;
+    const CommandRun second = run(std::string(LENSLAB_BINARY) + " report --quick --quiet -o " + site_.string());
+    ASSERT_EQ(second.status, 0) << second.out;
+    const Counts before = counts(first_.out), after = counts(second.out);
+    EXPECT_EQ(after.built, 0) << second.out;
+    EXPECT_EQ(after.renders, 0);
+    EXPECT_EQ(after.reused, before.built);
+    EXPECT_LT(second.seconds, std::max(2.0, 0.5 * first_.seconds));
+}
+
+TEST_F(ReportPage, ChromiumShowsThePageWithEveryImage) {
+    ASSERT_EQ(first_.status, 0) << first_.out;
+    const fs::path browser = fs::path(LENSLAB_SOURCE_DIR) / "tests/browser";
+    if (!fs::exists(browser / "node_modules/playwright-core") || run("command -v node").status != 0)
+        GTEST_SKIP() << "needs node and playwright-core in tests/browser/node_modules (npm ci there)";
+    const fs::path shot = site_.string() + "-screenshot.png";
+    const CommandRun r = run("node " + (browser / "report-screenshot.cjs").string() + " " + site_.string() + " " + shot.string());
+    ASSERT_EQ(r.status, 0) << r.out;
+    const std::string bytes = readFile(shot);
+    const lenslab::RgbaImage png = lenslab::decodePng(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+    EXPECT_EQ(png.width, 1280);
+    fs::remove(shot);
+}
+
+}  // namespace
