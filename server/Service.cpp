@@ -33,7 +33,7 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<Renderer> renderer
       jobStore_(database_),
       renderer_(std::move(renderer)),
       jobs_(jobStore_, *renderer_, config.limits, (fs::path(config.dataDir) / "renders").string()),
-      parts_{config_, lenses_, scenes_, diagrams_, jobs_, secondsSinceEpoch()},
+      parts_{config_, lenses_, scenes_, diagrams_, jobs_, report_, secondsSinceEpoch()},
       http_(config_, accessLog_) {
     const int interrupted = jobStore_.markInterrupted();
     if (interrupted > 0) std::cerr << "lenslab serve: " << interrupted << " render(s) were interrupted; marked failed\n";
@@ -42,6 +42,7 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<Renderer> renderer
     addLensRoutes(http_.routes(), parts_);
     addDiagramRoutes(http_.routes(), parts_);
     addRenderRoutes(http_.routes(), parts_);
+    addReportRoutes(http_.routes(), parts_);
     addStaticRoutes(http_.routes(), parts_);
 }
 

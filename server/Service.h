@@ -12,6 +12,7 @@
 #include "JobStore.h"
 #include "LensStore.h"
 #include "Renderer.h"
+#include "ReportJob.h"
 #include "SceneCatalog.h"
 #include "ServiceConfig.h"
 #include "ServiceParts.h"
@@ -39,6 +40,7 @@ private:
     JobStore jobStore_;
     std::unique_ptr<Renderer> renderer_;
     JobQueue jobs_;
+    ReportJob report_;
     ServiceParts parts_;
     HttpServer http_;
 };

@@ -5,6 +5,7 @@
 #include "DiagramCache.h"
 #include "JobQueue.h"
 #include "LensStore.h"
+#include "ReportJob.h"
 #include "SceneCatalog.h"
 #include "ServiceConfig.h"
 
@@ -16,6 +17,7 @@ struct ServiceParts {
     const SceneCatalog& scenes;
     DiagramCache& diagrams;
     JobQueue& jobs;
+    ReportJob& report;
     double startedAt;  // seconds since the epoch
 };
 
@@ -26,6 +28,7 @@ void addHealthRoutes(httplib::Server& server, ServiceParts& parts);
 void addLensRoutes(httplib::Server& server, ServiceParts& parts);
 void addDiagramRoutes(httplib::Server& server, ServiceParts& parts);
 void addRenderRoutes(httplib::Server& server, ServiceParts& parts);
+void addReportRoutes(httplib::Server& server, ServiceParts& parts);
 void addStaticRoutes(httplib::Server& server, ServiceParts& parts);  // last: it owns "/"
 
 }  // namespace lenslab

@@ -39,8 +39,9 @@ bool serveInside(const std::string& root, std::string relative, httplib::Respons
 const char* kNoReportPage =
     "<!doctype html><html><head><meta charset=\"utf-8\"><title>No report yet</title>"
     "<link rel=\"icon\" href=\"data:,\"></head><body style=\"font-family:sans-serif;max-width:40em;margin:3em auto\">"
-    "<h1>No report yet</h1><p>The report has not been generated. Run <code>lenslab report</code> "
-    "(it writes the report into the service's report folder), then reload this page.</p>"
+    "<h1>No report yet</h1><p>The report has not been generated. Build it from the web page, with "
+    "<code>curl -X POST http://HOST:PORT/api/report</code>, or run <code>lenslab report -o DATA/report</code> "
+    "(DATA is the service's data folder), then reload this page.</p>"
     "<p><a href=\"/\">Back to lenslab</a></p></body></html>";
 
 const char* kNotFoundPage =

@@ -58,9 +58,10 @@ async function loadLenses(selectId) {
     const button = document.createElement("button");
     button.type = "button";
     button.dataset.id = lens.id;
-    button.append(lens.id);
+    // Bundled lenses go by their id; an upload by the name it was uploaded under (its id is random).
+    button.append(lens.bundled ? lens.id : lens.name);
     const detail = document.createElement("small");
-    detail.textContent = `EFL ${mm(lens.efl, 1)} mm, f/${mm(lens.fstop_min, 2)}` + (lens.bundled ? "" : " · uploaded");
+    detail.textContent = `EFL ${mm(lens.efl, 1)} mm, f/${mm(lens.fstop_min, 2)}` + (lens.bundled ? "" : ` · uploaded (${lens.id})`);
     button.append(detail);
     button.addEventListener("click", () => selectLens(lens.id));
     item.append(button);
@@ -467,6 +468,39 @@ async function loadRecentRenders() {
   }
 }
 
+// ---- the report --------------------------------------------------------------------------------
+
+function showReportStatus(job) {
+  const p = job.progress || {};
+  const text = {
+    idle: "",
+    running: `building the report: ${p.done || 0} of ${p.total || "?"} items`,
+    done: job.summary ? `report built: ${job.summary.built} items made, ${job.summary.reused} reused` : "report built",
+    failed: "the report failed: " + (job.error || "unknown error"),
+    cancelled: "the report build was cancelled",
+  }[job.state] || "";
+  $("report-status").textContent = text;
+  $("report-build").disabled = job.state === "running";
+  return job.state === "running";
+}
+
+async function followReport() {
+  try {
+    while (showReportStatus(await api("/api/report"))) await new Promise((r) => setTimeout(r, 1000));
+  } catch (e) {
+    showMessage("The report's progress could not be read: " + e.message);
+  }
+}
+
+async function buildReport() {
+  try {
+    showReportStatus(await api("/api/report", { method: "POST" }));
+    followReport();
+  } catch (e) {
+    showMessage("The report could not be started: " + e.message);
+  }
+}
+
 function setUpRenderControls() {
   $("render-form").addEventListener("submit", (e) => { e.preventDefault(); submitRenders([$("render-mode").value]); });
   $("compare-button").addEventListener("click", () => submitRenders(["accurate", "approximate"]));
@@ -478,6 +512,8 @@ async function start() {
   setUpUpload();
   setUpLensControls();
   setUpRenderControls();
+  $("report-build").addEventListener("click", buildReport);
+  followReport();
   try {
     await Promise.all([loadLenses(), loadScenes()]);
     await loadRecentRenders();

@@ -113,6 +113,14 @@ async function main() {
     const status = await card.locator(".status").textContent();
     check(status.startsWith("Done"), `the render reports "${status}"`);
 
+    // The report is built as a job from the header; cancelled here (a full build takes minutes).
+    await page.click("#report-build");
+    await page.waitForFunction(() => document.querySelector("#report-status").textContent.startsWith("building the report"));
+    check(await page.locator("#report-build").isDisabled(), "the report button waits while a build runs");
+    const cancelled = await page.request.delete(new URL("/api/report", base).href);
+    check(cancelled.status() === 202, `cancelling the report build answers ${cancelled.status()}`);
+    await page.waitForFunction(() => document.querySelector("#report-status").textContent.includes("cancelled"), null, { timeout: 60000 });
+
     await page.screenshot({ path: join(artifacts, "page.png"), fullPage: true });
     await page.setViewportSize({ width: 1280, height: 800 });
     await page.evaluate(() => window.scrollTo(0, 0));

@@ -278,3 +278,38 @@ TEST_F(ServerApi, RendersASmallSceneWithTheRayTracer) {
     ASSERT_EQ(exr->status, 200);
     EXPECT_TRUE(isExr(exr->body));
 }
+
+TEST_F(ServerApi, BuildsTheReportAsAJobWithProgress) {
+    auto c = client();
+    EXPECT_EQ(get(c, "/api/report").body["state"], "idle");
+    EXPECT_EQ(remove(c, "/api/report").status, 409);  // nothing to cancel
+    EXPECT_EQ(postJson(c, "/api/report", {{"spp", 0}}).status, 400);
+    EXPECT_EQ(postJson(c, "/api/report", {{"lenses", {"no-such-lens"}}}).status, 404);
+    EXPECT_EQ(postRaw(c, "/api/report", "{not json").status, 400);
+
+    const Reply upload = postRaw(c, "/api/lenses?name=mine.dat", readFile(kSource + "/lenses/telephoto.dat"));
+    ASSERT_EQ(upload.status, 201) << upload.raw;
+    const std::string uploaded = upload.body["id"];
+    const Reply started = postJson(c, "/api/report", {{"quick", true}, {"lenses", {"dgauss.50mm", uploaded}}});
+    ASSERT_EQ(started.status, 202) << started.raw;
+    EXPECT_EQ(started.body["state"], "running");
+    const Reply second = postJson(c, "/api/report", {{"quick", true}});
+    const json firstNow = get(c, "/api/report").body;
+    if (firstNow["state"] == "running") EXPECT_EQ(second.status, 409) << second.raw;
+
+    json status;
+    for (int i = 0; i < 600; ++i) {  // at most 120 s
+        status = get(c, "/api/report").body;
+        if (status["state"] != "running") break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    }
+    ASSERT_EQ(status["state"], "done") << status.dump();
+    EXPECT_EQ(status["summary"]["lenses"], 2);
+    EXPECT_GT(status["summary"]["renders"].get<int>(), 0);
+    EXPECT_EQ(status["progress"]["done"], status["progress"]["total"]);
+    const auto page = c.Get("/report/");
+    ASSERT_EQ(page->status, 200);
+    EXPECT_NE(page->body.find("dgauss.50mm"), std::string::npos);
+    EXPECT_NE(page->body.find(uploaded), std::string::npos);
+    EXPECT_EQ(page->body.find("telephoto.250mm"), std::string::npos);  // only the lenses asked for
+}

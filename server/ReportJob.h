@@ -1,0 +1,40 @@
+#pragma once
+// The service's report build: one at a time, on its own thread, with progress and cancellation,
+// writing into the folder served at /report/ (buildReport's cache makes rebuilds cheap).
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <mutex>
+#include <thread>
+
+#include "BuildReport.h"
+
+namespace lenslab {
+
+class ReportJob {
+public:
+    ReportJob() = default;
+    ~ReportJob();  // cancels a running build and waits for it
+    ReportJob(const ReportJob&) = delete;
+    ReportJob& operator=(const ReportJob&) = delete;
+
+    // Starts a build; HttpError 409 while one is running.
+    void start(const ReportOptions& options);
+    // Asks a running build to stop; false when none is running.
+    bool cancel();
+    // {"state": idle|running|done|failed|cancelled, "progress": {...}, "summary"|"error", times}.
+    nlohmann::json status() const;
+
+private:
+    void run(ReportOptions options);
+
+    mutable std::mutex mutex_;
+    std::thread worker_;
+    std::atomic<bool> cancel_{false};
+    std::string state_ = "idle";
+    ReportProgress progress_;
+    nlohmann::json outcome_;  // summary or error
+    double started_ = 0, finished_ = 0;
+};
+
+}  // namespace lenslab

@@ -1,0 +1,71 @@
+// /api/report: build the report site served at /report/ as a job (POST), follow it (GET), stop it
+// (DELETE). The body may name lenses: bundled ids limit the report to those, uploaded ids are added
+// to it (naming only uploads gives every bundled lens plus them); and the quality and the size.
+#include "HttpError.h"
+#include "HttpReply.h"
+#include "ReportJob.h"
+#include "ServiceParts.h"
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::json;
+
+int boundedInteger(const json& body, const char* name, int fallback, int lo, int hi) {
+    if (!body.contains(name)) return fallback;
+    const json& v = body[name];
+    if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
+        throw HttpError(400, std::string(name) + " must be an integer from " + std::to_string(lo) + " to " +
+                                 std::to_string(hi));
+    return v.get<int>();
+}
+
+ReportOptions reportOptions(const ServiceParts& parts, const json& body) {
+    if (!body.is_object()) throw HttpError(400, "the body must be a JSON object (or empty)");
+    ReportOptions o;
+    o.outputDir = parts.config.reportDir;
+    o.lensDir = parts.config.lensesDir;
+    o.sceneDir = parts.config.scenesDir;
+    o.threads = parts.config.limits.threadsPerRender;
+    if (body.contains("quick")) {
+        if (!body["quick"].is_boolean()) throw HttpError(400, "quick must be true or false");
+        o.quick = body["quick"].get<bool>();
+    }
+    o.spp = boundedInteger(body, "spp", o.spp, 1, parts.config.limits.maxSpp);
+    o.width = boundedInteger(body, "width", o.width, 16, parts.config.limits.maxWidth);
+    if (body.contains("lenses")) {
+        if (!body["lenses"].is_array()) throw HttpError(400, "lenses must be an array of lens ids");
+        for (const json& id : body["lenses"]) {
+            if (!id.is_string()) throw HttpError(400, "lenses must be an array of lens ids");
+            const auto lens = findLens(parts, id.get<std::string>());
+            if (lens->bundled) o.lenses.push_back(lens->id);
+            else o.extraLenses.push_back(lens->path);
+        }
+    }
+    return o;
+}
+
+}  // namespace
+
+void addReportRoutes(httplib::Server& server, ServiceParts& parts) {
+    server.Post("/api/report", [&parts](const httplib::Request& req, httplib::Response& res) {
+        json body = json::object();
+        if (!req.body.empty()) {
+            body = json::parse(req.body, nullptr, false);
+            if (body.is_discarded()) throw HttpError(400, "the body is not valid JSON");
+        }
+        parts.report.start(reportOptions(parts, body));
+        res.set_header("Location", "/api/report");
+        replyJson(res, 202, parts.report.status());
+    });
+    server.Get("/api/report", [&parts](const httplib::Request&, httplib::Response& res) {
+        replyJson(res, 200, parts.report.status());
+    });
+    server.Delete("/api/report", [&parts](const httplib::Request&, httplib::Response& res) {
+        if (!parts.report.cancel()) throw HttpError(409, "no report build is running");
+        replyJson(res, 202, parts.report.status());
+    });
+}
+
+}  // namespace lenslab
