@@ -10,6 +10,7 @@ packages=(
   libembree-dev libopenexr-dev libimath-dev libpng-dev libtbb-dev
   libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev
   libgtest-dev libbenchmark-dev
+  openmpi-bin libopenmpi-dev
   libfreetype-dev fonts-dejavu-core
 )
 if [ "${1:-}" = "--tests" ]; then

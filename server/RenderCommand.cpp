@@ -9,6 +9,7 @@
 
 #include "ArgParser.h"
 #include "Commands.h"
+#include "MpiRender.h"
 #include "Render.h"
 
 namespace lenslab {
@@ -54,6 +55,14 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
+// --progress-json: one line per finished tile on stdout, for programs driving the render (the
+// server's MPI jobs); a last line {"finished":true,...} carries the statistics once the images are written.
+void printProgressJson(const TileUpdate& u) {
+    std::printf("{\"tilesDone\":%d,\"tilesTotal\":%d,\"x0\":%d,\"y0\":%d,\"x1\":%d,\"y1\":%d}\n", u.tilesDone,
+                u.tilesTotal, u.x0, u.y0, u.x1, u.y1);
+    std::fflush(stdout);
+}
+
 }  // namespace
 
 int runRenderCommand(const std::vector<std::string>& argsIn) {
@@ -77,6 +86,9 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
     p.option("--mode", "M", "realistic camera: accurate | approximate | auto (thick lens where its error < 0.5 px)");
     p.flag("--quiet", "no progress bar, no summary");
+    p.flag("--progress-json", "print one JSON line per finished tile on stdout, and the statistics last");
+    p.flag("--mpi", "spread the tiles over the processes of an MPI job: mpirun -np N lenslab render ... --mpi");
+    p.option("--mpi-timeout", "S", "with --mpi: a worker silent this long is taken as dead and its tile re-queued (default 10)");
 
     // -o may repeat: collect every occurrence before the parser (which keeps one value per option).
     std::vector<std::string> outputs, args;
@@ -119,14 +131,37 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     }
     const bool quiet = p.has("--quiet");
 
+    const bool progressJson = p.has("--progress-json");
     ProgressBar bar(!quiet && ::isatty(STDERR_FILENO));
-    const RenderOutput out = renderScene(s, [&](const TileUpdate& u, const Image&) { bar.update(u.tilesDone, u.tilesTotal); });
+    const auto onTile = [&](const TileUpdate& u, const Image&) {
+        bar.update(u.tilesDone, u.tilesTotal);
+        if (progressJson) printProgressJson(u);
+    };
+    std::optional<RenderOutput> rendered;
+    if (p.has("--mpi")) {
+        MpiRenderOptions mpi;
+        if (auto v = p.number("--mpi-timeout")) mpi.workerTimeoutSeconds = *v;
+        if (!(mpi.workerTimeoutSeconds > 0)) throw UsageError("render: --mpi-timeout must be positive");
+        rendered = renderSceneOverMpi(s, mpi, onTile);
+        if (!rendered) return 0;  // an MPI worker: rank 0 writes the image
+    } else {
+        rendered = renderScene(s, onTile);
+    }
+    const RenderOutput& out = *rendered;
     if (outputs.empty()) {
         auto it = out.metadata.find("filmFilename");
         outputs.push_back(it != out.metadata.end() ? it->second : "lenslab.exr");
     }
     for (const auto& o : outputs) writeImageFile(out, o, exposure);
     if (auto it = out.metadata.find("warnings"); it != out.metadata.end()) std::cerr << "warnings:\n" << it->second << "\n";
+    if (progressJson) {
+        const RenderStats& st = out.stats;
+        std::printf("{\"finished\":true,\"setupSeconds\":%.6f,\"renderSeconds\":%.6f,\"cameraRays\":%llu,"
+                    "\"blockedCameraRays\":%llu,\"raysTraced\":%llu}\n",
+                    st.setupSeconds, st.renderSeconds, (unsigned long long)st.cameraRays,
+                    (unsigned long long)st.blockedCameraRays, (unsigned long long)st.raysTraced);
+        std::fflush(stdout);
+    }
     if (!quiet) {
         const RenderStats& st = out.stats;
         const double blocked = st.cameraRays ? double(st.blockedCameraRays) / st.cameraRays : 0.0;

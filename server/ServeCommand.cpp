@@ -2,10 +2,12 @@
 
 #include <signal.h>
 
+#include <filesystem>
 #include <iostream>
 
 #include "Commands.h"
 #include "EngineRenderer.h"
+#include "MpiRenderer.h"
 #include "ServeOptions.h"
 #include "Service.h"
 
@@ -36,7 +38,14 @@ int serveUntilStopped(const ServiceConfig& config, std::unique_ptr<Renderer> ren
 int runServeCommand(const std::vector<std::string>& args) {
     const auto config = parseServeOptions(args);
     if (!config) return 0;
-    return serveUntilStopped(*config, std::make_unique<EngineRenderer>(config->limits.threadsPerRender));
+    if (config->mpiHostfile.empty())
+        return serveUntilStopped(*config, std::make_unique<EngineRenderer>(config->limits.threadsPerRender));
+    MpiLaunch launch;
+    launch.hostfile = config->mpiHostfile;
+    launch.processes = config->mpiProcesses;
+    launch.threadsPerWorker = config->limits.threadsPerRender;
+    launch.scratchDir = (std::filesystem::path(config->dataDir) / "mpi").string();
+    return serveUntilStopped(*config, std::make_unique<MpiRenderer>(launch));
 }
 
 }  // namespace lenslab

@@ -54,6 +54,8 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     p.option("--render-threads", "N", "threads per render (default 0: all cores)");
     p.option("--max-body", "BYTES", "largest request body (default 1048576)");
     p.option("--http-threads", "N", "threads answering requests (default 32)");
+    p.option("--mpi-hostfile", "FILE", "run each render through mpirun over these hosts (docs/scaling.md)");
+    p.option("--mpi-np", "N", "with --mpi-hostfile: MPI processes per render (default 2)");
     if (!p.parse(args)) {
         std::cout << p.help();
         return std::nullopt;
@@ -75,6 +77,11 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     c.limits.threadsPerRender = boundedInteger(p, "--render-threads", c.limits.threadsPerRender, 0, 256);
     c.maxBodyBytes = static_cast<std::size_t>(boundedInteger(p, "--max-body", static_cast<int>(c.maxBodyBytes), 1024, 64 << 20));
     c.httpThreads = boundedInteger(p, "--http-threads", c.httpThreads, 2, 256);
+    c.mpiHostfile = p.get("--mpi-hostfile");
+    c.mpiProcesses = boundedInteger(p, "--mpi-np", c.mpiProcesses, 1, 100000);
+    if (!c.mpiHostfile.empty() && !fs::is_regular_file(c.mpiHostfile))
+        throw UsageError("serve: --mpi-hostfile '" + c.mpiHostfile + "' is not a file");
+    if (!c.mpiHostfile.empty()) c.mpiHostfile = fs::absolute(c.mpiHostfile).string();
     return c;
 }
 

@@ -27,6 +27,8 @@ struct ServiceConfig {
     int maxUploadedLenses = 500;
     std::size_t diagramCacheBytes = 64u << 20;
     int httpThreads = 32;
+    std::string mpiHostfile;     // non-empty: renders run through mpirun over these hosts
+    int mpiProcesses = 2;        // mpirun -np (rank 0 schedules, the others render)
 };
 
 }  // namespace lenslab
