@@ -1,21 +1,17 @@
 #include "Focus.h"
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "ExactTrace.h"
+#include "NumberText.h"
 #include "OpticsError.h"
 
 namespace lenslab {
 
 namespace {
 
-std::string fmt(double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, "%.6g mm", v);
-    return b;
-}
+std::string fmt(double v) { return formatNumber(v) + " mm"; }
 
 // Meridional rays from the object through equal-area rings of the entrance pupil; the best focus
 // minimises the RMS spot sum_i (a_i + m_i z)^2 of rays y = a_i + m_i z, a closed form.

@@ -61,9 +61,7 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     if (!lensMode) p.fail("mode must be accurate|approximate|auto, got \"" + mode + "\"");
     r.mode = *lensMode;
     r.autoThresholdPixels = p.getFloat("autothreshold", r.autoThresholdPixels);
-    // The scene's crop window: RenderSettings::crop does not reach makeCamera yet, so a render that
-    // overrides a scene's cropwindow must pass its crop in scene.film.crop.
-    r.crop = scene.film.crop;
+    r.crop = scene.film.crop;  // the effective window: the render settings' crop overrides the scene's
     r.exposureTime = p.getFloat("shutterclose", 1) - p.getFloat("shutteropen", 0);
     r.simpleWeighting = p.getBool("simpleweighting", pbrtStyle);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});

@@ -1,19 +1,10 @@
 #include "LensModeMap.h"
 
 #include <algorithm>
-#include <cstdio>
+
+#include "NumberText.h"
 
 namespace lenslab {
-
-namespace {
-
-std::string mm(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.3g", v);
-    return b;
-}
-
-}  // namespace
 
 const char* lensModeName(LensMode mode) {
     switch (mode) {
@@ -80,8 +71,8 @@ double LensModeMap::exactMaxRadius() const {
 }
 
 std::string LensModeMap::describe() const {
-    if (!usesThick()) return "exact for " + mm(minRadius_) + " <= r <= " + mm(maxRadius_) + " mm";
-    if (!usesExact()) return "thick for " + mm(minRadius_) + " <= r <= " + mm(maxRadius_) + " mm";
+    if (!usesThick()) return "exact for " + formatNumber(minRadius_, 3) + " <= r <= " + formatNumber(maxRadius_, 3) + " mm";
+    if (!usesExact()) return "thick for " + formatNumber(minRadius_, 3) + " <= r <= " + formatNumber(maxRadius_, 3) + " mm";
     // Runs of equal bands, e.g. "thick for r < 8.3 mm, exact beyond".
     std::string s;
     std::size_t i = 0;
@@ -92,8 +83,8 @@ std::string LensModeMap::describe() const {
         const double lo = minRadius_ + i * bandWidth(), hi = minRadius_ + j * bandWidth();
         if (!s.empty()) s += ", ";
         if (j == thick_.size() && i > 0) s += model + " beyond";
-        else if (i == 0 && lo == 0) s += model + " for r < " + mm(hi) + " mm";
-        else s += model + " for " + mm(lo) + " <= r < " + mm(hi) + " mm";
+        else if (i == 0 && lo == 0) s += model + " for r < " + formatNumber(hi, 3) + " mm";
+        else s += model + " for " + formatNumber(lo, 3) + " <= r < " + formatNumber(hi, 3) + " mm";
         i = j;
     }
     return s;

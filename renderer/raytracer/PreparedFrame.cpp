@@ -60,6 +60,7 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings)
              int(std::ceil(height_ * c[3]))};
     if (area_.x1 <= area_.x0 || area_.y1 <= area_.y0) throw SceneError("the crop window holds no pixel");
     tiles_ = makeTiles(area_, settings.tileSize);
+    scene_.film.crop = c;  // the camera prepares only the film radii this window covers
 
     arena_.execute([&] {
         camera_ = makeCamera(scene_, settings.camera, width_, height_, filter_.radius());

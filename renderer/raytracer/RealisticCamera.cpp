@@ -1,10 +1,10 @@
 #include "RealisticCamera.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "Aperture.h"
 #include "ExactTrace.h"
+#include "NumberText.h"
 #include "OpticsError.h"
 #include "RayBatch.h"
 #include "Sampling.h"
@@ -12,12 +12,6 @@
 namespace lenslab {
 
 namespace {
-
-std::string num(double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, "%.6g", v);
-    return b;
-}
 
 // The f-number whose stop opening is `diameter` (pbrt-v3 scenes give the opening itself).
 double fstopForStopDiameter(const LensSystem& lens, double diameter) {
@@ -41,7 +35,7 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
                                  double filmMarginPixels)
     : params_(params), cameraToWorld_(cameraToWorld), width_(width), height_(height) {
     if (!(params.filmDiagonalMm > 0 && params.filmDiagonalMm < 1e4))
-        throw OpticsError("film diagonal must lie in (0, 10000) mm, got " + num(params.filmDiagonalMm));
+        throw OpticsError("film diagonal must lie in (0, 10000) mm, got " + formatNumber(params.filmDiagonalMm));
     if (!(params.exposureTime > 0)) throw OpticsError("exposure time (shutterclose) must be positive");
     if (!(params.autoThresholdPixels > 0)) throw OpticsError("the auto threshold must be a positive number of pixels");
     const double diag = std::hypot(double(width), double(height));
@@ -81,7 +75,7 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     }
     const auto checkFilm = [&](double z) {
         if (!(z < analysis_.lens.rearZ()))
-            throw OpticsError("the film would sit at z = " + num(z) + " mm, in front of the rear vertex");
+            throw OpticsError("the film would sit at z = " + formatNumber(z) + " mm, in front of the rear vertex");
     };
     if (modes_.usesThick()) {
         checkFilm(filmZThick_);
@@ -232,17 +226,17 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"lensName", a.lens.name},
             {"mode", lensModeName(params_.mode)},
             {"lensModelByFilmRadius", modes_.describe()},
-            {"renderedFilmRadiiMm", num(minFilmRadius_) + " to " + num(maxFilmRadius_)},
+            {"renderedFilmRadiiMm", formatNumber(minFilmRadius_) + " to " + formatNumber(maxFilmRadius_)},
             {"exitPupilBoundsRadii", std::to_string(bounds_.radiusCount())},
-            {"fstop", num(a.fstop)},
-            {"stopDiameterMm", num(a.stopDiameter)},
-            {"focusDistanceMm", a.focus.infinity ? "inf" : num(a.focus.objectZ - a.lens.frontZ())},
-            {"filmDiagonalMm", num(params_.filmDiagonalMm)},
-            {"filmZMm", num(filmZ())},
-            {"eflMm", num(a.firstOrder.efl)},
-            {"exitPupilZMm", num(a.pupils.exit.z)},
-            {"exitPupilDiameterMm", num(a.pupils.exit.diameter)},
-            {"exposureTimeS", num(params_.exposureTime)},
+            {"fstop", formatNumber(a.fstop)},
+            {"stopDiameterMm", formatNumber(a.stopDiameter)},
+            {"focusDistanceMm", a.focus.infinity ? "inf" : formatNumber(a.focus.objectZ - a.lens.frontZ())},
+            {"filmDiagonalMm", formatNumber(params_.filmDiagonalMm)},
+            {"filmZMm", formatNumber(filmZ())},
+            {"eflMm", formatNumber(a.firstOrder.efl)},
+            {"exitPupilZMm", formatNumber(a.pupils.exit.z)},
+            {"exitPupilDiameterMm", formatNumber(a.pupils.exit.diameter)},
+            {"exposureTimeS", formatNumber(params_.exposureTime)},
             {"weighting", params_.simpleWeighting ? "simple (centre = 1)" : "radiometric (cos^4 A / d^2 * t)"},
             {"units", "lens mm, world m"}};
     if (params_.mode == LensMode::Auto) {
@@ -250,8 +244,8 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
         const double pixelMm = params_.filmDiagonalMm / std::hypot(double(width_), double(height_));
         std::string errors;
         for (const ThickLensFilmError& e : errors_)
-            errors += (errors.empty() ? "" : ", ") + num(e.filmRadius) + " mm: " + num(e.maxErrorMm / pixelMm);
-        d["autoThresholdPixels"] = num(params_.autoThresholdPixels);
+            errors += (errors.empty() ? "" : ", ") + formatNumber(e.filmRadius) + " mm: " + formatNumber(e.maxErrorMm / pixelMm);
+        d["autoThresholdPixels"] = formatNumber(params_.autoThresholdPixels);
         d["thickLensErrorPixels"] = errors;
     }
     return d;

@@ -8,18 +8,14 @@
 #include <optional>
 #include <string>
 
+#include "FuzzCheck.h"
 #include "LensSystem.h"
 #include "LensTable.h"
 
 using namespace lenslab;
+using lenslab::fuzz::check;
 
 namespace {
-
-void check(bool ok, const char* what) {
-    if (ok) return;
-    std::fprintf(stderr, "invariant broken: %s\n", what);
-    std::abort();
-}
 
 void checkLens(const LensSystem& lens) {
     check(!lens.surfaces.empty(), "an accepted lens has surfaces");

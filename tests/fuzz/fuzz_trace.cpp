@@ -14,20 +14,16 @@
 #include <optional>
 #include <vector>
 
+#include "FuzzCheck.h"
 #include "ExactTrace.h"
 #include "LensAnalysis.h"
 #include "OpticsError.h"
 #include "RayBatch.h"
 
 using namespace lenslab;
+using lenslab::fuzz::check;
 
 namespace {
-
-void check(bool ok, const char* what) {
-    if (ok) return;
-    std::fprintf(stderr, "invariant broken: %s\n", what);
-    std::abort();
-}
 
 // Log-uniform in [lo, hi]: the extremes are as likely as the everyday values.
 double logUniform(FuzzedDataProvider& in, double lo, double hi) {

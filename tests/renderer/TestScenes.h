@@ -3,21 +3,9 @@
 #include <string>
 
 #include "Render.h"
+#include "TempDir.h"
 
 namespace lenslab::test {
-
-// A new empty folder under the system temp dir, removed when the object dies.
-class TempDir {
-public:
-    TempDir();
-    ~TempDir();
-    const std::string& path() const { return path_; }
-    // Writes `text` to path()/name (creating folders) and returns the full path.
-    std::string write(const std::string& name, const std::string& text) const;
-
-private:
-    std::string path_;
-};
 
 std::string lensPath(const std::string& name);  // lenslab's bundled lens table
 

@@ -95,6 +95,19 @@ TEST(AutoLensMode, TheSceneCropWindowReachesTheCameraOfARender) {
     EXPECT_FALSE(crop.metadata.at("thickLensErrorPixels").empty());
 }
 
+TEST(AutoLensMode, ACropOverrideInTheRenderSettingsReachesTheCamera) {
+    test::TempDir dir;
+    const std::string scene = dir.write("corner.pbrt",
+        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"float fstop\" 4 \"string mode\" \"auto\"\n"
+        "Film \"image\" \"float cropwindow\" [0.9 1 0 0.1]\nWorldBegin\nWorldEnd\n");
+    RenderSettings centre;
+    centre.crop = std::array<double, 4>{0.45, 0.55, 0.45, 0.55};  // overrides the scene's corner window
+    const RenderOutput out = test::render(scene, 100, 100, 1, centre);
+    EXPECT_EQ(out.metadata.at("exitPupilBoundsRadii"), "0") << "the camera prepared the scene's corner, not the centre";
+    EXPECT_EQ(out.metadata.at("lensModelByFilmRadius").rfind("thick for 0 <= r <= ", 0), 0u)
+        << out.metadata.at("lensModelByFilmRadius");
+}
+
 // A checkerboard wall 3 m ahead under a uniform sky, through the fisheye on a 24 x 24 mm film.
 std::string fisheyeWall(const std::string& mode) {
     return "Camera \"realistic\" \"string specfile\" \"fisheye.10mm.dat\" \"float fstop\" 5.6 \"float focaldistance\" "

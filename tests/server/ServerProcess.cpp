@@ -19,17 +19,6 @@ namespace lenslab::test {
 
 namespace fs = std::filesystem;
 
-TempDir::TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "lenslab-test-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-}
-
-TempDir::~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-}
-
 ServerProcess::ServerProcess(const std::string& binary, const std::string& dataDir,
                              const std::vector<std::string>& extraArgs) {
     static int started = 0;

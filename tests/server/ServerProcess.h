@@ -1,5 +1,5 @@
 #pragma once
-// Test helpers: a temporary folder, and a service process started on a free loopback port
+// Test helpers: a service process started on a free loopback port
 // (`serve --port 0`), stopped with SIGTERM or killed with SIGKILL.
 #include <httplib.h>
 #include <nlohmann/json.hpp>
@@ -8,17 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "TempDir.h"
+
 namespace lenslab::test {
-
-class TempDir {
-public:
-    TempDir();
-    ~TempDir();
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
-};
 
 class ServerProcess {
 public:
