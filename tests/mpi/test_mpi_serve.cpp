@@ -9,12 +9,23 @@
 namespace lenslab {
 namespace {
 
-TEST(MpiServe, RenderJobRunsThroughMpirun) {
+std::string writeHostfile(const test::TempDir& dir) {
+    const std::string path = dir.path() + "/hosts";
+    std::ofstream(path) << "localhost slots=3\n";
+    return path;
+}
+
+// A service whose renders run through mpirun with three processes on this host (members are
+// initialised in order: the hostfile exists before the server starts).
+class MpiServe : public ::testing::Test {
+protected:
     test::TempDir dir;
-    const std::string hostfile = dir.path() + "/hosts";
-    std::ofstream(hostfile) << "localhost slots=3\n";
-    test::ServerProcess server(LENSLAB_BINARY, dir.path() + "/data", {"--mpi-hostfile", hostfile, "--mpi-np", "3"});
+    const std::string hostfile = writeHostfile(dir);
+    test::ServerProcess server{LENSLAB_BINARY, dir.path() + "/data", {"--mpi-hostfile", hostfile, "--mpi-np", "3"}};
     httplib::Client client = server.client();
+};
+
+TEST_F(MpiServe, RenderJobRunsThroughMpirun) {
     const test::Reply created = test::postJson(
         client, "/api/renders", {{"scene", "shared-dgauss"}, {"spp", 2}, {"width", 64}, {"height", 48}});
     ASSERT_EQ(created.status, 202) << created.raw;
@@ -28,12 +39,7 @@ TEST(MpiServe, RenderJobRunsThroughMpirun) {
     EXPECT_TRUE(test::isExr(test::get(client, "/api/renders/" + id + "/image.exr").raw));
 }
 
-TEST(MpiServe, CancelStopsTheMpirunJob) {
-    test::TempDir dir;
-    const std::string hostfile = dir.path() + "/hosts";
-    std::ofstream(hostfile) << "localhost slots=3\n";
-    test::ServerProcess server(LENSLAB_BINARY, dir.path() + "/data", {"--mpi-hostfile", hostfile, "--mpi-np", "3"});
-    httplib::Client client = server.client();
+TEST_F(MpiServe, CancelStopsTheMpirunJob) {
     const test::Reply created = test::postJson(
         client, "/api/renders", {{"scene", "shared-dgauss"}, {"spp", 1024}, {"width", 320}, {"height", 240}});
     ASSERT_EQ(created.status, 202) << created.raw;
