@@ -1,6 +1,7 @@
 #include "DiagramPicture.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -19,6 +20,15 @@ std::string format(const char* pattern, double value) {
 }
 
 std::string millimetres(double value) { return format(std::abs(value) >= 100 ? "%.0f mm" : "%.1f mm", value); }
+
+const char* modeName(DiagramMode mode) {
+    switch (mode) {
+        case DiagramMode::Exact: return "exact";
+        case DiagramMode::Thick: return "thick";
+        case DiagramMode::Overlay: return "overlay";
+    }
+    return "";
+}
 
 const char* modeCaption(DiagramMode mode) {
     switch (mode) {
@@ -158,33 +168,63 @@ struct Composer {
         }
     }
 
+    // The first of `variants` (longest first) that fits in `room` pixels at this size, else the last.
+    static const std::string& firstFitting(const std::vector<std::string>& variants, int size, double room) {
+        for (const std::string& v : variants)
+            if (textWidth(v, size) <= room) return v;
+        return variants.back();
+    }
+
+    // Two lines at the top. On narrow pictures they shorten; the orientation always shows.
     void caption(const std::string& lensName, double filmZ) {
         const FocusResult& f = a.focus;
         const std::string focus = f.infinity ? "\u221E" : millimetres(f.objectZ);
+        const std::string lens = lensName + "   EFL " + format("%.2f mm", a.firstOrder.efl) + "   f/" + format("%.3g", a.fstop);
+        const double room = pic.width - pic.content.left;
         label({pic.content.left, 1.35 * em},
-              lensName + "   EFL " + format("%.2f mm", a.firstOrder.efl) + "   f/" + format("%.3g", a.fstop) +
-                  "   focus " + focus + "   " + modeCaption(options.mode),
+              firstFitting({lens + "   focus " + focus + "   " + modeCaption(options.mode),
+                            lens + "   focus " + focus + "   " + modeName(options.mode), lens},
+                           em, room),
               em, kText, TextAnchor::Left);
-        std::string note = "front (scene side) on the left, film on the right;  film at z = " + millimetres(filmZ);
-        if (pic.fieldHeight > 0) note += ";  field point " + millimetres(pic.fieldHeight) + " below the axis";
+        const std::string field = pic.fieldHeight > 0 ? millimetres(pic.fieldHeight) : "";
+        const std::string note = firstFitting(
+            {"front (scene side) on the left, film on the right;  film at z = " + millimetres(filmZ) +
+                 (field.empty() ? "" : ";  field point " + field + " below the axis"),
+             "front on the left;  film z = " + millimetres(filmZ) + (field.empty() ? "" : ";  field " + field),
+             "front on the left"},
+            small, room);
         label({pic.content.left, 1.35 * em + 1.3 * small}, note, small, kNote, TextAnchor::Left);
     }
 
-    // Ray colours, the blocked-ray mark and a scale bar along the bottom edge.
+    // Ray colours, the blocked-ray mark and a scale bar along the bottom edge; the legend's words
+    // shorten when the full ones would run into the scale bar.
     void legend() {
         const double baseline = pic.height - 0.55 * small, mid = baseline - 0.35 * small;
+        const double scaleLeft = scaleBar(baseline, mid);
+        const bool exact = options.mode != DiagramMode::Thick, thick = options.mode != DiagramMode::Exact;
+        auto width = [&](const std::array<const char*, 3>& words) {
+            double w = 1.3 * small + textWidth(words[2], small);
+            for (int i = 0; i < 2; ++i)
+                if (i == 0 ? exact : thick) w += 3.4 * small + textWidth(words[i], small);
+            return w;
+        };
+        const std::array<const char*, 3> full = {"exact rays", "thick-lens rays", "blocked ray (faded)"};
+        const std::array<const char*, 3> brief = {"exact", "thick lens", "blocked"};
+        const auto& words = width(full) <= scaleLeft - pic.content.left - small ? full : brief;
         double x = pic.content.left;
         auto entry = [&](Rgba colour, const std::string& text) {
             addLine(pic.shapes, {x, mid}, {x + 1.8 * small, mid}, 2 * lw, colour);
             label({x + 2.2 * small, baseline}, text, small, kText, TextAnchor::Left);
             x += 2.2 * small + textWidth(text, small) + 1.2 * small;
         };
-        if (options.mode != DiagramMode::Thick) entry(kExactRay, "exact rays");
-        if (options.mode != DiagramMode::Exact) entry(kThickRay, "thick-lens rays");
+        if (exact) entry(kExactRay, words[0]);
+        if (thick) entry(kThickRay, words[1]);
         addCross(pic.shapes, {x + 0.5 * small, mid}, 3.5 * lw, 1.6 * lw, kBlockMark);
-        label({x + 1.3 * small, baseline}, "blocked ray (faded)", small, kText, TextAnchor::Left);
+        label({x + 1.3 * small, baseline}, words[2], small, kText, TextAnchor::Left);
+    }
 
-        // A 1-2-5 length near 120 pixels.
+    // A 1-2-5 length near 120 pixels at the right end of the bottom edge; returns where its label starts.
+    double scaleBar(double baseline, double mid) {
         const double target = 120.0 / pic.view.scale;
         const double decade = std::pow(10.0, std::floor(std::log10(target)));
         double length = decade;
@@ -193,8 +233,9 @@ struct Composer {
         const double right = pic.content.right, left = right - length * pic.view.scale;
         addLine(pic.shapes, {left, mid}, {right, mid}, 2 * lw, kText);
         for (double end : {left, right}) addLine(pic.shapes, {end, mid - 4 * lw}, {end, mid + 4 * lw}, 1.5 * lw, kText);
-        label({left - 0.5 * small, baseline}, format(length >= 1 ? "%.0f mm" : "%.1f mm", length), small, kText,
-              TextAnchor::Right);
+        const std::string text = format(length >= 1 ? "%.0f mm" : "%.1f mm", length);
+        label({left - 0.5 * small, baseline}, text, small, kText, TextAnchor::Right);
+        return left - 0.5 * small - textWidth(text, small);
     }
 };
 
