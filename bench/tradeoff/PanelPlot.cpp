@@ -72,9 +72,9 @@ std::string tickText(double v) {
 
 void drawPanel(const Panel& p, double left, double top, double width, double height, DrawList& list,
                std::vector<TextLabel>& labels) {
-    const double x0 = left + 62, x1 = left + width - 16, y0 = top + 34, y1 = top + height - 52;
+    const double x0 = left + 62, x1 = left + width - 16, y0 = top + 52, y1 = top + height - 52;
     const Axis ax = fitAxis(p, true), ay = fitAxis(p, false);
-    labels.push_back({{(x0 + x1) / 2, top + 22}, p.title, 16, kInk, TextAnchor::Centre});
+    labels.push_back({{(x0 + x1) / 2, top + 20}, p.title, 16, kInk, TextAnchor::Centre});  // the y label has its own line below
     for (double t : ax.ticks()) {
         const double x = ax.map(t, x0, x1);
         addLine(list, {x, y0}, {x, y1}, 1, kGrid);
@@ -87,7 +87,7 @@ void drawPanel(const Panel& p, double left, double top, double width, double hei
     }
     addPolyline(list, {{x0, y0}, {x0, y1}, {x1, y1}}, 1.5, kInk);
     labels.push_back({{(x0 + x1) / 2, y1 + 36}, p.xLabel, 13, kInk, TextAnchor::Centre});
-    labels.push_back({{x0 - 4, y0 - 6}, p.yLabel, 13, kInk, TextAnchor::Left});
+    labels.push_back({{x0 - 4, y0 - 10}, p.yLabel, 13, kInk, TextAnchor::Left});
     for (std::size_t i = 0; i < p.series.size(); ++i) {
         const Series& s = p.series[i];
         const Rgba colour = kPalette[i % std::size(kPalette)];
