@@ -110,10 +110,18 @@ void lensTable(std::ostringstream& out, const LensFacts& f) {
     out << "</tbody>\n</table>\n";
 }
 
-Plot thickErrorPlot(const LensFacts& f) {
+// The small plots in a lens's panel share one size.
+Plot lensPanelPlot(const std::string& id, const std::string& title) {
     Plot p;
-    p.id = "thick-" + f.id;
-    p.title = "Thick lens against the exact trace";
+    p.id = id;
+    p.title = title;
+    p.width = 420;
+    p.height = 280;
+    return p;
+}
+
+Plot thickErrorPlot(const LensFacts& f) {
+    Plot p = lensPanelPlot("thick-" + f.id, "Thick lens against the exact trace");
     p.x.label = "entrance height (mm)";
     p.y.label = "height error at F\u2032 (mm)";
     PlotSeries s{"exact \u2212 thick", {}, {}};
@@ -122,15 +130,11 @@ Plot thickErrorPlot(const LensFacts& f) {
         s.y.push_back(e.blocked ? kNaN : e.transverseError);
     }
     p.series = {s};
-    p.width = 420;
-    p.height = 280;
     return p;
 }
 
 Plot illuminationPlot(const LensFacts& f) {
-    Plot p;
-    p.id = "illumination-" + f.id;
-    p.title = "Relative illumination";
+    Plot p = lensPanelPlot("illumination-" + f.id, "Relative illumination");
     p.x.label = "film radius (mm)";
     p.y.label = "relative to the centre";
     p.y.min = 0;
@@ -144,8 +148,6 @@ Plot illuminationPlot(const LensFacts& f) {
         area.y.push_back(s.passingArea);
     }
     p.series = {light, area};
-    p.width = 420;
-    p.height = 280;
     return p;
 }
 
@@ -159,14 +161,10 @@ PlotSeries distortionSeries(const LensFacts& f, const std::string& label) {
 }
 
 Plot distortionPlot(const LensFacts& f) {
-    Plot p;
-    p.id = "distortion-" + f.id;
-    p.title = "Distortion (object at infinity)";
+    Plot p = lensPanelPlot("distortion-" + f.id, "Distortion (object at infinity)");
     p.x.label = "field angle (degrees)";
     p.y.label = "distortion (%)";
     p.series = {distortionSeries(f, "chief ray vs f tan \u03b8")};
-    p.width = 420;
-    p.height = 280;
     return p;
 }
 
