@@ -7,6 +7,7 @@
 #include "ArgParser.h"
 #include "BuildReport.h"
 #include "Commands.h"
+#include "NumberText.h"
 
 namespace lenslab {
 
@@ -18,12 +19,6 @@ std::vector<std::string> commaList(const std::string& text) {
     for (std::string item; std::getline(in, item, ',');)
         if (!item.empty()) items.push_back(item);
     return items;
-}
-
-std::string number(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
 }
 
 }  // namespace
@@ -44,9 +39,9 @@ int runReportCommand(const std::vector<std::string>& args) {
     p.option("--extra-lenses", "LIST", "comma-separated lens table files added to those (uploaded lenses)");
     p.option("--fstop", "N", "f-number of the tables and diagrams (default: each lens's widest)");
     p.option("--focus", "MM", "focus distance of the tables and diagrams, mm from the front vertex, or inf (default " +
-                                  number(defaults.focusDistance) + ")");
+                                  formatNumber(defaults.focusDistance) + ")");
     p.option("--render-fstop", "N", "f-number of the renders, raised to a slower lens's widest (default " +
-                                        number(defaults.renderFstop) + ")");
+                                        formatNumber(defaults.renderFstop) + ")");
     p.option("--threads", "N", "render threads (default: all cores)");
     p.option("--lens-dir", "DIR", "bundled lens tables (default: the source tree's lenses/)");
     p.option("--scene-dir", "DIR", "bundled scenes (default: the source tree's scenes/)");

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "DiagramBackend.h"
 #include "DrawList.h"
 #include "GlCanvas.h"
+#include "NumberText.h"
 #include "PngCodec.h"
 #include "TextRaster.h"
 
@@ -64,12 +64,6 @@ Axis fitAxis(const Panel& p, bool xAxis) {
     return a;
 }
 
-std::string tickText(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
-}
-
 void drawPanel(const Panel& p, double left, double top, double width, double height, DrawList& list,
                std::vector<TextLabel>& labels) {
     const double x0 = left + 62, x1 = left + width - 16, y0 = top + 52, y1 = top + height - 52;
@@ -78,12 +72,12 @@ void drawPanel(const Panel& p, double left, double top, double width, double hei
     for (double t : ax.ticks()) {
         const double x = ax.map(t, x0, x1);
         addLine(list, {x, y0}, {x, y1}, 1, kGrid);
-        labels.push_back({{x, y1 + 17}, tickText(t), 12, kInk, TextAnchor::Centre});
+        labels.push_back({{x, y1 + 17}, formatNumber(t), 12, kInk, TextAnchor::Centre});
     }
     for (double t : ay.ticks()) {
         const double y = ay.map(t, y1, y0);
         addLine(list, {x0, y}, {x1, y}, 1, kGrid);
-        labels.push_back({{x0 - 6, y + 4}, tickText(t), 12, kInk, TextAnchor::Right});
+        labels.push_back({{x0 - 6, y + 4}, formatNumber(t), 12, kInk, TextAnchor::Right});
     }
     addPolyline(list, {{x0, y0}, {x0, y1}, {x1, y1}}, 1.5, kInk);
     labels.push_back({{(x0 + x1) / 2, y1 + 36}, p.xLabel, 13, kInk, TextAnchor::Centre});

@@ -1,11 +1,11 @@
 #include "LensDiagram.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "DiagramPicture.h"
 #include "DiagramStyle.h"
 #include "LensAnalysis.h"
+#include "NumberText.h"
 #include "PngCodec.h"
 #include "ThreadContexts.h"
 
@@ -15,12 +15,6 @@ namespace {
 
 constexpr int kMinWidth = 320, kMinHeight = 200, kMaxSide = 8192;
 constexpr int kMaxRays = 201;
-
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
 
 // "lenses/dgauss.50mm.dat" -> "dgauss.50mm".
 std::string displayName(const std::string& name) {
@@ -39,12 +33,12 @@ void validate(const DiagramOptions& o) {
     if (o.rays < 1 || o.rays > kMaxRays)
         throw DiagramError("rays per fan must be 1 to " + std::to_string(kMaxRays) + ", got " + std::to_string(o.rays));
     if (o.fstop && !(std::isfinite(*o.fstop) && *o.fstop > 0))
-        throw DiagramError("f-number must be a positive number, got " + number(*o.fstop));
+        throw DiagramError("f-number must be a positive number, got " + formatNumber(*o.fstop));
     if (!(o.focusDistance > 0))  // also refuses NaN; infinity is allowed
         throw DiagramError("focus distance must be positive (mm in front of the front vertex) or infinity, got " +
-                           number(o.focusDistance));
+                           formatNumber(o.focusDistance));
     if (o.fieldHeight && !(std::isfinite(*o.fieldHeight) && *o.fieldHeight >= 0))
-        throw DiagramError("field height must be a non-negative number of mm on the film, got " + number(*o.fieldHeight));
+        throw DiagramError("field height must be a non-negative number of mm on the film, got " + formatNumber(*o.fieldHeight));
 }
 
 }  // namespace

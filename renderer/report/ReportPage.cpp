@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "MarkupText.h"
+#include "NumberText.h"
 #include "SvgPlot.h"
 
 namespace lenslab {
@@ -63,12 +64,6 @@ const Row kRows[] = {
     {"RMS spot radius", "focus.rms_spot_radius", 4, "mm", "at the exact focus"},
 };
 
-std::string shortNumber(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.3g", v);
-    return b;
-}
-
 std::string rate(double perSecond) {
     char b[32];
     if (perSecond >= 1e6) std::snprintf(b, sizeof b, "%.1f M", perSecond / 1e6);
@@ -103,7 +98,7 @@ void lensTable(std::ostringstream& out, const LensFacts& f) {
         out << "<td>" << r.unit << "</td><td>" << r.meaning << "</td></tr>\n";
     }
     std::string stops;
-    for (const auto& s : a["full_stops"]) stops += (stops.empty() ? "f/" : ", f/") + shortNumber(s.get<double>());
+    for (const auto& s : a["full_stops"]) stops += (stops.empty() ? "f/" : ", f/") + formatNumber(s.get<double>(), 3);
     out << "<tr><th scope=\"row\">Full stops</th><td colspan=\"3\">" << stops << "</td></tr>\n";
     out << "<tr><th scope=\"row\">Image circle radius</th><td>" << fixedNumber(f.imageCircleRadius, 2)
         << "</td><td>mm</td><td>largest film radius any ray reaches</td></tr>\n";
@@ -218,7 +213,7 @@ void sceneArticle(std::ostringstream& out, const ReportScene& s) {
         return;
     }
     for (const RenderPair& p : s.pairs) {
-        out << "<section class=\"comparison\">\n<h4>" << escapeMarkup(p.lensId) << " at f/" << shortNumber(p.accurate.fstop)
+        out << "<section class=\"comparison\">\n<h4>" << escapeMarkup(p.lensId) << " at f/" << formatNumber(p.accurate.fstop, 3)
             << "</h4>\n";
         if (!p.problem.empty()) {
             out << "<p class=\"problem\">" << escapeMarkup(p.problem) << "</p>\n</section>\n";
@@ -231,13 +226,13 @@ void sceneArticle(std::ostringstream& out, const ReportScene& s) {
             << figure(img(p.approximate.image, s.scene.id + " through " + p.lensId + ", thick-lens camera", w, h),
                       "Approximate: thick lens")
             << figure(img(p.differenceImage, "difference between the two renders", w, h),
-                      "|difference| \u00d7 " + shortNumber(p.differenceGain) + ", RMS " + fixedNumber(p.rmsDifference, 2) +
+                      "|difference| \u00d7 " + formatNumber(p.differenceGain, 3) + ", RMS " + fixedNumber(p.rmsDifference, 2) +
                           " of 255")
             << "</div>\n";
         statsTable(out, p);
         out << "<p class=\"params\">" << p.accurate.width << "\u00d7" << p.accurate.height << " pixels, " << p.accurate.spp
-            << " samples per pixel, f/" << shortNumber(p.accurate.fstop) << ", focus and film as the scene sets them; "
-            << "PNG exposure \u00d7" << shortNumber(p.accurate.exposure) << " (4N\u00b2/\u03c0, the scene's brightness).</p>\n";
+            << " samples per pixel, f/" << formatNumber(p.accurate.fstop, 3) << ", focus and film as the scene sets them; "
+            << "PNG exposure \u00d7" << formatNumber(p.accurate.exposure, 3) << " (4N\u00b2/\u03c0, the scene's brightness).</p>\n";
         out << "</section>\n";
     }
     out << "</article>\n";

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "MarkupText.h"
+#include "NumberText.h"
 
 namespace lenslab {
 
@@ -37,10 +38,7 @@ struct Scale {
     }
     bool shows(double v) const { return std::isfinite(v) && (!log || v > 0); }
     std::string label(double v) const {
-        if (!log) return fixedNumber(v, decimals);
-        char b[32];
-        std::snprintf(b, sizeof b, "%g", v);
-        return b;
+        return log ? formatNumber(v) : fixedNumber(v, decimals);
     }
 };
 
