@@ -14,6 +14,18 @@ std::string sharedWorld(const std::string& lens) {
     return std::string(LENSLAB_SOURCE_DIR) + "/scenes/shared-" + lens + ".pbrt";
 }
 
+// Settings for a render driven through renderScene's tile callback: 16-pixel tiles, two threads.
+RenderSettings tiledOnTwoThreads(const std::string& scene, int width, int height, int spp) {
+    RenderSettings s;
+    s.scenePath = scene;
+    s.width = width;
+    s.height = height;
+    s.spp = spp;
+    s.tileSize = 16;
+    s.threads = 2;
+    return s;
+}
+
 TEST(RenderTiles, SameImageForAnyThreadCountAndTileSize) {
     RenderSettings a, b;
     a.threads = 1;
@@ -30,13 +42,7 @@ TEST(RenderTiles, SameImageForAnyThreadCountAndTileSize) {
 }
 
 TEST(RenderTiles, EveryTileReportedOnceAndSerially) {
-    RenderSettings s;
-    s.scenePath = sharedWorld("wide");
-    s.width = 50;
-    s.height = 40;
-    s.spp = 1;
-    s.tileSize = 16;
-    s.threads = 2;
+    const RenderSettings s = tiledOnTwoThreads(sharedWorld("wide"), 50, 40, 1);
     std::set<std::pair<int, int>> seen;
     int inside = 0, maxInside = 0, calls = 0;
     std::mutex m;
@@ -71,13 +77,7 @@ TEST(RenderTiles, CropRendersOnlyTheWindow) {
 }
 
 TEST(RenderTiles, CancelStopsWithinATile) {
-    RenderSettings s;
-    s.scenePath = sharedWorld("fisheye");
-    s.width = 128;
-    s.height = 128;
-    s.spp = 4;
-    s.tileSize = 16;
-    s.threads = 2;
+    const RenderSettings s = tiledOnTwoThreads(sharedWorld("fisheye"), 128, 128, 4);
     std::atomic<bool> cancel{false};
     int calls = 0;
     EXPECT_THROW(renderScene(s, [&](const TileUpdate&, const Image&) {
