@@ -79,7 +79,6 @@ LensSystem buildLensSystem(const LensTable& table) {
                                      mm(2 * std::fabs(r.radius)) + ")");
         lens.surfaces.push_back(s);
     }
-    if (table.layout == TableLayout::GapAfter) lens.tableFilmGap = rows.back().gap;
     if (stops == 0)
         throw LensTableError(table.name, rows.front().line,
                              "no aperture stop: one row must have radius 0 and N 0");

@@ -25,7 +25,6 @@ struct LensSystem {
     std::vector<Surface> surfaces;  // front (scene side) to rear (film side)
     int stopIndex = -1;
     TableLayout layout = TableLayout::GapBefore;
-    double tableFilmGap = 0;        // gap-after layout: the last row's gap (rear vertex to film)
 
     const Surface& stop() const { return surfaces[stopIndex]; }
     double frontZ() const { return surfaces.front().z; }
