@@ -24,6 +24,7 @@ struct CameraOverrides {
 
 struct RenderSettings {
     std::string scenePath;                 // pbrt-v3 subset
+    bool confined = false;                 // the scene may only name files inside its folder (HTTP)
     CameraOverrides camera;
     std::optional<int> spp, width, height; // unset = as in the scene
     int threads = 0;                       // 0 = all cores

@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   openmpi-bin libopenmpi-dev
   libfreetype-dev fonts-dejavu-core
+  libopenimageio-dev libassimp-dev
 )
 if [ "${1:-}" = "--tests" ]; then
   packages+=(chromium)

@@ -6,6 +6,7 @@ RenderedImages EngineRenderer::render(const RenderJobInput& job, const TileCallb
                                       const std::atomic<bool>& cancel) {
     RenderSettings settings;
     settings.scenePath = job.scenePath;
+    settings.confined = true;
     settings.camera.lensFile = job.lensPath;
     settings.camera.fstop = job.request.fstop;
     settings.camera.focalDistance = job.request.focalDistance;

@@ -13,7 +13,7 @@ namespace lenslab {
 
 std::string findLensFile(const SceneDescription& scene, const std::string& name, const SourceLocation& where) {
     try {
-        return resolveScenePath(scene.rootDir, scene.file, name, where);
+        return resolveScenePath(scene, name, where);
     } catch (const SceneError&) {
         const fs::path bundled = fs::path(LENSLAB_LENS_DIR) / fs::path(name).filename();
         if (fs::is_regular_file(bundled)) return bundled.string();

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "Material.h"
 #include "ParamSet.h"
 #include "Transform.h"
 #include "Vec3f.h"
@@ -26,11 +27,16 @@ public:
     // Samples light arriving at p; false when none can.
     virtual bool sample(Vec3f p, float u1, float u2, LightSample& s) const = 0;
     // For lights a scattered ray can hit: the solid-angle pdf of sample() at p choosing the
-    // direction w, which meets the light at q (area) or escapes (infinite).
-    virtual float pdf(Vec3f p, Vec3f w, Vec3f q) const = 0;
-    // Radiance leaving the light at q toward -w (w the ray direction that hit it).
-    virtual Vec3f emitted(Vec3f q, Vec3f w) const = 0;
+    // direction w, which meets the light at `at` (area lights) or escapes (at == nullptr: infinite).
+    virtual float pdf(Vec3f p, Vec3f w, const SurfaceHit* at) const = 0;
+    // Radiance leaving the light at `at` toward -w (w the ray direction that hit it), or arriving
+    // from the environment along -w for an escaped ray (at == nullptr).
+    virtual Vec3f emitted(const SurfaceHit* at, Vec3f w) const = 0;
     virtual bool isInfinite() const { return false; }
+    // Emitted power (RGB, W), for choosing lights in proportion to it. Distant and infinite lights
+    // need the scene's bounding sphere first.
+    virtual Vec3f power() const = 0;
+    virtual void setSceneBounds(Vec3f /*centre*/, float /*radius*/) {}
 };
 
 // LightSource "TYPE" params, with the current transform: point, spot, distant, infinite.

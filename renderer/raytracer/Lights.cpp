@@ -22,8 +22,9 @@ public:
         s.delta = true;
         return true;
     }
-    float pdf(Vec3f, Vec3f, Vec3f) const override { return 0; }
-    Vec3f emitted(Vec3f, Vec3f) const override { return {}; }
+    float pdf(Vec3f, Vec3f, const SurfaceHit*) const override { return 0; }
+    Vec3f emitted(const SurfaceHit*, Vec3f) const override { return {}; }
+    Vec3f power() const override { return 4.0f * float(M_PI) * intensity_; }
 
 protected:
     Vec3f position_, intensity_;
@@ -47,6 +48,9 @@ public:
         s.radiance = falloff * s.radiance;
         return falloff > 0;
     }
+    Vec3f power() const override {
+        return 2.0f * float(M_PI) * (1.0f - 0.5f * (cosFalloff_ + cosTotal_)) * intensity_;
+    }
 
 private:
     Vec3f axis_;
@@ -64,11 +68,14 @@ public:
         s.delta = true;
         return true;
     }
-    float pdf(Vec3f, Vec3f, Vec3f) const override { return 0; }
-    Vec3f emitted(Vec3f, Vec3f) const override { return {}; }
+    float pdf(Vec3f, Vec3f, const SurfaceHit*) const override { return 0; }
+    Vec3f emitted(const SurfaceHit*, Vec3f) const override { return {}; }
+    Vec3f power() const override { return float(M_PI) * radius_ * radius_ * radiance_; }
+    void setSceneBounds(Vec3f, float radius) override { radius_ = radius; }
 
 private:
     Vec3f toward_, radiance_;
+    float radius_ = 1;
 };
 
 class InfiniteLight : public Light {
@@ -82,12 +89,15 @@ public:
         s.delta = false;
         return true;
     }
-    float pdf(Vec3f, Vec3f, Vec3f) const override { return 1.0f / (4.0f * float(M_PI)); }
-    Vec3f emitted(Vec3f, Vec3f) const override { return radiance_; }
+    float pdf(Vec3f, Vec3f, const SurfaceHit*) const override { return 1.0f / (4.0f * float(M_PI)); }
+    Vec3f emitted(const SurfaceHit*, Vec3f) const override { return radiance_; }
     bool isInfinite() const override { return true; }
+    Vec3f power() const override { return 4.0f * float(M_PI) * float(M_PI) * radius_ * radius_ * radiance_; }
+    void setSceneBounds(Vec3f, float radius) override { radius_ = radius; }
 
 private:
     Vec3f radiance_;
+    float radius_ = 1;
 };
 
 // Area emitters sampled uniformly by area; pdf converted to solid angle at the shading point.
@@ -110,14 +120,16 @@ public:
         s.delta = false;
         return true;
     }
-    float pdf(Vec3f p, Vec3f w, Vec3f q) const override {
-        const Vec3f d = q - p;
-        const float cosL = std::fabs(dot(w, normalAt(q)));
+    float pdf(Vec3f p, Vec3f w, const SurfaceHit* at) const override {
+        if (!at) return 0;
+        const Vec3f d = at->p - p;
+        const float cosL = std::fabs(dot(w, normalAt(at->p)));
         return cosL > 1e-7f ? dot(d, d) / (cosL * area_) : 0.0f;
     }
-    Vec3f emitted(Vec3f q, Vec3f w) const override {
-        return twoSided_ || dot(normalAt(q), w) < 0 ? L_ : Vec3f{};
+    Vec3f emitted(const SurfaceHit* at, Vec3f w) const override {
+        return at && (twoSided_ || dot(normalAt(at->p), w) < 0) ? L_ : Vec3f{};
     }
+    Vec3f power() const override { return (twoSided_ ? 2.0f : 1.0f) * float(M_PI) * area_ * L_; }
 
 protected:
     virtual Vec3f samplePoint(float u1, float u2, Vec3f& normal) const = 0;

@@ -1,6 +1,7 @@
 #pragma once
 // The typed parameter list of a scene directive ("float fov" [45] ...), with the source location
 // for messages and use tracking so that no parameter is ever ignored silently.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,10 @@ struct SourceLocation {
     int line = 0;
     std::string directive;  // e.g. Shape "sphere"
 };
+
+// Maps a file name from the scene (an Include, a lens, a PLY mesh, an image) to a readable path, or
+// fails naming the path tried.
+using PathResolver = std::function<std::string(const std::string& name, const SourceLocation& where)>;
 
 // Throws SceneError "file:line: directive: message".
 [[noreturn]] void sceneFail(const SourceLocation& where, const std::string& message);

@@ -17,8 +17,8 @@ Vec3f offsetOrigin(const SurfaceHit& h, Vec3f w) {
 
 }  // namespace
 
-float PathIntegrator::lightPdf(const Light& light, Vec3f from, Vec3f w, Vec3f q) const {
-    return light.pdf(from, w, q) / float(geometry_.lights().size());
+float PathIntegrator::lightPdf(const Light& light, Vec3f from, Vec3f w, const SurfaceHit* at) const {
+    return light.pdf(from, w, at) / float(geometry_.lights().size());
 }
 
 Vec3f PathIntegrator::sampleOneLight(const Intersection& it, Vec3f wo, Pcg32& rng, std::uint64_t& raysTraced) const {
@@ -56,15 +56,15 @@ Vec3f PathIntegrator::radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::u
         if (!hit) {
             for (const auto& light : geometry_.lights()) {
                 if (!light->isInfinite()) continue;
-                const Vec3f Le = light->emitted({}, d);
-                const float w = lastSpecular ? 1.0f : powerHeuristic(lastPdf, lightPdf(*light, lastP, d, {}));
+                const Vec3f Le = light->emitted(nullptr, d);
+                const float w = lastSpecular ? 1.0f : powerHeuristic(lastPdf, lightPdf(*light, lastP, d, nullptr));
                 L += w * beta * Le;
             }
             break;
         }
         if (it.light) {
-            const Vec3f Le = it.light->emitted(it.hit.p, d);
-            const float w = lastSpecular ? 1.0f : powerHeuristic(lastPdf, lightPdf(*it.light, lastP, d, it.hit.p));
+            const Vec3f Le = it.light->emitted(&it.hit, d);
+            const float w = lastSpecular ? 1.0f : powerHeuristic(lastPdf, lightPdf(*it.light, lastP, d, &it.hit));
             L += w * beta * Le;
         }
         if (afterDiffuse || depth >= spec_.maxDepth) break;
@@ -77,7 +77,7 @@ Vec3f PathIntegrator::radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::u
         lastSpecular = bs.specular;
         lastPdf = bs.pdf;
         lastP = it.hit.p;
-        if (spec_.directOnly && !bs.specular) afterDiffuse = true;
+        if (spec_.type == IntegratorType::DirectLighting && !bs.specular) afterDiffuse = true;
         o = offsetOrigin(it.hit, bs.wi);
         d = bs.wi;
         if (depth >= 3) {  // Russian roulette keeps long paths unbiased and cheap

@@ -18,7 +18,7 @@ public:
 
 private:
     Vec3f sampleOneLight(const Intersection& it, Vec3f wo, Pcg32& rng, std::uint64_t& raysTraced) const;
-    float lightPdf(const Light& light, Vec3f from, Vec3f w, Vec3f q) const;
+    float lightPdf(const Light& light, Vec3f from, Vec3f w, const SurfaceHit* at) const;
 
     const SceneGeometry& geometry_;
     IntegratorSpec spec_;

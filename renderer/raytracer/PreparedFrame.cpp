@@ -40,7 +40,7 @@ std::string joinLines(const std::vector<std::string>& lines) {
 PreparedFrame::PreparedFrame(const RenderSettings& settings)
     : start_(std::chrono::steady_clock::now()),
       settings_(checked(settings)),
-      scene_(parseSceneFile(settings.scenePath)),
+      scene_(parseSceneFile(settings.scenePath, {settings.confined})),
       arena_(threadCount(settings)),
       filter_(scene_.filter) {
     width_ = settings.width.value_or(scene_.film.xresolution);
@@ -123,7 +123,8 @@ std::map<std::string, std::string> PreparedFrame::metadata() const {
     m["cropPixels"] = crop.str();
     m["spp"] = std::to_string(spp_);
     m["seed"] = std::to_string(settings_.seed);
-    m["integrator"] = std::string(scene_.integrator.directOnly ? "directlighting" : "path") + " maxdepth " +
+    static const char* kIntegrators[] = {"path", "directlighting", "whitted"};
+    m["integrator"] = std::string(kIntegrators[int(scene_.integrator.type)]) + " maxdepth " +
                       std::to_string(scene_.integrator.maxDepth);
     m["units"] = "world metres, lens millimetres";
     if (!scene_.film.filename.empty()) m["filmFilename"] = scene_.film.filename;

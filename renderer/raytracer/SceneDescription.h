@@ -10,6 +10,7 @@
 #include "Light.h"
 #include "Material.h"
 #include "ParamSet.h"
+#include "Shape.h"
 #include "Transform.h"
 
 namespace lenslab {
@@ -25,17 +26,27 @@ struct FilmSpec {
     std::string filename;                       // empty: none given
     double diagonalMm = 35;                     // pbrt-v3's Film "diagonal"
     std::array<double, 4> crop = {0, 1, 0, 1};  // x0, x1, y0, y1 in [0, 1]
+    double scale = 1;                           // pbrt-v3's Film "scale": multiplies every pixel
+    double maxSampleLuminance = 0;              // > 0: clamp each sample's luminance to this (pbrt-v3)
     SourceLocation where;
 };
 
-enum class FilterType { Box, Gaussian };
+// pbrt-v3's pixel filters with their parameters; widths are radii in pixels.
+enum class FilterType { Box, Gaussian, Triangle, Mitchell, Sinc };
 struct FilterSpec {
     FilterType type = FilterType::Box;
-    double xwidth = 0.5, ywidth = 0.5, alpha = 2;  // radii in pixels
+    double xwidth = 0.5, ywidth = 0.5;
+    double alpha = 2;        // gaussian
+    double B = 1.0 / 3, C = 1.0 / 3;  // mitchell
+    double tau = 3;          // sinc (Lanczos windowed)
 };
 
+// path: unidirectional with next-event estimation and MIS. directlighting: light sampled at the
+// first non-specular hit, specular bounces followed. whitted: every light sampled at each hit,
+// perfect specular reflection and refraction followed (pbrt-v3's WhittedIntegrator).
+enum class IntegratorType { Path, DirectLighting, Whitted };
 struct IntegratorSpec {
-    bool directOnly = false;  // "directlighting": light sampled at the first diffuse hit only
+    IntegratorType type = IntegratorType::Path;
     int maxDepth = 5;
 };
 
@@ -62,27 +73,53 @@ struct Sphere {
     bool flipNormals = false;
 };
 
+// A shape with its look: material and, for an emitter, its diffuse area light.
+struct ShapeEntry {
+    std::shared_ptr<const Shape> shape;
+    std::shared_ptr<const Material> material;
+    std::optional<AreaEmission> emission;
+};
+
+// ObjectBegin "name" ... ObjectEnd: shapes in the object's own space, drawn by every ObjectInstance.
+struct ObjectDefinition {
+    std::string name;
+    std::vector<ShapeEntry> shapes;
+};
+
+struct ObjectInstance {
+    std::size_t object = 0;      // index into SceneDescription::objects
+    Transform instanceToWorld;   // the current transform at ObjectInstance
+};
+
 struct SceneDescription {
     std::string file;      // the top-level scene file
-    std::string rootDir;   // its folder: every file the scene names must lie inside
+    std::string rootDir;   // its folder: relative file names in the scene resolve against it (as pbrt-v3's)
+    bool confined = false; // files must lie inside rootDir (scenes reached through the HTTP service)
     CameraSpec camera;
     FilmSpec film;
     int pixelSamples = 16;
     FilterSpec filter;
     IntegratorSpec integrator;
-    std::vector<TriangleMesh> meshes;
-    std::vector<Sphere> spheres;
+    std::vector<TriangleMesh> meshes;        // superseded by shapes (being moved over)
+    std::vector<Sphere> spheres;             // superseded by shapes (being moved over)
+    std::vector<ShapeEntry> shapes;          // world space
+    std::vector<ObjectDefinition> objects;
+    std::vector<ObjectInstance> instances;
     std::vector<std::unique_ptr<Light>> lights;  // not the area lights (those come with shapes)
     std::vector<std::string> warnings;
 };
 
-// Reads a pbrt-v3 scene (the subset lenslab supports). Throws SceneError naming the file, line and
-// directive for anything it cannot honour.
-SceneDescription parseSceneFile(const std::string& path);
+struct SceneParseOptions {
+    bool confined = false;  // refuse files outside the scene's folder tree
+};
 
-// A file named in the scene, resolved against the folder of the file that names it; SceneError when
-// it escapes the scene's folder tree or does not exist.
-std::string resolveScenePath(const std::string& rootDir, const std::string& fromFile, const std::string& name,
-                             const SourceLocation& where);
+// Reads a pbrt-v3 scene. Throws SceneError naming the file, line and directive for anything whose
+// omission would change the picture in a way the user must know; warns (scene.warnings) otherwise.
+SceneDescription parseSceneFile(const std::string& path, const SceneParseOptions& options = {});
+
+// A file the scene names, resolved as pbrt-v3 does: absolute, or relative to the main scene file's
+// folder. SceneError naming the path tried when it does not exist, or when the scene is confined
+// and the file lies outside its folder tree.
+std::string resolveScenePath(const SceneDescription& scene, const std::string& name, const SourceLocation& where);
 
 }  // namespace lenslab

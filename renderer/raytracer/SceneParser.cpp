@@ -17,15 +17,16 @@ namespace fs = std::filesystem;
 
 namespace lenslab {
 
-std::string resolveScenePath(const std::string& rootDir, const std::string& fromFile, const std::string& name,
-                             const SourceLocation& where) {
+std::string resolveScenePath(const SceneDescription& scene, const std::string& name, const SourceLocation& where) {
     if (name.empty()) sceneFail(where, "empty file name");
-    const fs::path root = fs::weakly_canonical(fs::path(rootDir));
-    const fs::path p = fs::weakly_canonical(fs::path(fromFile).parent_path() / name);
-    const auto rel = p.lexically_relative(root);
-    if (rel.empty() || *rel.begin() == "..")
-        sceneFail(where, "'" + name + "' lies outside the scene's folder " + root.string() +
-                             " (files a scene names must lie in its folder tree)");
+    const fs::path given(name);
+    const fs::path p = fs::weakly_canonical(given.is_absolute() ? given : fs::path(scene.rootDir) / given);
+    if (scene.confined) {
+        const auto rel = p.lexically_relative(fs::weakly_canonical(fs::path(scene.rootDir)));
+        if (rel.empty() || *rel.begin() == "..")
+            sceneFail(where, "'" + name + "' lies outside the scene's folder " + scene.rootDir +
+                                 " (scenes served over HTTP may only name files in their folder tree)");
+    }
     if (!fs::is_regular_file(p)) sceneFail(where, "cannot open '" + name + "' (looked for " + p.string() + ")");
     return p.string();
 }
@@ -240,7 +241,7 @@ private:
             g_.reverseOrientation = !g_.reverseOrientation;
         } else if (name == "Include" || name == "Import") {
             const std::string file = quoted(where, "a file name");
-            parseFile(resolveScenePath(scene_.rootDir, file_.back(), file, where), depth + 1);
+            parseFile(resolveScenePath(scene_, file, where), depth + 1);
         } else if (name == "Camera") {
             requireWorld(where, false);
             const std::string type = quoted(where, "a camera type");
@@ -358,7 +359,7 @@ private:
         if (type != "path" && type != "directlighting")
             sceneFail(where, "integrator \"" + type + "\" is not supported (path, directlighting)");
         const ParamSet p = params(where);
-        scene_.integrator.directOnly = type == "directlighting";
+        scene_.integrator.type = type == "directlighting" ? IntegratorType::DirectLighting : IntegratorType::Path;
         scene_.integrator.maxDepth = p.getInt("maxdepth", 5);
         if (scene_.integrator.maxDepth < 0 || scene_.integrator.maxDepth > 1000) p.fail("maxdepth must lie in [0, 1000]");
         p.checkAllUsed(scene_.warnings, {"rrthreshold", "lightsamplestrategy", "strategy"});
@@ -370,9 +371,15 @@ private:
         const ParamSet p = params(where);
         FilterSpec& f = scene_.filter;
         if (type == "box") {
-            f = {FilterType::Box, p.getFloat("xwidth", 0.5), p.getFloat("ywidth", 0.5), 2};
+            f = FilterSpec{};
+            f.xwidth = p.getFloat("xwidth", 0.5);
+            f.ywidth = p.getFloat("ywidth", 0.5);
         } else if (type == "gaussian") {
-            f = {FilterType::Gaussian, p.getFloat("xwidth", 2), p.getFloat("ywidth", 2), p.getFloat("alpha", 2)};
+            f = FilterSpec{};
+            f.type = FilterType::Gaussian;
+            f.xwidth = p.getFloat("xwidth", 2);
+            f.ywidth = p.getFloat("ywidth", 2);
+            f.alpha = p.getFloat("alpha", 2);
             if (!(f.alpha > 0)) p.fail("alpha must be positive");
         } else {
             p.fail("pixel filter \"" + type + "\" is not supported (box, gaussian)");
@@ -389,10 +396,9 @@ private:
         if (kind != "spectrum" && kind != "float" && kind != "color" && kind != "rgb")
             sceneFail(where, "texture type \"" + kind + "\" must be spectrum or float");
         const ParamSet p = params(where);
-        const std::string root = scene_.rootDir, from = file_.back();
         textures_[n] = makeTexture(cls, p, textures_,
                                    [&](const std::string& file, const SourceLocation& at) {
-                                       return resolveScenePath(root, from, file, at);
+                                       return resolveScenePath(scene_, file, at);
                                    },
                                    scene_.warnings);
     }
@@ -470,8 +476,9 @@ private:
 
 }  // namespace
 
-SceneDescription parseSceneFile(const std::string& path) {
+SceneDescription parseSceneFile(const std::string& path, const SceneParseOptions& options) {
     SceneDescription scene;
+    scene.confined = options.confined;
     if (!fs::is_regular_file(path)) throw SceneError("cannot open scene file '" + path + "'");
     scene.file = fs::weakly_canonical(path).string();
     scene.rootDir = fs::path(scene.file).parent_path().string();

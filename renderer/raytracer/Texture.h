@@ -18,8 +18,6 @@ public:
 };
 
 using TextureMap = std::map<std::string, std::shared_ptr<const Texture>>;
-// Maps a file name from the scene to a readable path inside the scene's folder tree, or fails.
-using PathResolver = std::function<std::string(const std::string& name, const SourceLocation& where)>;
 
 std::shared_ptr<const Texture> makeConstantTexture(Vec3f value);
 

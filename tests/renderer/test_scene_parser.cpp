@@ -59,11 +59,17 @@ TEST(SceneParser, TransformsPlaceShapesAsPbrtDoes) {
     EXPECT_EQ(s.film.xresolution, 16);
 }
 
-TEST(SceneParser, IncludeStaysInsideTheSceneFolder) {
+TEST(SceneParser, IncludeReachesAnywhereUnlessConfined) {
     test::TempDir dir;
     dir.write("parts/ball.pbrt", "Shape \"sphere\" \"float radius\" 2\n");
-    const std::string ok = dir.write("scene/s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"../parts/ball.pbrt\"\nWorldEnd\n");
-    EXPECT_NE(errorOf(ok).find("outside the scene's folder"), std::string::npos) << errorOf(ok);
+    const std::string up = dir.write("scene/s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"../parts/ball.pbrt\"\nWorldEnd\n");
+    EXPECT_EQ(parseSceneFile(up).spheres.size(), 1u);  // the command line: the user's own files
+    try {
+        parseSceneFile(up, {true});
+        ADD_FAILURE() << "a confined scene reached outside its folder";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("outside the scene's folder"), std::string::npos) << e.what();
+    }
     const std::string inside = dir.write("s2.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"parts/ball.pbrt\"\nWorldEnd\n");
     EXPECT_EQ(parseSceneFile(inside).spheres.size(), 1u);
 }

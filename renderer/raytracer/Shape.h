@@ -1,0 +1,43 @@
+#pragma once
+// A surface the ray tracer can hit: triangle meshes and pbrt-v3's quadrics (sphere, disk,
+// cylinder, cone, paraboloid, hyperboloid). A shape lives in the space of the group that holds it
+// (the world, or an object's own space for ObjectBegin/ObjectInstance) and is one Embree geometry
+// there. Area lights sample it by area, one light per primitive (a triangle, or the whole quadric).
+#include <embree3/rtcore.h>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Material.h"
+#include "ParamSet.h"
+#include "Transform.h"
+
+namespace lenslab {
+
+class Shape {
+public:
+    virtual ~Shape() = default;
+    // Adds this shape to `scene` as one geometry; returns Embree's geometry id. The shape must outlive
+    // the scene (user geometries keep a pointer to it).
+    virtual unsigned attach(RTCDevice device, RTCScene scene) const = 0;
+    // The surface record at a hit of ray (o, d) at distance t on primitive `prim`, with Embree's hit
+    // (u, v) (barycentrics for triangles; whatever the user geometry stored for quadrics), in the
+    // shape's space: position, oriented geometric normal, shading normal, pbrt-v3's (u, v).
+    virtual void surface(Vec3f o, Vec3f d, float t, unsigned prim, float hitU, float hitV, SurfaceHit& out) const = 0;
+    // Emitters: primitives that carry their own light, the area of each, and a point on one drawn
+    // uniformly by area with its oriented normal (the side ReverseOrientation chose).
+    virtual std::size_t primitiveCount() const = 0;
+    virtual float primitiveArea(std::size_t prim) const = 0;
+    virtual Vec3f samplePrimitive(std::size_t prim, float u1, float u2, Vec3f& normal) const = 0;
+};
+
+// Shape "TYPE" params under the transform objectToGroup (the current transform; the space of the
+// enclosing ObjectBegin for instanced objects, else world). reverseOrientation is the graphics
+// state's flag. Throws SceneError naming the parameter for bad input; unknown types are an error.
+std::vector<std::shared_ptr<const Shape>> makeShapes(const std::string& type, const ParamSet& params,
+                                                     const Transform& objectToGroup, bool reverseOrientation,
+                                                     const PathResolver& resolve, std::vector<std::string>& warnings);
+
+}  // namespace lenslab
