@@ -25,6 +25,7 @@ struct CameraOverrides {
 struct RenderSettings {
     std::string scenePath;                 // pbrt-v3 subset
     bool confined = false;                 // the scene may only name files inside its folder (HTTP)
+    std::function<void(double)> loadProgress;  // fraction of the scene file read, while parsing
     CameraOverrides camera;
     std::optional<int> spp, width, height; // unset = as in the scene
     int threads = 0;                       // 0 = all cores

@@ -63,6 +63,29 @@ void printProgressJson(const TileUpdate& u) {
     std::fflush(stdout);
 }
 
+// "loading scene  42%" on stderr once a scene has taken half a second to read: redrawn in place on
+// a terminal, a line per quarter otherwise.
+class SceneLoadProgress {
+public:
+    explicit SceneLoadProgress(bool terminal) : terminal_(terminal) {}
+    void operator()(double fraction) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        if (elapsed < 0.5) return;
+        const int percent = int(fraction * 100);
+        const int step = terminal_ ? 1 : 25;
+        if (percent / step == shown_ / step && percent != 100) return;
+        if (percent == shown_) return;
+        shown_ = percent;
+        std::fprintf(stderr, terminal_ ? "\rloading scene %3d%%%s" : "loading scene %3d%%\n%s", percent,
+                     terminal_ && percent == 100 ? "\n" : "");
+    }
+
+private:
+    bool terminal_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    int shown_ = -1;
+};
+
 }  // namespace
 
 int runRenderCommand(const std::vector<std::string>& argsIn) {
@@ -131,6 +154,7 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     }
     const bool quiet = p.has("--quiet");
 
+    if (!quiet) s.loadProgress = SceneLoadProgress(::isatty(STDERR_FILENO));
     const bool progressJson = p.has("--progress-json");
     ProgressBar bar(!quiet && ::isatty(STDERR_FILENO));
     const auto onTile = [&](const TileUpdate& u, const Image&) {

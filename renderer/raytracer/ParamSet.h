@@ -31,6 +31,7 @@ struct Param {
     std::string name;
     std::vector<double> numbers;
     std::vector<std::string> strings;  // String, Texture; Bool as "true"/"false"
+    int line = 0;                      // where it was declared
     mutable bool used = false;
 };
 
@@ -61,15 +62,16 @@ public:
     std::vector<int> getInts(const std::string& name) const;
     std::vector<Vec3f> getPoints(const std::string& name) const;  // point3/normal/vector
 
-    // Every parameter not read is an error naming it, except those in `harmless` (parameters whose
-    // absence cannot change the image), which become warnings.
+    // Every parameter not read (unknown, or given with another type) becomes a warning naming its
+    // file and line, as in pbrt-v3; those in `harmless` are said not to change the image.
     void checkAllUsed(std::vector<std::string>& warnings, const std::vector<std::string>& harmless = {}) const;
 
     [[noreturn]] void fail(const std::string& message) const { sceneFail(where_, message); }
 
 private:
     const Param* find(const std::string& name) const;
-    const Param& expect(const std::string& name, std::initializer_list<ParamType> types, std::size_t count) const;
+    // The parameter when given with one of `types` (marked used), else nullptr; count 0: any.
+    const Param* lookup(const std::string& name, std::initializer_list<ParamType> types, std::size_t count) const;
 
     SourceLocation where_;
     std::vector<Param> params_;

@@ -29,6 +29,13 @@ int threadCount(const RenderSettings& s) {
     return s.threads > 0 ? s.threads : int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+// pbrt-v3's Film "maxsampleluminance": a sample brighter than the limit is scaled down to it
+// (trading bias for fireflies); 0 means no limit.
+Vec3f clampLuminance(Vec3f L, double limit) {
+    const float y = luminance(L);
+    return limit > 0 && y > limit ? float(limit / y) * L : L;
+}
+
 std::string joinLines(const std::vector<std::string>& lines) {
     std::string s;
     for (const auto& l : lines) s += (s.empty() ? "" : "\n") + l;
@@ -40,7 +47,7 @@ std::string joinLines(const std::vector<std::string>& lines) {
 PreparedFrame::PreparedFrame(const RenderSettings& settings)
     : start_(std::chrono::steady_clock::now()),
       settings_(checked(settings)),
-      scene_(parseSceneFile(settings.scenePath, {settings.confined})),
+      scene_(parseSceneFile(settings.scenePath, {settings.confined, settings.loadProgress})),
       arena_(threadCount(settings)),
       filter_(scene_.filter) {
     width_ = settings.width.value_or(scene_.film.xresolution);
@@ -101,13 +108,15 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                     continue;
                 }
                 Pcg32 rng(hashCombine(pixelSeed, std::uint64_t(s)));
-                sum += ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced);
+                sum += clampLuminance(ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced),
+                                      scene_.film.maxSampleLuminance);
             }
             local.cameraRays += spp_;
             float* out = row + std::size_t(px - rect.x0) * 3;
-            out[0] = sum.x / spp_;
-            out[1] = sum.y / spp_;
-            out[2] = sum.z / spp_;
+            const float scale = float(scene_.film.scale) / float(spp_);
+            out[0] = sum.x * scale;
+            out[1] = sum.y * scale;
+            out[2] = sum.z * scale;
         }
     }
     counters += local;

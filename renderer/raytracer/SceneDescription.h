@@ -2,6 +2,7 @@
 // A parsed scene: the rendering options from before WorldBegin and the world's shapes, materials
 // and lights, all in world space (metres).
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -110,7 +111,8 @@ struct SceneDescription {
 };
 
 struct SceneParseOptions {
-    bool confined = false;  // refuse files outside the scene's folder tree
+    bool confined = false;                        // refuse files outside the scene's folder tree
+    std::function<void(double fraction)> progress; // called as the main file is read, 0 to 1
 };
 
 // Reads a pbrt-v3 scene. Throws SceneError naming the file, line and directive for anything whose

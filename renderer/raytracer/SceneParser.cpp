@@ -1,17 +1,17 @@
-// pbrt-v3 scene syntax, the subset lenslab renders. Every directive or parameter it cannot honour
-// is an error naming the file, line and directive, or a warning when ignoring it cannot change the
-// image.
-#include <cerrno>
+// pbrt-v3 scene syntax. Like pbrt-v3, an unknown or unused parameter is a warning naming its file
+// and line; a feature lenslab cannot render is an error naming it where the picture would be wrong
+// in a way the user must know, and a warning where a faithful substitute renders instead.
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
+#include "ParamList.h"
 #include "Render.h"
 #include "SceneDescription.h"
-#include "SceneTokenizer.h"
+#include "TokenCursor.h"
 
 namespace fs = std::filesystem;
 
@@ -35,8 +35,14 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 32;
 
+// pbrt-v3 keeps two current transforms, for shutter open and close (motion blur).
+struct TransformPair {
+    Transform start, end;
+};
+
 struct GraphicsState {
-    Transform ctm;
+    Transform ctm;      // at shutter open: what lenslab renders
+    Transform ctmEnd;   // at shutter close
     std::shared_ptr<const Material> material;
     std::optional<AreaEmission> area;
     bool reverseOrientation = false;
@@ -48,9 +54,13 @@ struct StackEntry {
     SourceLocation where;
 };
 
+enum class Phase { Options, World, Anywhere };
+
 class Parser {
 public:
-    explicit Parser(SceneDescription& scene) : scene_(scene) { g_.material = makeDefaultMaterial(); }
+    Parser(SceneDescription& scene, const SceneParseOptions& options) : scene_(scene), options_(options) {
+        g_.material = makeDefaultMaterial();
+    }
 
     void parseFile(const std::string& path, int depth) {
         if (depth > kMaxIncludeDepth) throw SceneError(path + ": Include nested deeper than 32 (a cycle?)");
@@ -58,13 +68,12 @@ public:
         if (!in) throw SceneError("cannot open scene file '" + path + "'");
         std::stringstream text;
         text << in.rdbuf();
-        file_.push_back(path);
-        tokens_.push_back(tokenizeScene(text.str(), path));
-        pos_.push_back(0);
-        while (pos_.back() < tokens_.back().size()) directive(depth);
-        file_.pop_back();
-        tokens_.pop_back();
-        pos_.pop_back();
+        files_.emplace_back(path, tokenizeScene(text.str(), path));
+        while (!in_().atEnd()) {
+            directive(depth);
+            if (options_.progress && depth == 0) options_.progress(in_().fraction());
+        }
+        files_.pop_back();
     }
 
     void finish() {
@@ -74,255 +83,226 @@ public:
     }
 
 private:
-    // --- tokens -----------------------------------------------------------------------------
-    bool atEnd() const { return pos_.back() >= tokens_.back().size(); }
-    const Token& peek() const { return tokens_.back()[pos_.back()]; }
-    const Token& take(const SourceLocation& where, const char* what) {
-        if (atEnd()) sceneFail(where, std::string("expected ") + what + " but the file ended");
-        return tokens_.back()[pos_.back()++];
-    }
-    SourceLocation here(const std::string& directive, int line) const { return {file_.back(), line, directive}; }
+    using Handler = void (Parser::*)(SourceLocation&, int);
+    struct DirectiveEntry {
+        Handler handler;
+        Phase phase;
+    };
 
-    static double toNumber(const Token& t, const SourceLocation& where) {
-        if (t.quoted || t.text == "[" || t.text == "]") sceneFail(where, "expected a number, got '" + t.text + "'");
-        errno = 0;
-        char* end = nullptr;
-        const double v = std::strtod(t.text.c_str(), &end);
-        if (end != t.text.c_str() + t.text.size() || errno == ERANGE || !std::isfinite(v))
-            sceneFail({where.file, t.line, where.directive}, "bad number '" + t.text + "'");
-        return v;
+    TokenCursor& in_() { return files_.back(); }
+    double number(const SourceLocation& where) { return in_().number(where); }
+    std::string quoted(const SourceLocation& where, const char* what) { return in_().quoted(where, what); }
+    PathResolver resolver() const {
+        return [this](const std::string& name, const SourceLocation& at) { return resolveScenePath(scene_, name, at); };
     }
-    double number(const SourceLocation& where) { return toNumber(take(where, "a number"), where); }
-    std::string quoted(const SourceLocation& where, const char* what) {
-        const Token& t = take(where, what);
-        if (!t.quoted) sceneFail(where, std::string("expected ") + what + " in quotes, got '" + t.text + "'");
-        return t.text;
+    ParamSet params(const SourceLocation& where) { return readParamList(in_(), where, resolver()); }
+    void warn(const SourceLocation& where, const std::string& message) {
+        scene_.warnings.push_back(describe(where) + ": " + message);
     }
-    // Bracketed numbers, exactly `count` of them (Transform, ConcatTransform).
-    std::vector<double> numberArray(const SourceLocation& where, std::size_t count) {
-        std::vector<double> v;
-        const bool bracket = !atEnd() && peek().text == "[" && !peek().quoted;
-        if (bracket) take(where, "[");
-        while (v.size() < count) v.push_back(number(where));
-        if (bracket && take(where, "]").text != "]") sceneFail(where, "expected " + std::to_string(count) + " numbers in [ ]");
-        return v;
+    // The directive's quoted type name, added to `where` for messages: Shape "disk".
+    std::string typeName(SourceLocation& where, const char* what) {
+        const std::string type = quoted(where, what);
+        where.directive += " \"" + type + "\"";
+        return type;
     }
-
-    static std::optional<ParamType> typeFromName(const std::string& t) {
-        static const std::map<std::string, ParamType> kTypes = {
-            {"float", ParamType::Float},    {"integer", ParamType::Integer}, {"string", ParamType::String},
-            {"bool", ParamType::Bool},      {"point", ParamType::Point3},    {"point3", ParamType::Point3},
-            {"vector", ParamType::Vector3}, {"vector3", ParamType::Vector3}, {"normal", ParamType::Normal},
-            {"normal3", ParamType::Normal}, {"rgb", ParamType::Rgb},         {"color", ParamType::Rgb},
-            {"point2", ParamType::Point2},  {"texture", ParamType::Texture}};
-        auto it = kTypes.find(t);
-        if (it == kTypes.end()) return std::nullopt;
-        return it->second;
-    }
-
-    ParamSet params(const SourceLocation& where) {
-        std::vector<Param> list;
-        while (!atEnd() && peek().quoted && peek().text.find(' ') != std::string::npos) {
-            const Token decl = take(where, "a parameter");
-            std::istringstream words(decl.text);
-            std::string typeName, name, extra;
-            words >> typeName >> name >> extra;
-            const SourceLocation at{where.file, decl.line, where.directive};
-            if (name.empty() || !extra.empty()) sceneFail(at, "bad parameter declaration \"" + decl.text + "\"");
-            const auto type = typeFromName(typeName);
-            if (!type) {
-                if (typeName == "spectrum" || typeName == "blackbody" || typeName == "xyz")
-                    sceneFail(at, "parameter \"" + decl.text + "\": " + typeName + " values are not supported; use rgb");
-                sceneFail(at, "unknown parameter type '" + typeName + "' in \"" + decl.text + "\"");
-            }
-            for (const Param& p : list)
-                if (p.name == name) sceneFail(at, "parameter \"" + name + "\" given twice");
-            Param p;
-            p.type = *type;
-            p.name = name;
-            std::vector<Token> values;
-            if (atEnd()) sceneFail(at, "parameter \"" + decl.text + "\" has no value");
-            if (peek().text == "[" && !peek().quoted) {
-                take(at, "[");
-                while (true) {
-                    const Token& t = take(at, "]");
-                    if (t.text == "]" && !t.quoted) break;
-                    values.push_back(t);
-                }
-            } else {
-                values.push_back(take(at, "a value"));
-            }
-            for (const Token& t : values) {
-                const SourceLocation vat{where.file, t.line, where.directive};
-                if (p.type == ParamType::String || p.type == ParamType::Texture) {
-                    if (!t.quoted) sceneFail(vat, "parameter \"" + name + "\" needs quoted strings, got '" + t.text + "'");
-                    p.strings.push_back(t.text);
-                } else if (p.type == ParamType::Bool) {
-                    if (t.text != "true" && t.text != "false")
-                        sceneFail(vat, "parameter \"" + name + "\" needs true or false, got '" + t.text + "'");
-                    p.strings.push_back(t.text);
-                } else {
-                    p.numbers.push_back(toNumber(t, vat));
-                }
-            }
-            if (values.empty()) sceneFail(at, "parameter \"" + name + "\" has an empty value list");
-            list.push_back(std::move(p));
-        }
-        return ParamSet(where, std::move(list));
-    }
-
-    // --- directives -------------------------------------------------------------------------
-    void requireWorld(const SourceLocation& where, bool inside) {
-        if (inside && !worldBegun_) sceneFail(where, "only allowed after WorldBegin");
-        if (!inside && worldBegun_) sceneFail(where, "only allowed before WorldBegin");
-    }
-
-    void applyTransform(const Transform& t) { g_.ctm = g_.ctm * t; }
 
     void directive(int depth) {
-        const Token tok = tokens_.back()[pos_.back()++];
-        const std::string& name = tok.text;
-        SourceLocation where = here(name, tok.line);
-        if (tok.quoted || name == "[" || name == "]") sceneFail(where, "expected a directive, got '" + name + "'");
+        const Token tok = in_().take({in_().file(), 0, ""}, "a directive");
+        SourceLocation where{in_().file(), tok.line, tok.text};
+        if (tok.quoted || tok.text == "[" || tok.text == "]") sceneFail(where, "expected a directive, got '" + tok.text + "'");
         if (worldEnded_) {
-            scene_.warnings.push_back(describe(where) + ": ignoring everything after WorldEnd");
-            pos_.back() = tokens_.back().size();
+            warn(where, "ignoring everything after WorldEnd");
+            in_().skipToEnd();
             return;
         }
+        const auto& table = directives();
+        const auto it = table.find(tok.text);
+        if (it == table.end()) sceneFail(where, "unsupported directive '" + tok.text + "'");
+        if (it->second.phase == Phase::World && !worldBegun_) sceneFail(where, "only allowed after WorldBegin");
+        if (it->second.phase == Phase::Options && worldBegun_) sceneFail(where, "only allowed before WorldBegin");
         try {
-            dispatch(name, where, depth);
+            (this->*it->second.handler)(where, depth);
         } catch (const std::domain_error& e) {  // singular or degenerate transforms
             sceneFail(where, e.what());
         }
     }
 
-    void dispatch(const std::string& name, SourceLocation& where, int depth) {
-        if (name == "Translate") {
-            const double x = number(where), y = number(where), z = number(where);
-            applyTransform(translate(x, y, z));
-        } else if (name == "Scale") {
-            const double x = number(where), y = number(where), z = number(where);
-            if (x == 0 || y == 0 || z == 0) sceneFail(where, "zero scale factor");
-            applyTransform(scale(x, y, z));
-        } else if (name == "Rotate") {
-            const double a = number(where), x = number(where), y = number(where), z = number(where);
-            applyTransform(rotate(a, x, y, z));
-        } else if (name == "LookAt") {
-            double v[9];
-            for (double& x : v) x = number(where);
-            applyTransform(lookAt(v, v + 3, v + 6));
-        } else if (name == "Transform" || name == "ConcatTransform") {
-            const std::vector<double> v = numberArray(where, 16);
-            Matrix44 m;
-            for (int i = 0; i < 16; ++i) m.m[i % 4][i / 4] = v[i];  // pbrt lists the matrix column by column
-            const Transform t = makeTransform(m);
-            if (name == "Transform") g_.ctm = t;
-            else applyTransform(t);
-        } else if (name == "Identity") {
-            g_.ctm = Transform{};
-        } else if (name == "CoordinateSystem") {
-            namedCoordinates_[quoted(where, "a name")] = g_.ctm;
-        } else if (name == "CoordSysTransform") {
-            const std::string n = quoted(where, "a name");
-            auto it = namedCoordinates_.find(n);
-            if (it == namedCoordinates_.end()) sceneFail(where, "unknown coordinate system \"" + n + "\"");
-            g_.ctm = it->second;
-        } else if (name == "AttributeBegin" || name == "TransformBegin") {
-            stack_.push_back({name == "AttributeBegin", g_, where});
-        } else if (name == "AttributeEnd" || name == "TransformEnd") {
-            const bool attribute = name == "AttributeEnd";
-            if (stack_.empty()) sceneFail(where, "without a matching " + std::string(attribute ? "AttributeBegin" : "TransformBegin"));
-            if (stack_.back().attribute != attribute)
-                sceneFail(where, "closes " + describe(stack_.back().where) + " (mismatched nesting)");
-            if (attribute) g_ = stack_.back().state;
-            else g_.ctm = stack_.back().state.ctm;
-            stack_.pop_back();
-        } else if (name == "ReverseOrientation") {
-            g_.reverseOrientation = !g_.reverseOrientation;
-        } else if (name == "Include" || name == "Import") {
-            const std::string file = quoted(where, "a file name");
-            parseFile(resolveScenePath(scene_, file, where), depth + 1);
-        } else if (name == "Camera") {
-            requireWorld(where, false);
-            const std::string type = quoted(where, "a camera type");
-            where.directive += " \"" + type + "\"";
-            if (type != "perspective" && type != "realistic")
-                sceneFail(where, "camera \"" + type + "\" is not supported (perspective, realistic)");
-            scene_.camera.type = type;
-            scene_.camera.params = params(where);
-            scene_.camera.cameraToWorld = inverse(g_.ctm);
-            namedCoordinates_["camera"] = scene_.camera.cameraToWorld;
-        } else if (name == "Film") {
-            requireWorld(where, false);
-            film(where);
-        } else if (name == "Sampler") {
-            requireWorld(where, false);
-            sampler(where);
-        } else if (name == "Integrator") {
-            requireWorld(where, false);
-            integrator(where);
-        } else if (name == "PixelFilter") {
-            requireWorld(where, false);
-            filter(where);
-        } else if (name == "Accelerator") {
-            requireWorld(where, false);
-            quoted(where, "an accelerator type");
-            params(where);
-            scene_.warnings.push_back(describe(where) + ": ignored (lenslab always uses Embree's BVH)");
-        } else if (name == "WorldBegin") {
-            requireWorld(where, false);
-            worldBegun_ = true;
-            g_.ctm = Transform{};
-            namedCoordinates_["world"] = g_.ctm;
-        } else if (name == "WorldEnd") {
-            requireWorld(where, true);
-            worldEnded_ = true;
-        } else if (name == "Shape") {
-            requireWorld(where, true);
-            shape(where);
-        } else if (name == "Material") {
-            requireWorld(where, true);
-            const std::string type = quoted(where, "a material type");
-            where.directive += " \"" + type + "\"";
-            g_.material = makeMaterial(type, params(where), textures_, scene_.warnings);
-        } else if (name == "MakeNamedMaterial") {
-            requireWorld(where, true);
-            const std::string n = quoted(where, "a material name");
-            where.directive += " \"" + n + "\"";
-            const ParamSet p = params(where);
-            namedMaterials_[n] = makeMaterial(p.getString("type", ""), p, textures_, scene_.warnings);
-        } else if (name == "NamedMaterial") {
-            requireWorld(where, true);
-            const std::string n = quoted(where, "a material name");
-            auto it = namedMaterials_.find(n);
-            if (it == namedMaterials_.end()) sceneFail(where, "unknown material \"" + n + "\"");
-            g_.material = it->second;
-        } else if (name == "Texture") {
-            requireWorld(where, true);
-            texture(where);
-        } else if (name == "LightSource") {
-            requireWorld(where, true);
-            const std::string type = quoted(where, "a light type");
-            where.directive += " \"" + type + "\"";
-            scene_.lights.push_back(makeLight(type, params(where), g_.ctm, scene_.warnings));
-        } else if (name == "AreaLightSource") {
-            requireWorld(where, true);
-            const std::string type = quoted(where, "an area light type");
-            where.directive += " \"" + type + "\"";
-            if (type != "diffuse") sceneFail(where, "area light \"" + type + "\" is not supported (diffuse)");
-            const ParamSet p = params(where);
-            g_.area = AreaEmission{p.getRgb("scale", {1, 1, 1}) * p.getRgb("L", {1, 1, 1}), p.getBool("twosided", false)};
-            p.checkAllUsed(scene_.warnings, {"nsamples", "samples"});
-        } else {
-            sceneFail(where, "unsupported directive '" + name + "'");
-        }
+    static const std::map<std::string, DirectiveEntry>& directives() {
+        static const std::map<std::string, DirectiveEntry> table = {
+            {"Translate", {&Parser::translateDirective, Phase::Anywhere}},
+            {"Scale", {&Parser::scaleDirective, Phase::Anywhere}},
+            {"Rotate", {&Parser::rotateDirective, Phase::Anywhere}},
+            {"LookAt", {&Parser::lookAtDirective, Phase::Anywhere}},
+            {"Transform", {&Parser::matrixDirective, Phase::Anywhere}},
+            {"ConcatTransform", {&Parser::matrixDirective, Phase::Anywhere}},
+            {"Identity", {&Parser::identityDirective, Phase::Anywhere}},
+            {"CoordinateSystem", {&Parser::coordinateSystem, Phase::Anywhere}},
+            {"CoordSysTransform", {&Parser::coordSysTransform, Phase::Anywhere}},
+            {"ActiveTransform", {&Parser::activeTransform, Phase::Anywhere}},
+            {"TransformTimes", {&Parser::transformTimes, Phase::Options}},
+            {"AttributeBegin", {&Parser::beginBlock, Phase::Anywhere}},
+            {"TransformBegin", {&Parser::beginBlock, Phase::Anywhere}},
+            {"AttributeEnd", {&Parser::endBlock, Phase::Anywhere}},
+            {"TransformEnd", {&Parser::endBlock, Phase::Anywhere}},
+            {"ReverseOrientation", {&Parser::reverseOrientation, Phase::Anywhere}},
+            {"Include", {&Parser::include, Phase::Anywhere}},
+            {"Import", {&Parser::include, Phase::Anywhere}},
+            {"Option", {&Parser::ignoredWithParams, Phase::Options}},
+            {"ColorSpace", {&Parser::ignoredName, Phase::Anywhere}},
+            {"Camera", {&Parser::camera, Phase::Options}},
+            {"Film", {&Parser::film, Phase::Options}},
+            {"Sampler", {&Parser::sampler, Phase::Options}},
+            {"Integrator", {&Parser::integrator, Phase::Options}},
+            {"PixelFilter", {&Parser::filter, Phase::Options}},
+            {"Accelerator", {&Parser::accelerator, Phase::Options}},
+            {"MakeNamedMedium", {&Parser::medium, Phase::Anywhere}},
+            {"MediumInterface", {&Parser::mediumInterface, Phase::Anywhere}},
+            {"WorldBegin", {&Parser::worldBegin, Phase::Options}},
+            {"WorldEnd", {&Parser::worldEnd, Phase::World}},
+            {"Shape", {&Parser::shapeDirective, Phase::World}},
+            {"Material", {&Parser::material, Phase::World}},
+            {"MakeNamedMaterial", {&Parser::makeNamedMaterial, Phase::World}},
+            {"NamedMaterial", {&Parser::namedMaterial, Phase::World}},
+            {"Texture", {&Parser::textureDirective, Phase::World}},
+            {"LightSource", {&Parser::lightSource, Phase::World}},
+            {"AreaLightSource", {&Parser::areaLightSource, Phase::World}},
+            {"Attribute", {&Parser::ignoredWithParams, Phase::World}},
+        };
+        return table;
     }
 
-    void film(SourceLocation& where) {
-        const std::string type = quoted(where, "a film type");
-        where.directive += " \"" + type + "\"";
-        if (type != "image") sceneFail(where, "film \"" + type + "\" is not supported (image)");
+    // --- transforms -------------------------------------------------------------------------
+    // Applies t to the transforms ActiveTransform selected (both unless told otherwise).
+    void applyTransform(const Transform& t) {
+        if (activeStart_) g_.ctm = g_.ctm * t;
+        if (activeEnd_) g_.ctmEnd = g_.ctmEnd * t;
+    }
+    void setTransform(const Transform& t) {
+        if (activeStart_) g_.ctm = t;
+        if (activeEnd_) g_.ctmEnd = t;
+    }
+    void translateDirective(SourceLocation& where, int) {
+        const double x = number(where), y = number(where), z = number(where);
+        applyTransform(translate(x, y, z));
+    }
+    void scaleDirective(SourceLocation& where, int) {
+        const double x = number(where), y = number(where), z = number(where);
+        if (x == 0 || y == 0 || z == 0) sceneFail(where, "zero scale factor");
+        applyTransform(scale(x, y, z));
+    }
+    void rotateDirective(SourceLocation& where, int) {
+        const double a = number(where), x = number(where), y = number(where), z = number(where);
+        applyTransform(rotate(a, x, y, z));
+    }
+    void lookAtDirective(SourceLocation& where, int) {
+        double v[9];
+        for (double& x : v) x = number(where);
+        applyTransform(lookAt(v, v + 3, v + 6));
+    }
+    void matrixDirective(SourceLocation& where, int) {
+        const std::vector<double> v = in_().numberArray(where, 16);
+        Matrix44 m;
+        for (int i = 0; i < 16; ++i) m.m[i % 4][i / 4] = v[i];  // pbrt lists the matrix column by column
+        const Transform t = makeTransform(m);
+        if (where.directive == "Transform") setTransform(t);
+        else applyTransform(t);
+    }
+    void identityDirective(SourceLocation&, int) { setTransform(Transform{}); }
+    void coordinateSystem(SourceLocation& where, int) { namedCoordinates_[quoted(where, "a name")] = {g_.ctm, g_.ctmEnd}; }
+    void coordSysTransform(SourceLocation& where, int) {
+        const std::string n = quoted(where, "a name");
+        auto it = namedCoordinates_.find(n);
+        if (it == namedCoordinates_.end()) sceneFail(where, "unknown coordinate system \"" + n + "\"");
+        setTransform(activeStart_ ? it->second.start : it->second.end);
+        if (activeStart_ && activeEnd_) g_.ctmEnd = it->second.end;
+    }
+    void activeTransform(SourceLocation& where, int) {
+        const Token& t = in_().take(where, "StartTime, EndTime or All");
+        if (t.quoted || (t.text != "StartTime" && t.text != "EndTime" && t.text != "All"))
+            sceneFail(where, "expected StartTime, EndTime or All, got '" + t.text + "'");
+        activeStart_ = t.text != "EndTime";
+        activeEnd_ = t.text != "StartTime";
+    }
+    void transformTimes(SourceLocation& where, int) {
+        const double start = number(where), end = number(where);
+        if (!(end >= start)) sceneFail(where, "the end time must not precede the start time");
+    }
+    // Motion blur is not rendered: objects that move are drawn where they stand at shutter open.
+    void warnIfMoving(const SourceLocation& where) {
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c)
+                if (g_.ctm.forward.m[r][c] != g_.ctmEnd.forward.m[r][c]) {
+                    warn(where, "moves during the exposure: motion blur is not rendered, drawn at shutter open");
+                    return;
+                }
+    }
+
+    // --- blocks and files -------------------------------------------------------------------
+    void beginBlock(SourceLocation& where, int) { stack_.push_back({where.directive == "AttributeBegin", g_, where}); }
+    void endBlock(SourceLocation& where, int) {
+        const bool attribute = where.directive == "AttributeEnd";
+        if (stack_.empty()) sceneFail(where, "without a matching " + std::string(attribute ? "AttributeBegin" : "TransformBegin"));
+        if (stack_.back().attribute != attribute) sceneFail(where, "closes " + describe(stack_.back().where) + " (mismatched nesting)");
+        if (attribute) {
+            g_ = stack_.back().state;
+        } else {
+            g_.ctm = stack_.back().state.ctm;
+            g_.ctmEnd = stack_.back().state.ctmEnd;
+        }
+        stack_.pop_back();
+    }
+    void reverseOrientation(SourceLocation&, int) { g_.reverseOrientation = !g_.reverseOrientation; }
+    void include(SourceLocation& where, int depth) {
+        const std::string file = quoted(where, "a file name");
+        parseFile(resolveScenePath(scene_, file, where), depth + 1);
+    }
+    void ignoredName(SourceLocation& where, int) {
+        warn({where.file, where.line, where.directive + " \"" + quoted(where, "a name") + "\""}, "ignored (lenslab renders in linear sRGB)");
+    }
+    void ignoredWithParams(SourceLocation& where, int) {
+        typeName(where, "a name");
+        params(where);
+        warn(where, "ignored (a pbrt-v4 directive lenslab does not use)");
+    }
+
+    // --- rendering options ------------------------------------------------------------------
+    void camera(SourceLocation& where, int) {
+        const std::string type = typeName(where, "a camera type");
+        if (type != "perspective" && type != "realistic")
+            sceneFail(where, "camera \"" + type + "\" is not supported (perspective, realistic)");
+        scene_.camera.type = type;
+        scene_.camera.params = params(where);
+        scene_.camera.cameraToWorld = inverse(g_.ctm);
+        namedCoordinates_["camera"] = {inverse(g_.ctm), inverse(g_.ctmEnd)};
+        warnIfMoving(where);
+    }
+    void accelerator(SourceLocation& where, int) {
+        typeName(where, "an accelerator type");
+        params(where);
+        warn(where, "ignored (lenslab always uses Embree's BVH)");
+    }
+    // Participating media would change the picture everywhere: refuse rather than render without.
+    void medium(SourceLocation& where, int) {
+        sceneFail(where, "participating media (MakeNamedMedium \"" + quoted(where, "a medium name") +
+                             "\") are not supported: the picture would lack the medium");
+    }
+    void mediumInterface(SourceLocation& where, int) {
+        const std::string inside = quoted(where, "a medium name");
+        const std::string outside = !in_().atEnd() && in_().peek().quoted ? quoted(where, "a medium name") : inside;
+        if (!inside.empty() || !outside.empty())
+            sceneFail(where, "participating media are not supported (MediumInterface \"" + inside + "\" \"" + outside + "\")");
+    }
+    void worldBegin(SourceLocation&, int) {
+        worldBegun_ = true;
+        g_.ctm = g_.ctmEnd = Transform{};
+        namedCoordinates_["world"] = {Transform{}, Transform{}};
+    }
+    void worldEnd(SourceLocation&, int) { worldEnded_ = true; }
+
+    void film(SourceLocation& where, int) {
+        const std::string type = typeName(where, "a film type");
         const ParamSet p = params(where);
+        if (type != "image") warn(where, "film \"" + type + "\" is rendered as pbrt-v3's \"image\" film (RGB)");
         FilmSpec& f = scene_.film;
         f.where = where;
         f.xresolution = p.getInt("xresolution", 1280);
@@ -335,57 +315,103 @@ private:
             if (c.size() != 4) p.fail("cropwindow needs 4 numbers: x0 x1 y0 y1");
             for (int i = 0; i < 4; ++i) f.crop[i] = c[i];
         }
+        f.scale = p.getFloat("scale", 1);
+        if (!(f.scale > 0)) p.fail("scale must be positive");
+        f.maxSampleLuminance = p.getFloat("maxsampleluminance", 0);
+        if (f.maxSampleLuminance < 0) p.fail("maxsampleluminance must not be negative");
         p.checkAllUsed(scene_.warnings);
     }
 
-    void sampler(SourceLocation& where) {
-        const std::string type = quoted(where, "a sampler type");
-        where.directive += " \"" + type + "\"";
+    void sampler(SourceLocation& where, int) {
+        const std::string type = typeName(where, "a sampler type");
         const ParamSet p = params(where);
-        static const char* kKnown[] = {"halton", "sobol", "random", "stratified", "02sequence", "lowdiscrepancy", "maxmindist", "zerotwosequence"};
-        bool known = false;
-        for (const char* k : kKnown) known = known || type == k;
-        if (!known) p.fail("unknown sampler \"" + type + "\"");
         if (type == "stratified") scene_.pixelSamples = p.getInt("xsamples", 4) * p.getInt("ysamples", 4);
         else scene_.pixelSamples = p.getInt("pixelsamples", 16);
         p.checkAllUsed(scene_.warnings, {"jitter", "dimensions", "seed"});
         if (type != "sobol" && type != "zerotwosequence" && type != "02sequence" && type != "lowdiscrepancy")
-            scene_.warnings.push_back(describe(where) + ": lenslab uses its own scrambled Sobol' sampler (noise differs, not the image)");
+            warn(where, "lenslab uses its own scrambled Sobol' sampler (noise differs, not the image)");
     }
 
-    void integrator(SourceLocation& where) {
-        const std::string type = quoted(where, "an integrator type");
-        where.directive += " \"" + type + "\"";
-        if (type != "path" && type != "directlighting")
-            sceneFail(where, "integrator \"" + type + "\" is not supported (path, directlighting)");
+    void integrator(SourceLocation& where, int) {
+        const std::string type = typeName(where, "an integrator type");
         const ParamSet p = params(where);
-        scene_.integrator.type = type == "directlighting" ? IntegratorType::DirectLighting : IntegratorType::Path;
-        scene_.integrator.maxDepth = p.getInt("maxdepth", 5);
-        if (scene_.integrator.maxDepth < 0 || scene_.integrator.maxDepth > 1000) p.fail("maxdepth must lie in [0, 1000]");
-        p.checkAllUsed(scene_.warnings, {"rrthreshold", "lightsamplestrategy", "strategy"});
-    }
-
-    void filter(SourceLocation& where) {
-        const std::string type = quoted(where, "a filter type");
-        where.directive += " \"" + type + "\"";
-        const ParamSet p = params(where);
-        FilterSpec& f = scene_.filter;
-        if (type == "box") {
-            f = FilterSpec{};
-            f.xwidth = p.getFloat("xwidth", 0.5);
-            f.ywidth = p.getFloat("ywidth", 0.5);
-        } else if (type == "gaussian") {
-            f = FilterSpec{};
-            f.type = FilterType::Gaussian;
-            f.xwidth = p.getFloat("xwidth", 2);
-            f.ywidth = p.getFloat("ywidth", 2);
-            f.alpha = p.getFloat("alpha", 2);
-            if (!(f.alpha > 0)) p.fail("alpha must be positive");
+        IntegratorSpec& spec = scene_.integrator;
+        if (type == "directlighting") {
+            spec.type = IntegratorType::DirectLighting;
+        } else if (type == "whitted") {
+            spec.type = IntegratorType::Whitted;
         } else {
-            p.fail("pixel filter \"" + type + "\" is not supported (box, gaussian)");
+            spec.type = IntegratorType::Path;
+            // Same converged picture without media; only the noise differs.
+            if (type != "path")
+                warn(where, "integrator \"" + type + "\" rendered by the path tracer (same picture in the limit, other noise)");
         }
+        spec.maxDepth = p.getInt("maxdepth", 5);
+        if (spec.maxDepth < 0 || spec.maxDepth > 1000) p.fail("maxdepth must lie in [0, 1000]");
+        p.checkAllUsed(scene_.warnings, {"rrthreshold", "lightsamplestrategy", "strategy", "pixelbounds", "visualizestrategies",
+                                         "visualizeweights", "bootstrapsamples", "chains", "mutationsperpixel",
+                                         "largestepprobability", "sigma", "iterations", "photonsperiteration", "radius",
+                                         "imagewritefrequency", "samples", "maxdistance", "cossample", "regularize"});
+    }
+
+    void filter(SourceLocation& where, int) {
+        const std::string type = typeName(where, "a filter type");
+        const ParamSet p = params(where);
+        // pbrt-v3's defaults: box 0.5, gaussian/mitchell/triangle 2, sinc 4 pixels.
+        static const std::map<std::string, std::pair<FilterType, double>> kFilters = {
+            {"box", {FilterType::Box, 0.5}},         {"gaussian", {FilterType::Gaussian, 2}},
+            {"triangle", {FilterType::Triangle, 2}}, {"mitchell", {FilterType::Mitchell, 2}},
+            {"sinc", {FilterType::Sinc, 4}}};
+        const auto it = kFilters.find(type);
+        if (it == kFilters.end()) p.fail("pixel filter \"" + type + "\" is not supported (box, gaussian, triangle, mitchell, sinc)");
+        FilterSpec f;
+        f.type = it->second.first;
+        f.xwidth = p.getFloat("xwidth", it->second.second);
+        f.ywidth = p.getFloat("ywidth", it->second.second);
+        f.alpha = p.getFloat("alpha", 2);
+        f.B = p.getFloat("B", 1.0 / 3);
+        f.C = p.getFloat("C", 1.0 / 3);
+        f.tau = p.getFloat("tau", 3);
+        if (!(f.alpha > 0)) p.fail("alpha must be positive");
+        if (!(f.tau > 0)) p.fail("tau must be positive");
         if (!(f.xwidth > 0 && f.xwidth <= 16 && f.ywidth > 0 && f.ywidth <= 16)) p.fail("filter widths must lie in (0, 16] pixels");
+        scene_.filter = f;
         p.checkAllUsed(scene_.warnings);
+    }
+
+    // --- the world ----------------------------------------------------------------------------
+    void material(SourceLocation& where, int) {
+        const std::string type = typeName(where, "a material type");
+        g_.material = makeMaterial(type, params(where), textures_, scene_.warnings);
+    }
+    void makeNamedMaterial(SourceLocation& where, int) {
+        const std::string n = typeName(where, "a material name");
+        const ParamSet p = params(where);
+        namedMaterials_[n] = makeMaterial(p.getString("type", ""), p, textures_, scene_.warnings);
+    }
+    void namedMaterial(SourceLocation& where, int) {
+        const std::string n = quoted(where, "a material name");
+        auto it = namedMaterials_.find(n);
+        if (it == namedMaterials_.end()) sceneFail(where, "unknown material \"" + n + "\"");
+        g_.material = it->second;
+    }
+    void textureDirective(SourceLocation& where, int) { texture(where); }
+    void lightSource(SourceLocation& where, int) {
+        const std::string type = typeName(where, "a light type");
+        scene_.lights.push_back(makeLight(type, params(where), g_.ctm, scene_.warnings));
+        warnIfMoving(where);
+    }
+    // pbrt-v3 accepts "area" as another name for "diffuse".
+    void areaLightSource(SourceLocation& where, int) {
+        const std::string type = typeName(where, "an area light type");
+        if (type != "diffuse" && type != "area") sceneFail(where, "area light \"" + type + "\" is not supported (diffuse)");
+        const ParamSet p = params(where);
+        g_.area = AreaEmission{p.getRgb("scale", {1, 1, 1}) * p.getRgb("L", {1, 1, 1}), p.getBool("twosided", false)};
+        p.checkAllUsed(scene_.warnings, {"nsamples", "samples"});
+    }
+    void shapeDirective(SourceLocation& where, int) {
+        shape(where);
+        warnIfMoving(where);
     }
 
     void texture(SourceLocation& where) {
@@ -396,12 +422,9 @@ private:
         if (kind != "spectrum" && kind != "float" && kind != "color" && kind != "rgb")
             sceneFail(where, "texture type \"" + kind + "\" must be spectrum or float");
         const ParamSet p = params(where);
-        textures_[n] = makeTexture(cls, p, textures_,
-                                   [&](const std::string& file, const SourceLocation& at) {
-                                       return resolveScenePath(scene_, file, at);
-                                   },
-                                   scene_.warnings);
+        textures_[n] = makeTexture(cls, p, textures_, resolver(), scene_.warnings);
     }
+
 
     void shape(SourceLocation& where) {
         const std::string type = quoted(where, "a shape type");
@@ -462,16 +485,17 @@ private:
         p.checkAllUsed(scene_.warnings);
     }
 
+
     SceneDescription& scene_;
+    SceneParseOptions options_;
     GraphicsState g_;
+    bool activeStart_ = true, activeEnd_ = true;
     std::vector<StackEntry> stack_;
-    std::map<std::string, Transform> namedCoordinates_;
+    std::map<std::string, TransformPair> namedCoordinates_;
     std::map<std::string, std::shared_ptr<const Material>> namedMaterials_;
     TextureMap textures_;
     bool worldBegun_ = false, worldEnded_ = false;
-    std::vector<std::string> file_;
-    std::vector<std::vector<Token>> tokens_;
-    std::vector<std::size_t> pos_;
+    std::vector<TokenCursor> files_;  // the file being read and those that Include it
 };
 
 }  // namespace
@@ -484,7 +508,7 @@ SceneDescription parseSceneFile(const std::string& path, const SceneParseOptions
     scene.rootDir = fs::path(scene.file).parent_path().string();
     scene.film.where = {scene.file, 0, "Film (defaults)"};
     scene.camera.params = ParamSet({scene.file, 0, "Camera (default perspective)"}, {});
-    Parser parser(scene);
+    Parser parser(scene, options);
     parser.parseFile(scene.file, 0);
     parser.finish();
     return scene;
