@@ -4,6 +4,7 @@
 
 #include "LensTable.h"
 #include "OpticsError.h"
+#include "OrthographicCamera.h"
 #include "PerspectiveCamera.h"
 #include "RealisticCamera.h"
 
@@ -74,6 +75,21 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     }
 }
 
+std::unique_ptr<Camera> makeOrthographic(const SceneDescription& scene, int width, int height) {
+    const ParamSet& p = scene.camera.params;
+    OrthographicParams o;
+    o.screen = ScreenWindow::forImage(width, height);
+    if (p.has("screenwindow")) {
+        const std::vector<double> w = p.getFloats("screenwindow");
+        if (w.size() != 4 || !(w[0] < w[1] && w[2] < w[3])) p.fail("screenwindow needs x0 < x1, y0 < y1");
+        o.screen = {w[0], w[1], w[2], w[3]};
+    }
+    o.lensRadius = p.getFloat("lensradius", 0);
+    o.focalDistance = p.getFloat("focaldistance", 1e6);
+    if (o.lensRadius < 0 || !(o.focalDistance > 0)) p.fail("lensradius must be >= 0 and focaldistance > 0");
+    return std::make_unique<OrthographicCamera>(o, scene.camera.cameraToWorld, width, height);
+}
+
 }  // namespace
 
 std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverrides& o, int width, int height,
@@ -83,6 +99,11 @@ std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverride
     if (o.lensFile || o.fstop || o.focalDistance || o.filmDiagonal || o.mode)
         throw SceneError(scene.file + ": the lens overrides need a Camera \"realistic\"; this scene has a " +
                          scene.camera.type + " camera");
+    if (scene.camera.type == "orthographic") {
+        auto camera = makeOrthographic(scene, width, height);
+        p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose", "frameaspectratio"});
+        return camera;
+    }
     PerspectiveParams pp;
     const double fov = p.getFloat("fov", 90);
     if (!(fov > 0 && fov < 180)) p.fail("fov must lie in (0, 180) degrees");

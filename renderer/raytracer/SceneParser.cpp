@@ -1,6 +1,7 @@
 // pbrt-v3 scene syntax. Like pbrt-v3, an unknown or unused parameter is a warning naming its file
 // and line; a feature lenslab cannot render is an error naming it where the picture would be wrong
 // in a way the user must know, and a warning where a faithful substitute renders instead.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -153,6 +154,10 @@ private:
             {"Film", {&Parser::film, Phase::Options}},
             {"Sampler", {&Parser::sampler, Phase::Options}},
             {"Integrator", {&Parser::integrator, Phase::Options}},
+            {"SurfaceIntegrator", {&Parser::integrator, Phase::Options}},  // pbrt-v2's name
+            {"VolumeIntegrator", {&Parser::volumeIntegrator, Phase::Options}},
+            {"Renderer", {&Parser::renderer, Phase::Options}},
+            {"Volume", {&Parser::volume, Phase::World}},
             {"PixelFilter", {&Parser::filter, Phase::Options}},
             {"Accelerator", {&Parser::accelerator, Phase::Options}},
             {"MakeNamedMedium", {&Parser::medium, Phase::Anywhere}},
@@ -268,8 +273,8 @@ private:
     // --- rendering options ------------------------------------------------------------------
     void camera(SourceLocation& where, int) {
         const std::string type = typeName(where, "a camera type");
-        if (type != "perspective" && type != "realistic")
-            sceneFail(where, "camera \"" + type + "\" is not supported (perspective, realistic)");
+        if (type != "perspective" && type != "realistic" && type != "orthographic")
+            sceneFail(where, "camera \"" + type + "\" is not supported (perspective, orthographic, realistic)");
         scene_.camera.type = type;
         scene_.camera.params = params(where);
         scene_.camera.cameraToWorld = inverse(g_.ctm);
@@ -336,15 +341,22 @@ private:
         const std::string type = typeName(where, "an integrator type");
         const ParamSet p = params(where);
         IntegratorSpec& spec = scene_.integrator;
+        // Global-illumination methods of pbrt-v3 and pbrt-v2 converge to the path tracer's picture
+        // (media aside); the others compute something else and are refused.
+        static const char* kGlobalIllumination[] = {"bdpt", "mlt", "sppm", "volpath", "photonmap", "exphotonmap",
+                                                    "irradiancecache", "igi", "dipolesubsurface"};
         if (type == "directlighting") {
             spec.type = IntegratorType::DirectLighting;
         } else if (type == "whitted") {
             spec.type = IntegratorType::Whitted;
-        } else {
+        } else if (type == "path") {
             spec.type = IntegratorType::Path;
-            // Same converged picture without media; only the noise differs.
-            if (type != "path")
-                warn(where, "integrator \"" + type + "\" rendered by the path tracer (same picture in the limit, other noise)");
+        } else if (std::find(std::begin(kGlobalIllumination), std::end(kGlobalIllumination), type) != std::end(kGlobalIllumination)) {
+            spec.type = IntegratorType::Path;
+            warn(where, "integrator \"" + type + "\" rendered by the path tracer (same picture in the limit, other noise)");
+        } else {
+            p.fail("integrator \"" + type + "\" is not supported (path, directlighting, whitted; bdpt, mlt, sppm, volpath "
+                   "and pbrt-v2's photonmap, irradiancecache, igi render as path)");
         }
         spec.maxDepth = p.getInt("maxdepth", 5);
         if (spec.maxDepth < 0 || spec.maxDepth > 1000) p.fail("maxdepth must lie in [0, 1000]");
@@ -352,6 +364,24 @@ private:
                                          "visualizeweights", "bootstrapsamples", "chains", "mutationsperpixel",
                                          "largestepprobability", "sigma", "iterations", "photonsperiteration", "radius",
                                          "imagewritefrequency", "samples", "maxdistance", "cossample", "regularize"});
+    }
+
+    // pbrt-v2: without media a volume integrator changes nothing.
+    void volumeIntegrator(SourceLocation& where, int) {
+        typeName(where, "a volume integrator type");
+        params(where);
+        warn(where, "ignored (no participating media in lenslab scenes)");
+    }
+    // pbrt-v2's Renderer: "sampler" is the ordinary one, "metropolis" converges to the same picture.
+    void renderer(SourceLocation& where, int) {
+        const std::string type = typeName(where, "a renderer type");
+        const ParamSet p = params(where);
+        if (type != "sampler" && type != "metropolis")
+            p.fail("renderer \"" + type + "\" is not supported (sampler; metropolis renders as the path tracer)");
+        if (type == "metropolis") warn(where, "rendered by the path tracer (same picture in the limit, other noise)");
+    }
+    void volume(SourceLocation& where, int) {
+        sceneFail(where, "participating media (Volume \"" + quoted(where, "a volume type") + "\") are not supported: the picture would lack the medium");
     }
 
     void filter(SourceLocation& where, int) {

@@ -162,3 +162,28 @@ TEST(SceneParameters, LoadingReportsProgressToTheEnd) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// Orthographic: an emitting ball of radius 0.5 spans half of a [-1, 1] screen window at any distance.
+TEST(OrthographicCamera, SilhouetteWidthDoesNotDependOnDistance) {
+    test::TempDir dir;
+    for (const char* distance : {"5", "50"}) {
+        const std::string p = dir.write("o.pbrt", std::string("LookAt 0 0 0  0 0 1  0 1 0\n"
+                                                              "Camera \"orthographic\" \"float screenwindow\" [-1 1 -1 1]\n"
+                                                              "Film \"image\" \"integer xresolution\" 32 \"integer yresolution\" 32\n"
+                                                              "WorldBegin\nAttributeBegin\nTranslate 0 0 ") + distance +
+                                                      "\nAreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
+                                                      "Shape \"sphere\" \"float radius\" 0.5\nAttributeEnd\nWorldEnd\n");
+        const RenderOutput out = test::render(p, 32, 32, 16);
+        int lit = 0;
+        for (int x = 0; x < 32; ++x) lit += test::lum(out.image, x, 16) > 0.5f;
+        EXPECT_NEAR(lit, 16, 1) << "distance " << distance;
+        EXPECT_NEAR(test::lum(out.image, 16, 16), 1.0f, 1e-4);
+        EXPECT_NEAR(test::lum(out.image, 2, 16), 0.0f, 1e-6);
+    }
+}
+
+}  // namespace
+}  // namespace lenslab
