@@ -29,7 +29,7 @@ public:
     explicit Matte(std::shared_ptr<const Texture> kd) : kd_(std::move(kd)) {}
     Vec3f evaluate(const SurfaceHit& h, Vec3f wo, Vec3f wi) const override {
         if (!sameSide(h, wo, wi)) return {};
-        return kInvPi * std::fabs(dot(wi, h.ns)) * kd_->evaluate(h.u, h.v);
+        return kInvPi * std::fabs(dot(wi, h.ns)) * kd_->evaluate(h);
     }
     float pdf(const SurfaceHit& h, Vec3f wo, Vec3f wi) const override {
         return sameSide(h, wo, wi) ? std::fabs(dot(wi, h.ns)) * kInvPi : 0.0f;
@@ -39,7 +39,7 @@ public:
         s.wi = Frame(n).toWorld(cosineHemisphere(u1, u2));
         s.pdf = pdf(h, wo, s.wi);
         if (!(s.pdf > 0)) return false;
-        s.weight = kd_->evaluate(h.u, h.v);
+        s.weight = kd_->evaluate(h);
         s.specular = false;
         return true;
     }
@@ -61,7 +61,7 @@ public:
         if (lo.z <= 0 || li.z <= 0) return {};
         const Vec3f m = normalize(lo + li);
         const float spec = D(m) * G(lo, li) * fresnelDielectric(dot(li, m), 1.0f, 1.5f) / (4.0f * lo.z);
-        return kInvPi * li.z * kd_->evaluate(h.u, h.v) + spec * ks_->evaluate(h.u, h.v);
+        return kInvPi * li.z * kd_->evaluate(h) + spec * ks_->evaluate(h);
     }
     float pdf(const SurfaceHit& h, Vec3f wo, Vec3f wi) const override {
         if (!sameSide(h, wo, wi)) return 0;
@@ -118,7 +118,7 @@ public:
     float pdf(const SurfaceHit&, Vec3f, Vec3f) const override { return 0; }
     bool sample(const SurfaceHit& h, Vec3f wo, float, float, float, BsdfSample& s) const override {
         s.wi = reflect(wo, facing(h, wo));
-        s.weight = kr_->evaluate(h.u, h.v);
+        s.weight = kr_->evaluate(h);
         s.pdf = 1;
         s.specular = true;
         return sameSide(h, wo, s.wi);
@@ -146,7 +146,7 @@ public:
         s.specular = true;
         if (uLobe < F) {
             s.wi = reflect(wo, n);
-            s.weight = kr_->evaluate(h.u, h.v);
+            s.weight = kr_->evaluate(h);
             return true;
         }
         const float ratio = etaI / etaT;
@@ -154,7 +154,7 @@ public:
         if (sin2T >= 1.0f) return false;
         const float cosT = std::sqrt(1.0f - sin2T);
         s.wi = normalize(-ratio * wo + (ratio * cosI - cosT) * n);
-        s.weight = ratio * ratio * kt_->evaluate(h.u, h.v);  // radiance is compressed entering denser glass
+        s.weight = ratio * ratio * kt_->evaluate(h);  // radiance is compressed entering denser glass
         return true;
     }
     bool isSpecular() const override { return true; }

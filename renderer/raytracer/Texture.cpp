@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "Material.h"
 #include "PngCodec.h"
 
 namespace lenslab {
@@ -13,7 +14,7 @@ namespace {
 class ConstantTexture : public Texture {
 public:
     explicit ConstantTexture(Vec3f value) : value_(value) {}
-    Vec3f evaluate(float, float) const override { return value_; }
+    Vec3f evaluate(const SurfaceHit&) const override { return value_; }
 
 private:
     Vec3f value_;
@@ -31,10 +32,10 @@ class CheckerboardTexture : public Texture {
 public:
     CheckerboardTexture(UvMapping map, std::shared_ptr<const Texture> a, std::shared_ptr<const Texture> b)
         : map_(map), a_(std::move(a)), b_(std::move(b)) {}
-    Vec3f evaluate(float u, float v) const override {
-        const float s = map_.uscale * u + map_.udelta, t = map_.vscale * v + map_.vdelta;
+    Vec3f evaluate(const SurfaceHit& h) const override {
+        const float s = map_.uscale * h.u + map_.udelta, t = map_.vscale * h.v + map_.vdelta;
         const long parity = static_cast<long>(std::floor(s)) + static_cast<long>(std::floor(t));
-        return (parity & 1) == 0 ? a_->evaluate(u, v) : b_->evaluate(u, v);
+        return (parity & 1) == 0 ? a_->evaluate(h) : b_->evaluate(h);
     }
 
 private:
@@ -49,9 +50,9 @@ class ImageTexture : public Texture {
 public:
     ImageTexture(UvMapping map, int w, int h, std::vector<Vec3f> texels, float scale)
         : map_(map), w_(w), h_(h), texels_(std::move(texels)), scale_(scale) {}
-    Vec3f evaluate(float u, float v) const override {
-        const float s = (map_.uscale * u + map_.udelta) * w_ - 0.5f;
-        const float t = (1.0f - (map_.vscale * v + map_.vdelta)) * h_ - 0.5f;
+    Vec3f evaluate(const SurfaceHit& h) const override {
+        const float s = (map_.uscale * h.u + map_.udelta) * w_ - 0.5f;
+        const float t = (1.0f - (map_.vscale * h.v + map_.vdelta)) * h_ - 0.5f;
         const float fs = std::floor(s), ft = std::floor(t);
         const float ds = s - fs, dt = t - ft;
         const int x = static_cast<int>(fs), y = static_cast<int>(ft);

@@ -1,5 +1,6 @@
 #pragma once
-// Textures: colours as a function of the surface (u, v) coordinates.
+// Textures: colours (or numbers) as a function of the surface point: its (u, v) coordinates, or
+// its position for 3D textures.
 #include <functional>
 #include <map>
 #include <memory>
@@ -11,10 +12,13 @@
 
 namespace lenslab {
 
+struct SurfaceHit;
+
+// A texture's value at a surface point. Float textures return their value in all three channels.
 class Texture {
 public:
     virtual ~Texture() = default;
-    virtual Vec3f evaluate(float u, float v) const = 0;
+    virtual Vec3f evaluate(const SurfaceHit& hit) const = 0;
 };
 
 using TextureMap = std::map<std::string, std::shared_ptr<const Texture>>;
