@@ -5,4 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
-exec build/server/lenslab serve --host 127.0.0.1 --port "${PORT:-8080}" --data "${LENSLAB_DATA:-data}" "$@"
+exec build/cli/lenslab serve --host 127.0.0.1 --port "${PORT:-8080}" --data "${LENSLAB_DATA:-data}" "$@"

@@ -9,7 +9,7 @@ build=${1:-build}
 scene=${2:-scenes/pbrt-v3-dgauss50.pbrt}
 spp=${3:-16}
 repeats=${REPEATS:-3}
-lenslab="$build/server/lenslab"
+lenslab="$build/cli/lenslab"
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 

@@ -85,7 +85,7 @@ stop centre, found by bisection on its height at the front vertex) meets the F&p
 rectilinear f tan&theta; (<code>optics/Distortion.cpp</code>).</p>
 
 <h3>This page</h3>
-<p><code>renderer/report/</code> builds it: <code>BuildReport.cpp</code> runs every item through a cache keyed by a hash
+<p><code>report/</code> builds it: <code>BuildReport.cpp</code> runs every item through a cache keyed by a hash
 of its inputs (lens and scene files, parameters, lenslab version), so an unchanged diagram or render is
 not made again; the plots are inline SVG written by <code>SvgPlot.cpp</code>.</p>
 </section>

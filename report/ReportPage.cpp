@@ -341,7 +341,7 @@ std::string reportHtml(const ReportContent& c) {
         out << "</ul>\n</section>\n";
     }
     out << "</main>\n<footer>\n<p>lenslab " << escapeMarkup(c.version)
-        << ". The source: optics/ (lens physics), renderer/ (diagrams, ray tracer), renderer/report/ (this page).</p>\n"
+        << ". The source: optics/ (lens physics), renderer/ (diagrams, ray tracer), report/ (this page).</p>\n"
            "</footer>\n</body>\n</html>\n";
     return out.str();
 }
