@@ -66,7 +66,7 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings)
         camera_ = makeCamera(scene_, settings.camera, width_, height_, filter_.radius());
         geometry_ = std::make_unique<SceneGeometry>(scene_);
     });
-    integrator_ = std::make_unique<PathIntegrator>(*geometry_, scene_.integrator);
+    integrator_ = makeIntegrator(*geometry_, scene_.integrator);
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
@@ -77,6 +77,7 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
     TileCounters local;
     std::vector<CameraSample> samples(spp_);
     std::vector<CameraRay> rays(spp_);
+    std::vector<float> filterWeights(spp_);
     for (int py = rect.y0; py < rect.y1; ++py) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             counters += local;
@@ -89,7 +90,7 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
             for (int k = 0; k < 4; ++k) scramble[k] = std::uint32_t(mix64(pixelSeed + k));
             for (int s = 0; s < spp_; ++s) {
                 float dx, dy;
-                filter_.sample(sobolSample(s, 0, scramble[0]), sobolSample(s, 1, scramble[1]), dx, dy);
+                filterWeights[s] = filter_.sample(sobolSample(s, 0, scramble[0]), sobolSample(s, 1, scramble[1]), dx, dy);
                 samples[s] = {px + 0.5 + dx, py + 0.5 + dy, sobolSample(s, 2, scramble[2]), sobolSample(s, 3, scramble[3])};
             }
             camera_->generateRays(samples.data(), samples.size(), rays.data());
@@ -101,13 +102,14 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                     continue;
                 }
                 Pcg32 rng(hashCombine(pixelSeed, std::uint64_t(s)));
-                sum += ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced);
+                sum += filterWeights[s] * ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced);
             }
             local.cameraRays += spp_;
             float* out = row + std::size_t(px - rect.x0) * 3;
-            out[0] = sum.x / spp_;
-            out[1] = sum.y / spp_;
-            out[2] = sum.z / spp_;
+            // A filter's negative lobes can push a pixel below zero; pbrt-v3 clamps it there too.
+            out[0] = std::max(0.0f, sum.x / spp_);
+            out[1] = std::max(0.0f, sum.y / spp_);
+            out[2] = std::max(0.0f, sum.z / spp_);
         }
     }
     counters += local;

@@ -304,7 +304,11 @@ private:
             requireWorld(where, true);
             const std::string type = quoted(where, "a light type");
             where.directive += " \"" + type + "\"";
-            scene_.lights.push_back(makeLight(type, params(where), g_.ctm, scene_.warnings));
+            scene_.lights.push_back(makeLight(type, params(where), g_.ctm,
+                                              [&](const std::string& file, const SourceLocation& at) {
+                                                  return resolveScenePath(scene_, file, at);
+                                              },
+                                              scene_.warnings));
         } else if (name == "AreaLightSource") {
             requireWorld(where, true);
             const std::string type = quoted(where, "an area light type");
