@@ -11,6 +11,9 @@ namespace {
 
 float srgbDecode(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
+// Negative or non-finite texels would make radiance and sampling densities meaningless.
+float usable(float v) { return std::isfinite(v) && v > 0 ? v : 0.0f; }
+
 bool isIntegerFormat(OIIO::TypeDesc t) {
     return t.basetype != OIIO::TypeDesc::FLOAT && t.basetype != OIIO::TypeDesc::HALF &&
            t.basetype != OIIO::TypeDesc::DOUBLE;
@@ -54,10 +57,7 @@ LinearImage readLinearImage(const std::string& path, const std::string& name, co
         const float* p = &raw[i * channels];
         Vec3f c = channels >= 3 ? Vec3f{p[0], p[1], p[2]} : Vec3f{p[0], p[0], p[0]};
         if (srgb) c = {srgbDecode(c.x), srgbDecode(c.y), srgbDecode(c.z)};
-        // Negative or non-finite texels would make radiance and sampling densities meaningless.
-        c = {std::isfinite(c.x) ? std::max(c.x, 0.0f) : 0.0f, std::isfinite(c.y) ? std::max(c.y, 0.0f) : 0.0f,
-             std::isfinite(c.z) ? std::max(c.z, 0.0f) : 0.0f};
-        image.texels[i] = c;
+        image.texels[i] = {usable(c.x), usable(c.y), usable(c.z)};
     }
     return image;
 }

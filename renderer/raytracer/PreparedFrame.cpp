@@ -94,22 +94,24 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                 samples[s] = {px + 0.5 + dx, py + 0.5 + dy, sobolSample(s, 2, scramble[2]), sobolSample(s, 3, scramble[3])};
             }
             camera_->generateRays(samples.data(), samples.size(), rays.data());
-            Vec3f sum{};
+            FilteredPixel pixel;
             for (int s = 0; s < spp_; ++s) {
                 const CameraRay& ray = rays[s];
                 if (!(ray.weight > 0)) {
                     ++local.blockedCameraRays;
+                    pixel.add(filterWeights[s], {});
                     continue;
                 }
                 Pcg32 rng(hashCombine(pixelSeed, std::uint64_t(s)));
-                sum += filterWeights[s] * ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced);
+                pixel.add(filterWeights[s], ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced));
             }
             local.cameraRays += spp_;
             float* out = row + std::size_t(px - rect.x0) * 3;
             // A filter's negative lobes can push a pixel below zero; pbrt-v3 clamps it there too.
-            out[0] = std::max(0.0f, sum.x / spp_);
-            out[1] = std::max(0.0f, sum.y / spp_);
-            out[2] = std::max(0.0f, sum.z / spp_);
+            const Vec3f v = pixel.value();
+            out[0] = std::max(0.0f, v.x);
+            out[1] = std::max(0.0f, v.y);
+            out[2] = std::max(0.0f, v.z);
         }
     }
     counters += local;

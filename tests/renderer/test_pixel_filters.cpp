@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "PixelFilter.h"
+#include "Sampling.h"
 
 namespace lenslab {
 namespace {
@@ -121,6 +122,36 @@ TEST(PixelFilters, MitchellWeightsAreNegativeInItsOuterLobes) {
     EXPECT_NEAR(dx, 0, 0.02);
     EXPECT_LT(filter.sample(0.01f, 0.5f, dx, dy), 0);
     EXPECT_LT(dx, -1.0);
+}
+
+// Pixels of 16 samples each from the filter: a flat field comes out exact in every pixel, and a
+// step edge converges to the filtered value (the bias shrinks as 1 / samples).
+TEST(PixelFilters, PixelsOfAFlatFieldAreExactAndEdgesConverge) {
+    for (int k = 0; k < 5; ++k) {
+        const FilterSpec& s = kFilters[k];
+        const PixelFilter filter(s);
+        const double w = s.xwidth, edge = 0.3 * w;  // radiance 1 for offsets x > edge, else 0
+        const double filtered = integral(s, w, edge, w, false) / integral(s, w, -w, w, false);
+        const double absolute = integral(s, w, edge, w, true) / integral(s, w, -w, w, true);
+        const int pixels = 20000, spp = 16;
+        Pcg32 rng(3);
+        double edgeSum = 0;
+        for (int p = 0; p < pixels; ++p) {
+            FilteredPixel flat, step;
+            for (int i = 0; i < spp; ++i) {
+                float dx, dy;
+                const float weight = filter.sample(rng.uniform(), rng.uniform(), dx, dy);
+                flat.add(weight, {0.25f, 0.5f, 2});
+                step.add(weight, dx > edge ? Vec3f{1, 1, 1} : Vec3f{});
+            }
+            ASSERT_NEAR(flat.value().x, 0.25f, 1e-6f) << kNames[k];
+            ASSERT_NEAR(flat.value().z, 2.0f, 1e-5f) << kNames[k];
+            edgeSum += step.value().x;
+        }
+        const double bias = (absolute - filtered) / spp;
+        EXPECT_NEAR(edgeSum / pixels, filtered + bias, 0.01) << kNames[k];
+        EXPECT_LT(std::fabs(bias), 0.01) << kNames[k];
+    }
 }
 
 }  // namespace
