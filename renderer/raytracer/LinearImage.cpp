@@ -43,7 +43,7 @@ LinearImage readLinearImage(const std::string& path, const std::string& name, co
     if (!in) sceneFail(where, "cannot read image '" + name + "' (" + OIIO::geterror() + ")");
     const OIIO::ImageSpec& spec = in->spec();
     const int channels = spec.nchannels;
-    if (spec.width < 1 || spec.height < 1 || channels < 1 || std::int64_t(spec.width) * spec.height > (1LL << 28))
+    if (spec.width < 1 || spec.height < 1 || channels < 1 || std::int64_t(spec.width) * spec.height > (1LL << 26))
         sceneFail(where, "image '" + name + "' has no pixels or is too large");
     std::vector<float> raw(std::size_t(spec.width) * spec.height * channels);
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raw.data()))

@@ -180,6 +180,14 @@ TEST(EnvironmentMap, MissingOrUnreadableMapNamesTheFile) {
     EXPECT_NE(e.find("plane.pbrt:5"), std::string::npos) << e;
 }
 
+TEST(Lights, UnknownTypeAndBadConeAreNamed) {
+    test::TempDir dir;
+    const std::string laser = planeScene(dir, "LightSource \"laser\"");
+    EXPECT_NE(errorOf(laser).find("light \"laser\" is not supported"), std::string::npos) << errorOf(laser);
+    const std::string cone = planeScene(dir, "LightSource \"spot\" \"float coneangle\" 10 \"float conedelta\" 20");
+    EXPECT_NE(errorOf(cone).find("conedelta"), std::string::npos) << errorOf(cone);
+}
+
 TEST(PointLight, IrradianceIsIntensityTimesCosineOverDistanceSquared) {
     test::TempDir dir;
     const std::string scene = planeScene(dir, "AttributeBegin\nTranslate 0.5 0 0\n"

@@ -133,7 +133,6 @@ TEST(SceneErrors, UnsupportedFeaturesAreNamedNeverIgnored) {
     check("Shape \"plymesh\" \"string filename\" \"x.ply\"", "plymesh is not supported");
     check("Material \"metal\"", "material \"metal\" is not supported");
     check("Material \"matte\" \"float sigmaa\" 2", "unsupported parameter \"float sigmaa\"");
-    check("LightSource \"laser\"", "light \"laser\" is not supported");
     check("ObjectBegin \"x\"", "unsupported directive 'ObjectBegin'");
     check("Shape \"sphere\" \"spectrum Kd\" [300 .3 800 .6]", "spectrum values are not supported");
     check("AttributeBegin\nShape \"sphere\"", "not closed by AttributeEnd");
