@@ -11,7 +11,6 @@ class PiecewiseConstant1D {
 public:
     // f >= 0 per bin; all zero (or empty input) samples uniformly.
     explicit PiecewiseConstant1D(std::vector<float> f);
-    std::size_t size() const { return f_.size(); }
     float integral() const { return integral_; }  // of f over [0, 1)
     // A point in [0, 1) with density f(x) / integral; pdf receives that density, bin the bin.
     float sampleContinuous(float u, float& pdf, std::size_t& bin) const;
@@ -22,7 +21,7 @@ public:
 
 private:
     std::size_t findBin(float u) const;
-    std::vector<float> f_, cdf_;  // cdf_ has size() + 1 entries, 0 to 1
+    std::vector<float> f_, cdf_;  // cdf_ has one entry more than f_, 0 to 1
     float integral_ = 0;
 };
 
