@@ -33,15 +33,18 @@ public:
     // from the environment along -w for an escaped ray (at == nullptr).
     virtual Vec3f emitted(const SurfaceHit* at, Vec3f w) const = 0;
     virtual bool isInfinite() const { return false; }
+    // Lights at a point or from a single direction: no scattered ray can reach them.
+    virtual bool isDelta() const { return false; }
     // Emitted power (RGB, W), for choosing lights in proportion to it. Distant and infinite lights
     // need the scene's bounding sphere first.
     virtual Vec3f power() const = 0;
     virtual void setSceneBounds(Vec3f /*centre*/, float /*radius*/) {}
 };
 
-// LightSource "TYPE" params, with the current transform: point, spot, distant, infinite.
+// LightSource "TYPE" params, with the current transform: point, spot, distant, infinite (constant or
+// with an environment map), goniometric, projection. `resolve` finds the image files they name.
 std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& params, const Transform& lightToWorld,
-                                 std::vector<std::string>& warnings);
+                                 const PathResolver& resolve, std::vector<std::string>& warnings);
 
 // Diffuse area emitters (AreaLightSource "diffuse"): radiance L leaving the side the normal
 // points to, or both sides.

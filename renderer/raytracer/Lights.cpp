@@ -1,6 +1,9 @@
 #include <cmath>
+#include <optional>
 
+#include "ImageLights.h"
 #include "Light.h"
+#include "PointLight.h"
 #include "Sampling.h"
 
 namespace lenslab {
@@ -9,47 +12,24 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-class PointLight : public Light {
-public:
-    PointLight(Vec3f position, Vec3f intensity) : position_(position), intensity_(intensity) {}
-    bool sample(Vec3f p, float, float, LightSample& s) const override {
-        const Vec3f d = position_ - p;
-        s.distance = length(d);
-        if (!(s.distance > 0)) return false;
-        s.wi = d / s.distance;
-        s.radiance = intensity_ / (s.distance * s.distance);
-        s.pdf = 1;
-        s.delta = true;
-        return true;
-    }
-    float pdf(Vec3f, Vec3f, const SurfaceHit*) const override { return 0; }
-    Vec3f emitted(const SurfaceHit*, Vec3f) const override { return {}; }
-    Vec3f power() const override { return 4.0f * float(M_PI) * intensity_; }
-
-protected:
-    Vec3f position_, intensity_;
-};
-
 // pbrt-v3's spot: full intensity inside coneangle - conedelta, a smooth falloff to zero at coneangle.
 class SpotLight : public PointLight {
 public:
     SpotLight(Vec3f position, Vec3f axis, Vec3f intensity, float coneAngle, float coneDelta)
         : PointLight(position, intensity), axis_(axis), cosTotal_(std::cos(coneAngle * float(M_PI) / 180)),
           cosFalloff_(std::cos((coneAngle - coneDelta) * float(M_PI) / 180)) {}
-    bool sample(Vec3f p, float u1, float u2, LightSample& s) const override {
-        if (!PointLight::sample(p, u1, u2, s)) return false;
-        const float c = dot(-s.wi, axis_);
-        float falloff = 1;
-        if (c < cosTotal_) falloff = 0;
-        else if (c < cosFalloff_) {
-            const float d = (c - cosTotal_) / (cosFalloff_ - cosTotal_);
-            falloff = (d * d) * (d * d);
-        }
-        s.radiance = falloff * s.radiance;
-        return falloff > 0;
-    }
     Vec3f power() const override {
         return 2.0f * float(M_PI) * (1.0f - 0.5f * (cosFalloff_ + cosTotal_)) * intensity_;
+    }
+
+protected:
+    Vec3f directionalScale(Vec3f w) const override {
+        const float c = dot(w, axis_);
+        if (c < cosTotal_) return {};
+        if (c >= cosFalloff_) return {1, 1, 1};
+        const float d = (c - cosTotal_) / (cosFalloff_ - cosTotal_);
+        const float falloff = (d * d) * (d * d);
+        return {falloff, falloff, falloff};
     }
 
 private:
@@ -70,6 +50,7 @@ public:
     }
     float pdf(Vec3f, Vec3f, const SurfaceHit*) const override { return 0; }
     Vec3f emitted(const SurfaceHit*, Vec3f) const override { return {}; }
+    bool isDelta() const override { return true; }
     Vec3f power() const override { return float(M_PI) * radius_ * radius_ * radiance_; }
     void setSceneBounds(Vec3f, float radius) override { radius_ = radius; }
 
@@ -78,6 +59,7 @@ private:
     float radius_ = 1;
 };
 
+// The constant "infinite" light (no map): uniform radiance from every direction, sampled uniformly.
 class InfiniteLight : public Light {
 public:
     explicit InfiniteLight(Vec3f radiance) : radiance_(radiance) {}
@@ -92,7 +74,7 @@ public:
     float pdf(Vec3f, Vec3f, const SurfaceHit*) const override { return 1.0f / (4.0f * float(M_PI)); }
     Vec3f emitted(const SurfaceHit*, Vec3f) const override { return radiance_; }
     bool isInfinite() const override { return true; }
-    Vec3f power() const override { return 4.0f * float(M_PI) * float(M_PI) * radius_ * radius_ * radiance_; }
+    Vec3f power() const override { return float(M_PI) * radius_ * radius_ * radiance_; }  // as pbrt-v3
     void setSceneBounds(Vec3f, float radius) override { radius_ = radius; }
 
 private:
@@ -179,8 +161,13 @@ private:
 }  // namespace
 
 std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& p, const Transform& toWorld,
-                                 std::vector<std::string>& warnings) {
+                                 const PathResolver& resolve, std::vector<std::string>& warnings) {
     const Vec3f scale = p.getRgb("scale", {1, 1, 1});
+    const auto image = [&]() -> std::optional<LinearImage> {
+        const std::string name = p.getString("mapname", "");
+        if (name.empty()) return std::nullopt;
+        return readLinearImage(resolve(name, p.where()), name, p.where());
+    };
     std::unique_ptr<Light> light;
     if (type == "point") {
         const Vec3f from = transformPoint(toWorld, p.getPoint("from", {0, 0, 0}));
@@ -199,10 +186,21 @@ std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& p, con
         if (!(length(toward) > 0)) p.fail("\"from\" and \"to\" must differ");
         light = std::make_unique<DistantLight>(normalize(toward), scale * p.getRgb("L", {1, 1, 1}));
     } else if (type == "infinite") {
-        if (p.has("mapname")) p.fail("environment maps (\"mapname\") are not supported; use a constant \"rgb L\"");
-        light = std::make_unique<InfiniteLight>(scale * p.getRgb("L", {1, 1, 1}));
+        const Vec3f L = scale * p.getRgb("L", {1, 1, 1});
+        if (std::optional<LinearImage> map = image()) {
+            for (Vec3f& texel : map->texels) texel = L * texel;
+            light = makeEnvironmentLight(std::move(*map), toWorld);
+        } else {
+            light = std::make_unique<InfiniteLight>(L);
+        }
+    } else if (type == "goniometric") {
+        light = makeGoniometricLight(image(), scale * p.getRgb("I", {1, 1, 1}), toWorld);
+    } else if (type == "projection") {
+        const float fov = float(p.getFloat("fov", 45));
+        if (!(fov > 0 && fov < 180)) p.fail("fov must lie in (0, 180) degrees");
+        light = makeProjectionLight(image(), scale * p.getRgb("I", {1, 1, 1}), fov, toWorld);
     } else {
-        p.fail("light \"" + type + "\" is not supported (point, spot, distant, infinite)");
+        p.fail("light \"" + type + "\" is not supported (point, spot, distant, infinite, goniometric, projection)");
     }
     p.checkAllUsed(warnings, {"nsamples", "samples"});
     return light;

@@ -1,27 +1,26 @@
 #pragma once
 // Unidirectional path tracing with next-event estimation: at every diffuse or glossy vertex one
-// light is sampled (uniformly chosen) and combined with the BSDF-sampled continuation by multiple
-// importance sampling (power heuristic). "directlighting" stops after the first such vertex.
-#include <cstdint>
-
-#include "SceneDescription.h"
-#include "SceneGeometry.h"
-#include "Sampling.h"
+// light is sampled (chosen in proportion to its power) and combined with the BSDF-sampled
+// continuation by multiple importance sampling (power heuristic); Russian roulette ends long paths.
+#include "Integrator.h"
+#include "LightSampler.h"
 
 namespace lenslab {
 
-class PathIntegrator {
+class PathIntegrator : public Integrator {
 public:
-    PathIntegrator(const SceneGeometry& geometry, const IntegratorSpec& spec) : geometry_(geometry), spec_(spec) {}
-    // Radiance arriving along the ray (world space). raysTraced counts closest-hit and shadow rays.
-    Vec3f radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const;
+    PathIntegrator(const SceneGeometry& geometry, int maxDepth)
+        : geometry_(geometry), lightSampler_(geometry.lights()), maxDepth_(maxDepth) {}
+    Vec3f radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const override;
 
 private:
-    Vec3f sampleOneLight(const Intersection& it, Vec3f wo, Pcg32& rng, std::uint64_t& raysTraced) const;
+    // The solid-angle pdf with which next-event estimation from `from` picks direction w toward
+    // `light` (meeting it at `at`, or escaping): the light's own pdf times its choice probability.
     float lightPdf(const Light& light, Vec3f from, Vec3f w, const SurfaceHit* at) const;
 
     const SceneGeometry& geometry_;
-    IntegratorSpec spec_;
+    LightSampler lightSampler_;
+    int maxDepth_;
 };
 
 }  // namespace lenslab

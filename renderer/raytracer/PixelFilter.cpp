@@ -6,41 +6,79 @@
 namespace lenslab {
 
 namespace {
-constexpr int kBins = 256;
+
+constexpr int kBins = 512;
+
+double sinc(double x) {
+    const double px = M_PI * x;
+    return std::fabs(x) < 1e-5 ? 1.0 - px * px / 6.0 : std::sin(px) / px;
 }
 
-PixelFilter::Profile PixelFilter::makeProfile(const FilterSpec& spec, double width) {
-    Profile p;
-    p.width = width;
-    if (spec.type == FilterType::Box) return p;
-    // pbrt's Gaussian: exp(-alpha x^2) - exp(-alpha w^2), zero at the edge.
-    const double edge = std::exp(-spec.alpha * width * width);
-    p.cdf.assign(kBins + 1, 0.0f);
-    double sum = 0;
-    std::vector<double> acc(kBins + 1, 0.0);
-    for (int i = 0; i < kBins; ++i) {
-        const double x = -width + (i + 0.5) * 2.0 * width / kBins;
-        sum += std::max(0.0, std::exp(-spec.alpha * x * x) - edge);
-        acc[i + 1] = sum;
+// Mitchell and Netravali's cubic on |x| in [0, 2].
+double mitchell(double x, double B, double C) {
+    x = std::fabs(x);
+    if (x >= 2) return 0;
+    if (x > 1)
+        return ((-B - 6 * C) * x * x * x + (6 * B + 30 * C) * x * x + (-12 * B - 48 * C) * x + (8 * B + 24 * C)) / 6;
+    return ((12 - 9 * B - 6 * C) * x * x * x + (-18 + 12 * B + 6 * C) * x * x + (6 - 2 * B)) / 6;
+}
+
+}  // namespace
+
+double PixelFilter::profile(const FilterSpec& spec, double width, double x) {
+    if (std::fabs(x) > width) return 0;
+    switch (spec.type) {
+        case FilterType::Box:
+            return 1;
+        case FilterType::Gaussian:  // zero at the edge
+            return std::max(0.0, std::exp(-spec.alpha * x * x) - std::exp(-spec.alpha * width * width));
+        case FilterType::Triangle:
+            return width - std::fabs(x);
+        case FilterType::Mitchell:  // the cubic's support [-2, 2] stretched over [-width, width]
+            return mitchell(2 * x / width, spec.B, spec.C);
+        case FilterType::Sinc:  // Lanczos: sinc windowed by a sinc tau times wider
+            return sinc(x) * sinc(x / spec.tau);
     }
-    for (int i = 0; i <= kBins; ++i) p.cdf[i] = float(acc[i] / sum);
-    return p;
+    return 0;
 }
 
-float PixelFilter::Profile::invert(float u) const {
-    if (cdf.empty()) return float((2.0 * u - 1.0) * width);
-    const auto it = std::upper_bound(cdf.begin(), cdf.end(), u);
-    const int i = std::clamp(int(it - cdf.begin()) - 1, 0, kBins - 1);
-    const float span = cdf[i + 1] - cdf[i];
-    const float f = span > 0 ? (u - cdf[i]) / span : 0.5f;
-    return float(-width + (i + f) * 2.0 * width / kBins);
+PixelFilter::Axis PixelFilter::makeAxis(const FilterSpec& spec, double width) {
+    // Each bin's value is the mean of the profile over it (Simpson's rule): the negative lobes are
+    // narrow enough that the bin midpoint alone would misplace their share.
+    std::vector<float> absolute(kBins), sign(kBins);
+    double signedSum = 0, absSum = 0;
+    const double h = 2 * width / kBins;
+    for (int i = 0; i < kBins; ++i) {
+        const double a = -width + i * h;
+        const double mean = (profile(spec, width, a) + 4 * profile(spec, width, a + h / 2) +
+                             profile(spec, width, a + h)) / 6;
+        absolute[i] = float(std::fabs(mean));
+        sign[i] = mean < 0 ? -1.0f : 1.0f;
+        signedSum += mean;
+        absSum += std::fabs(mean);
+    }
+    Axis axis{width, PiecewiseConstant1D(std::move(absolute)), {}};
+    const float norm = signedSum > 0 ? float(absSum / signedSum) : 1.0f;
+    axis.signedWeight.resize(kBins);
+    for (int i = 0; i < kBins; ++i) axis.signedWeight[i] = sign[i] * norm;
+    return axis;
 }
 
-PixelFilter::PixelFilter(const FilterSpec& spec) : x_(makeProfile(spec, spec.xwidth)), y_(makeProfile(spec, spec.ywidth)) {}
+float PixelFilter::Axis::sample(float u, float& weight) const {
+    float pdf;
+    std::size_t bin;
+    const float x = absolute.sampleContinuous(u, pdf, bin);
+    weight = signedWeight[bin];
+    return float((2.0 * x - 1.0) * width);
+}
 
-void PixelFilter::sample(float u1, float u2, float& dx, float& dy) const {
-    dx = x_.invert(u1);
-    dy = y_.invert(u2);
+PixelFilter::PixelFilter(const FilterSpec& spec) : x_(makeAxis(spec, spec.xwidth)), y_(makeAxis(spec, spec.ywidth)) {}
+
+float PixelFilter::sample(float u1, float u2, float& dx, float& dy) const {
+    float wx, wy;
+    dx = x_.sample(u1, wx);
+    dy = y_.sample(u2, wy);
+    return wx * wy;
 }
 
 double PixelFilter::radius() const { return std::max(x_.width, y_.width); }

@@ -73,7 +73,7 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings)
         camera_ = makeCamera(scene_, settings.camera, width_, height_, filter_.radius());
         geometry_ = std::make_unique<SceneGeometry>(scene_);
     });
-    integrator_ = std::make_unique<PathIntegrator>(*geometry_, scene_.integrator);
+    integrator_ = makeIntegrator(*geometry_, scene_.integrator);
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
@@ -84,6 +84,7 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
     TileCounters local;
     std::vector<CameraSample> samples(spp_);
     std::vector<CameraRay> rays(spp_);
+    std::vector<float> filterWeights(spp_);
     for (int py = rect.y0; py < rect.y1; ++py) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             counters += local;
@@ -96,27 +97,30 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
             for (int k = 0; k < 4; ++k) scramble[k] = std::uint32_t(mix64(pixelSeed + k));
             for (int s = 0; s < spp_; ++s) {
                 float dx, dy;
-                filter_.sample(sobolSample(s, 0, scramble[0]), sobolSample(s, 1, scramble[1]), dx, dy);
+                filterWeights[s] = filter_.sample(sobolSample(s, 0, scramble[0]), sobolSample(s, 1, scramble[1]), dx, dy);
                 samples[s] = {px + 0.5 + dx, py + 0.5 + dy, sobolSample(s, 2, scramble[2]), sobolSample(s, 3, scramble[3])};
             }
             camera_->generateRays(samples.data(), samples.size(), rays.data());
-            Vec3f sum{};
+            FilteredPixel pixel;
             for (int s = 0; s < spp_; ++s) {
                 const CameraRay& ray = rays[s];
                 if (!(ray.weight > 0)) {
                     ++local.blockedCameraRays;
+                    pixel.add(filterWeights[s], {});
                     continue;
                 }
                 Pcg32 rng(hashCombine(pixelSeed, std::uint64_t(s)));
-                sum += clampLuminance(ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced),
-                                      scene_.film.maxSampleLuminance);
+                pixel.add(filterWeights[s], clampLuminance(ray.weight * integrator_->radiance(ray.origin, ray.direction, rng,
+                                                                                               local.raysTraced),
+                                                           scene_.film.maxSampleLuminance));
             }
             local.cameraRays += spp_;
             float* out = row + std::size_t(px - rect.x0) * 3;
-            const float scale = float(scene_.film.scale) / float(spp_);
-            out[0] = sum.x * scale;
-            out[1] = sum.y * scale;
-            out[2] = sum.z * scale;
+            // A filter's negative lobes can push a pixel below zero; pbrt-v3 clamps it there too.
+            const Vec3f v = float(scene_.film.scale) * pixel.value();
+            out[0] = std::max(0.0f, v.x);
+            out[1] = std::max(0.0f, v.y);
+            out[2] = std::max(0.0f, v.z);
         }
     }
     counters += local;

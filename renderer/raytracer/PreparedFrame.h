@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "Camera.h"
-#include "PathIntegrator.h"
+#include "Integrator.h"
 #include "PixelFilter.h"
 #include "Render.h"
 #include "SceneDescription.h"
@@ -72,7 +72,7 @@ private:
     PixelFilter filter_;
     std::unique_ptr<Camera> camera_;
     std::unique_ptr<SceneGeometry> geometry_;
-    std::unique_ptr<PathIntegrator> integrator_;
+    std::unique_ptr<Integrator> integrator_;
     double setupSeconds_ = 0;
 };
 

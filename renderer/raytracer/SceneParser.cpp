@@ -428,7 +428,7 @@ private:
     void textureDirective(SourceLocation& where, int) { texture(where); }
     void lightSource(SourceLocation& where, int) {
         const std::string type = typeName(where, "a light type");
-        scene_.lights.push_back(makeLight(type, params(where), g_.ctm, scene_.warnings));
+        scene_.lights.push_back(makeLight(type, params(where), g_.ctm, resolver(), scene_.warnings));
         warnIfMoving(where);
     }
     // pbrt-v3 accepts "area" as another name for "diffuse".

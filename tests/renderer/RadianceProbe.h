@@ -1,0 +1,91 @@
+#pragma once
+// Helpers for light and integrator tests: a parsed scene with its geometry and an integrator, to
+// measure the radiance along chosen rays; image files written through OpenImageIO; lights made
+// straight from parameters.
+#include <OpenImageIO/imageio.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Integrator.h"
+#include "Light.h"
+#include "SceneDescription.h"
+#include "SceneGeometry.h"
+
+namespace lenslab::test {
+
+// Camera and film lines every test scene starts with (the probes trace their own rays).
+inline const char* kProbeHeader = "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+                                  "Film \"image\" \"integer xresolution\" 8 \"integer yresolution\" 8\n";
+
+class RadianceProbe {
+public:
+    RadianceProbe(const std::string& scenePath, IntegratorType type, int maxDepth)
+        : scene_(parseSceneFile(scenePath)), geometry_(std::make_unique<SceneGeometry>(scene_)),
+          integrator_(makeIntegrator(*geometry_, IntegratorSpec{type, maxDepth})) {}
+
+    // One estimate along the ray; `sample` picks an independent random stream.
+    Vec3f once(Vec3f origin, Vec3f direction, std::uint64_t sample) const {
+        Pcg32 rng(hashCombine(0x5eed, sample));
+        std::uint64_t rays = 0;
+        return integrator_->radiance(origin, normalize(direction), rng, rays);
+    }
+    // The mean of n estimates, as luminance.
+    double mean(Vec3f origin, Vec3f direction, int n) const {
+        double sum = 0;
+        for (int i = 0; i < n; ++i) sum += luminance(once(origin, direction, std::uint64_t(i)));
+        return sum / n;
+    }
+    const SceneGeometry& geometry() const { return *geometry_; }
+
+private:
+    SceneDescription scene_;
+    std::unique_ptr<SceneGeometry> geometry_;
+    std::unique_ptr<Integrator> integrator_;
+};
+
+// Writes RGB float pixels (row-major, top row first) as `path`; the format follows the extension,
+// stored as 8-bit where the format is (PNG).
+inline void writeImage(const std::string& path, int width, int height, const std::vector<float>& rgb) {
+    auto out = OIIO::ImageOutput::create(path);
+    const bool eightBit = path.size() > 4 && path.substr(path.size() - 4) == ".png";
+    OIIO::ImageSpec spec(width, height, 3, eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+    if (!out || !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()) || !out->close())
+        throw std::runtime_error("cannot write test image " + path);
+}
+
+// A light from `LightSource "type"` with the given parameters, under `lightToWorld`.
+inline std::unique_ptr<Light> lightFrom(const std::string& type, std::vector<Param> params,
+                                        const Transform& lightToWorld = {}) {
+    std::vector<std::string> warnings;
+    const ParamSet p(SourceLocation{"test", 1, "LightSource \"" + type + "\""}, std::move(params));
+    return makeLight(type, p, lightToWorld, [](const std::string& name, const SourceLocation&) { return name; },
+                     warnings);
+}
+
+inline Param stringParam(const std::string& name, const std::string& value) {
+    Param p;
+    p.type = ParamType::String;
+    p.name = name;
+    p.strings = {value};
+    return p;
+}
+
+inline Param rgbParam(const std::string& name, Vec3f c) {
+    Param p;
+    p.type = ParamType::Rgb;
+    p.name = name;
+    p.numbers = {c.x, c.y, c.z};
+    return p;
+}
+
+inline Param floatParam(const std::string& name, double v) {
+    Param p;
+    p.type = ParamType::Float;
+    p.name = name;
+    p.numbers = {v};
+    return p;
+}
+
+}  // namespace lenslab::test

@@ -1,0 +1,103 @@
+// pbrt-v3's path, directlighting and whitted integrators against closed forms: a white diffuse
+// plane (albedo 1: radiance = irradiance / pi) under a point light, under a uniform sky and under
+// an emitting ceiling, and a mirror showing a lit wall.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "RadianceProbe.h"
+#include "TempDir.h"
+#include "TestScenes.h"
+
+namespace lenslab {
+namespace {
+
+constexpr double kPi = M_PI;
+const IntegratorType kAll[] = {IntegratorType::Path, IntegratorType::DirectLighting, IntegratorType::Whitted};
+const char* kNames[] = {"path", "directlighting", "whitted"};
+
+std::string square(double half, double z, const std::string& material) {
+    const std::string h = std::to_string(half), zs = std::to_string(z);
+    return material + "\nShape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point P\" [-" + h + " -" + h + " " +
+           zs + "  " + h + " -" + h + " " + zs + "  " + h + " " + h + " " + zs + "  -" + h + " " + h + " " + zs + "]\n";
+}
+
+std::string scene(const test::TempDir& dir, const std::string& world) {
+    return dir.write("s.pbrt", std::string(test::kProbeHeader) + "WorldBegin\n" + world + "WorldEnd\n");
+}
+
+const std::string kWhite = "Material \"matte\" \"rgb Kd\" [1 1 1]";
+
+TEST(Integrators, DiffusePlaneUnderAPointLight) {
+    test::TempDir dir;
+    const std::string s = scene(dir, "LightSource \"point\" \"point from\" [0 0 2] \"rgb I\" [4 4 4]\n" +
+                                         square(100, 0, kWhite));
+    const double d2 = 1 + 4, expected = 4 * (2 / std::sqrt(d2)) / d2 / kPi;
+    for (int i = 0; i < 3; ++i) {
+        const test::RadianceProbe probe(s, kAll[i], 5);
+        EXPECT_NEAR(probe.mean({1, 0, 1}, {0, 0, -1}, 4), expected, 1e-5) << kNames[i];
+    }
+}
+
+// A mirror floor (Kr 0.9) under a white ceiling that a point light between them lights from
+// below. Looking down at the floor shows the ceiling: 0.9 times its radiance (its direct light:
+// at maxdepth 2 path tracing stops before the light the mirror sends back up).
+TEST(Integrators, MirrorShowsTheLitCeiling) {
+    test::TempDir dir;
+    const std::string s = scene(dir, "LightSource \"point\" \"point from\" [0 0 1] \"rgb I\" [4 4 4]\n" +
+                                         square(100, 0, "Material \"mirror\" \"rgb Kr\" [0.9 0.9 0.9]") +
+                                         square(100, 2, kWhite));
+    const double x = 0.5, d2 = x * x + 1, ceiling = 4 * (1 / std::sqrt(d2)) / d2 / kPi;
+    for (int i = 0; i < 3; ++i) {
+        const test::RadianceProbe probe(s, kAll[i], 2);
+        EXPECT_NEAR(probe.mean({float(x), 0, 1}, {0, 0, -1}, 4), 0.9 * ceiling, 1e-5) << kNames[i];
+    }
+    // pbrt-v3's depth: maxdepth 1 shades the first surface only, and the mirror alone is black.
+    EXPECT_EQ(test::RadianceProbe(s, IntegratorType::Whitted, 1).mean({float(x), 0, 1}, {0, 0, -1}, 4), 0.0);
+    EXPECT_EQ(test::RadianceProbe(s, IntegratorType::DirectLighting, 1).mean({float(x), 0, 1}, {0, 0, -1}, 4), 0.0);
+}
+
+TEST(Integrators, WhitePlaneUnderUniformSkyHasRadianceL) {
+    test::TempDir dir;
+    const std::string s = scene(dir, "LightSource \"infinite\" \"rgb L\" [0.6 0.6 0.6]\n" + square(1000, 0, kWhite));
+    for (int i = 0; i < 3; ++i) {
+        const test::RadianceProbe probe(s, kAll[i], 5);
+        EXPECT_NEAR(probe.mean({0.2f, 0.3f, 1}, {0, 0, -1}, 20000), 0.6, 0.006) << kNames[i];
+    }
+}
+
+// An emitting square ceiling (radiance 0.5, 20 x 20, 1 above the plane) over the white plane: the
+// plane's radiance is 0.5 times the ceiling's view factor from the point below its centre, four
+// times that of a 10 x 10 rectangle seen from below its corner. Whitted samples the ceiling by
+// area alone, which is noisy: it gets more samples and a wider tolerance.
+TEST(Integrators, EmittingCeilingOverWhitePlane) {
+    test::TempDir dir;
+    const std::string s = scene(dir, "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [0.5 0.5 0.5] "
+                                     "\"bool twosided\" true\n" + square(10, 1, kWhite) + "AttributeEnd\n" +
+                                     square(1000, 0, kWhite));
+    const double a = 10, f = std::atan(a / std::sqrt(1 + a * a)) * a / std::sqrt(1 + a * a) / (2 * kPi) * 2;
+    const double expected = 0.5 * 4 * f;
+    const int samples[] = {20000, 20000, 200000};
+    const double tolerance[] = {0.01, 0.01, 0.03};
+    for (int i = 0; i < 3; ++i) {
+        const test::RadianceProbe probe(s, kAll[i], 1);
+        EXPECT_NEAR(probe.mean({0, 0, 0.5f}, {0, 0, -1}, samples[i]), expected, tolerance[i] * expected) << kNames[i];
+    }
+}
+
+// The same through a render: the centre pixel of a camera looking straight down at the plane lit
+// by a point light above it (the pixel spans +-0.04 m, where the radiance varies by 0.2%).
+TEST(Integrators, RenderedPlaneUnderAPointLight) {
+    test::TempDir dir;
+    const std::string s = dir.write("r.pbrt", "LookAt 0 0 1  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+        "Integrator \"directlighting\" \"integer maxdepth\" 1\nPixelFilter \"box\"\nWorldBegin\n"
+        "LightSource \"point\" \"point from\" [0 0 2] \"rgb I\" [4 4 4]\n" + square(100, 0, kWhite) + "WorldEnd\n");
+    const RenderOutput out = test::render(s, 9, 9, 16);
+    EXPECT_NEAR(test::lum(out.image, 4, 4), 4 / 4.0 / kPi, 0.005 * 4 / 4.0 / kPi);
+    // Two pixels right: the field angle is atan(2 tan(20 deg) / 4.5), the plane point that far off.
+    const double r = 2 * std::tan(20 * kPi / 180) / 4.5, d2 = r * r + 4;
+    EXPECT_NEAR(test::lum(out.image, 6, 4), 4 * (2 / std::sqrt(d2)) / d2 / kPi, 0.01 * 4 / 4.0 / kPi);
+}
+
+}  // namespace
+}  // namespace lenslab
