@@ -288,8 +288,7 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"exitPupilDiameterMm", formatNumber(a.pupils.exit.diameter)},
             {"exposureTimeS", formatNumber(params_.exposureTime)},
             {"weighting", params_.simpleWeighting ? "simple (centre = 1)" : "radiometric (cos^4 A / d^2 * t)"},
-            {"units", params_.cameraUnitMm == 1 ? "lens mm, camera space mm (the course's parameters)"
-                                                 : "lens mm, camera space " + formatNumber(params_.cameraUnitMm) + " mm per unit"}};
+            {"cameraSpaceUnitMm", formatNumber(params_.cameraUnitMm)}};
     if (params_.mode == LensMode::Auto) {
         // The prediction behind the split: worst film error of the thick lens, in pixels, per radius.
         const double pixelMm = params_.filmDiagonalMm / std::hypot(double(width_), double(height_));
