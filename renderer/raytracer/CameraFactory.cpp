@@ -39,6 +39,18 @@ void checkClipping(const ParamSet& p, std::vector<std::string>& warnings) {
                            " not applied: camera rays run uncut from the front lens element");
 }
 
+// Runs `build`, reporting the optics' own errors at the Camera directive.
+template <class Build>
+auto atCamera(const ParamSet& p, Build build) -> decltype(build()) {
+    try {
+        return build();
+    } catch (const OpticsError& e) {
+        p.fail(e.what());
+    } catch (const LensTableError& e) {
+        p.fail(e.what());
+    }
+}
+
 ApertureShape apertureShape(const SceneDescription& scene, const ParamSet& p) {
     const std::string name = p.getString("aperture", "circular");
     if (ApertureShape::isNamed(name)) return ApertureShape::named(name);
@@ -92,14 +104,11 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
         r.filmDistanceMm.reset();
     } else if (o.lensFile && r.filmDistanceMm) {
         // A film distance belongs to the scene's lens: another lens focuses where that one did.
-        try {
-            const LensSystem own = loadLensSystem(sceneLens());
-            r.focusDistanceMm = thickLensFocusForFilm(own, computeFirstOrder(own), own.rearZ() - *r.filmDistanceMm);
-        } catch (const OpticsError& e) {
-            p.fail(e.what());
-        } catch (const LensTableError& e) {
-            p.fail(e.what());
-        }
+        const std::string ownPath = sceneLens();
+        r.focusDistanceMm = atCamera(p, [&] {
+            const LensSystem own = loadLensSystem(ownPath);
+            return thickLensFocusForFilm(own, computeFirstOrder(own), own.rearZ() - *r.filmDistanceMm);
+        });
         r.filmDistanceMm.reset();
     }
     const double sceneDiagonal = p.has("filmdiag") ? p.getFloat("filmdiag", 35) : p.getFloat("filmdiagonal", scene.film.diagonalMm);
@@ -115,13 +124,9 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     r.simpleWeighting = p.getBool("simpleweighting", pbrtStyle);
     r.aperture = apertureShape(scene, p);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
-    try {
+    return atCamera(p, [&]() -> std::unique_ptr<Camera> {
         return std::make_unique<RealisticCamera>(r, scene.camera.cameraToWorld, width, height, margin);
-    } catch (const OpticsError& e) {
-        p.fail(e.what());
-    } catch (const LensTableError& e) {
-        p.fail(e.what());
-    }
+    });
 }
 
 }  // namespace
