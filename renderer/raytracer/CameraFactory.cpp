@@ -90,13 +90,14 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
         r.fstop = *o.fstop;
         r.stopDiameterMm.reset();
     }
+    const bool focusFromFilm = p.has("focusdistance") || (pbrtStyle && !p.has("focaldistance"));
     if (p.has("filmdistance")) {
         r.filmDistanceMm = p.getFloat("filmdistance", 0);
-    } else if (p.has("focaldistance") || !(pbrtStyle || p.has("focusdistance"))) {
-        r.focusDistanceMm = p.getFloat("focaldistance", 10000);
-    } else {
+    } else if (focusFromFilm) {
         r.focusDistanceMm = r.cameraUnitMm * p.getFloat("focusdistance", 10);  // pbrt-v3's default: 10 units
         r.focusFromFilm = true;
+    } else {
+        r.focusDistanceMm = p.getFloat("focaldistance", 10000);
     }
     if (o.focalDistance) {
         r.focusDistanceMm = *o.focalDistance;

@@ -288,6 +288,13 @@ TEST(ApertureShapes, AnImageApertureOpensWhereTheImageIsBright) {
     EXPECT_THROW(ApertureShape::fromImage(dir.path() + "/none.png"), std::runtime_error);
 }
 
+TEST(ApertureShapes, AnyOtherNameIsAnImageFileResolvedFromTheSceneFolder) {
+    test::TempDir dir;
+    const std::string e = renderError(dir.write("h.pbrt",
+        test::courseCamera("dgauss.dat", "\"string aperture\" \"hexagon\"\n") + kWorld));
+    EXPECT_NE(e.find("cannot open 'hexagon' (looked for " + dir.path() + "/hexagon)"), std::string::npos) << e;
+}
+
 struct Bokeh {
     double fourfold = 0;  // sum I r^4 cos 4 theta / sum I r^4 about the centroid: 0 for a disc, -0.43 for a square
     double twofold = 0;   // sum I r^2 cos 2 theta / sum I r^2: 0 unless stretched along x or y
@@ -296,12 +303,12 @@ struct Bokeh {
 
 // A small glowing ball 0.5 m ahead of dgauss.50mm wide open and focused at 100 m: its blur spot (about
 // 22 pixels across here) is the stop's shape, widened a little by the ball's own image. Intensity-
-// weighted angular moments measure the shape without thresholding the noise.
-Bokeh bokeh(const std::string& aperture) {
+// weighted angular moments measure the shape without thresholding the noise. mode: the lens model.
+Bokeh bokeh(const std::string& aperture, const std::string& mode = "accurate") {
     test::TempDir dir;
     const std::string scene = dir.write("bokeh.pbrt",
         test::courseCamera("dgauss.50mm.dat", "\"float focaldistance\" 100000 \"float filmdiag\" 35 "
-                                              "\"string aperture\" \"" + aperture + "\"\n") +
+                                              "\"string aperture\" \"" + aperture + "\" \"string mode\" \"" + mode + "\"\n") +
         "Film \"image\"\nPixelFilter \"box\"\nWorldBegin\nAttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1000 1000 1000]\n"
         "Translate 0 0 0.5\nShape \"sphere\" \"float radius\" 0.004\nAttributeEnd\nWorldEnd\n");
     RenderSettings s;
@@ -340,6 +347,8 @@ TEST(ApertureShapes, ASquareApertureMakesSquareBokehOfTheSameBrightness) {
     EXPECT_LT(square.fourfold, -0.15);  // mass toward the corners (the ball's own image rounds them)
     EXPECT_NEAR(square.twofold, 0, 0.05);
     EXPECT_NEAR(square.total / circle.total, 1.0, 0.05);
+    // The thick lens meets the shape at the exit pupil, the stop's image.
+    EXPECT_LT(bokeh("square", "approximate").fourfold, -0.15);
 }
 
 }  // namespace
