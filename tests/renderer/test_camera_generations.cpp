@@ -72,9 +72,9 @@ double metadataNumber(const RenderOutput& out, const std::string& key) { return 
 TEST(CameraGenerations, CourseMillimetresAndLensfileMetresDrawTheSamePicture) {
     test::TempDir dir;
     const double stop = 8, focusFromVertex = 1500;  // mm
-    const std::string course = dir.write("course.pbrt",
-        test::courseCamera("dgauss.50mm.dat", "\"float aperture_diameter\" " + num(stop) + " \"float focaldistance\" " +
-                                                  num(focusFromVertex) + " \"float filmdiag\" 30\nFilm \"image\"\n") + kWorld);
+    const std::string courseParams = "\"float aperture_diameter\" " + num(stop) + " \"float focaldistance\" " +
+                                     num(focusFromVertex) + " \"float filmdiag\" 30\nFilm \"image\"\n";
+    const std::string course = dir.write("course.pbrt", test::courseCamera("dgauss.50mm.dat", courseParams) + kWorld);
     const RenderOutput c = test::render(course, 48, 48, 16);
     EXPECT_EQ(c.metadata.at("cameraSpaceUnitMm"), "1");
     // pbrt-v3 measures the focus from the film, in metres: the same plane of focus.
@@ -98,8 +98,7 @@ TEST(CameraGenerations, CourseMillimetresAndLensfileMetresDrawTheSamePicture) {
 
     // The course's names without the Scale see the metre world from a thousand times closer.
     const std::string unscaled = dir.write("unscaled.pbrt",
-        "Camera \"realistic\" \"string specfile\" \"" + test::lensPath("dgauss.50mm.dat") + "\" \"float aperture_diameter\" " +
-        num(stop) + " \"float focaldistance\" " + num(focusFromVertex) + " \"float filmdiag\" 30\nFilm \"image\"\n" + kWorld);
+        "Camera \"realistic\" \"string specfile\" \"" + test::lensPath("dgauss.50mm.dat") + "\" " + courseParams + kWorld);
     EXPECT_GT(compare(c.image, test::render(unscaled, 48, 48, 16).image).meanAbsDifference, 0.1 * d.meanA);
 }
 
