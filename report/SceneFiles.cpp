@@ -79,16 +79,21 @@ void collectFiles(const fs::path& file, std::vector<std::string>& files, bool& r
 std::vector<SceneSource> listScenes(const std::string& sceneDir) {
     std::vector<SceneSource> scenes;
     std::error_code ec;
-    for (fs::directory_iterator it(sceneDir, ec), end; !ec && it != end; it.increment(ec)) {
+    static const std::regex worldBegin(R"(\bWorldBegin\b)");
+    for (fs::recursive_directory_iterator it(sceneDir, ec), end; !ec && it != end; it.increment(ec)) {
         const fs::path& p = it->path();
         if (p.extension() != ".pbrt" || !it->is_regular_file()) continue;
-        SceneSource s;
-        s.id = p.stem().string();
-        s.path = p.string();
         const std::string text = readText(p);
+        const std::string code = withoutComments(text);
+        if (!std::regex_search(code, worldBegin)) continue;  // a fragment for Include, not a scene
+        SceneSource s;
+        std::string id = p.lexically_relative(sceneDir).replace_extension().generic_string();
+        std::replace(id.begin(), id.end(), '/', '-');
+        s.id = id;
+        s.path = p.string();
         s.description = leadingComments(text);
-        s.xResolution = integerParameter(withoutComments(text), "xresolution");
-        s.yResolution = integerParameter(withoutComments(text), "yresolution");
+        s.xResolution = integerParameter(code, "xresolution");
+        s.yResolution = integerParameter(code, "yresolution");
         collectFiles(p, s.files, s.realisticCamera);
         scenes.push_back(std::move(s));
     }

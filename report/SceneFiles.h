@@ -7,7 +7,8 @@
 namespace lenslab {
 
 struct SceneSource {
-    std::string id;                  // file name without .pbrt
+    std::string id;                  // path below the scene folder without .pbrt, '/' as '-'
+                                     // (course/x.pbrt: course-x)
     std::string description;         // the leading comment lines, joined
     std::string path;
     bool realisticCamera = false;
@@ -16,7 +17,8 @@ struct SceneSource {
                                      // meshes, textures), followed recursively through .pbrt files
 };
 
-// Every <dir>/*.pbrt, sorted by id. Missing folder: none.
+// Every scene file (.pbrt with a WorldBegin) in <dir> and its subfolders, sorted by id; fragments
+// made to be included (world/*.pbrt) are not scenes. Missing folder: none.
 std::vector<SceneSource> listScenes(const std::string& sceneDir);
 
 }  // namespace lenslab

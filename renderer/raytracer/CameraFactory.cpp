@@ -1,53 +1,101 @@
 #include "CameraFactory.h"
 
-#include <filesystem>
-
 #include "LensTable.h"
+#include "NumberText.h"
 #include "OpticsError.h"
 #include "OrthographicCamera.h"
 #include "PerspectiveCamera.h"
 #include "RealisticCamera.h"
 
-namespace fs = std::filesystem;
-
 namespace lenslab {
 
-std::string findLensFile(const SceneDescription& scene, const std::string& name, const SourceLocation& where) {
-    try {
-        return resolveScenePath(scene, name, where);
-    } catch (const SceneError&) {
-        const fs::path bundled = fs::path(LENSLAB_LENS_DIR) / fs::path(name).filename();
-        if (fs::is_regular_file(bundled)) return bundled.string();
-        sceneFail(where, "lens file '" + name + "' not found in the scene's folder tree nor among the bundled lenses (" +
-                             std::string(LENSLAB_LENS_DIR) + ")");
+namespace {
+
+// Parameters that say the same thing in different generations: naming two of them is a contradiction.
+void refuseSynonyms(const ParamSet& p, std::initializer_list<const char*> names, const std::string& what) {
+    const char* first = nullptr;
+    for (const char* name : names) {
+        if (!p.has(name)) continue;
+        if (first) p.fail(std::string("\"") + first + "\" and \"" + name + "\" both give " + what + ": give one of them");
+        first = name;
     }
 }
 
-namespace {
+// The shutter interval. The course's scenes open and close it at 0: unit exposure, with a warning.
+double exposureTime(const ParamSet& p, std::vector<std::string>& warnings) {
+    const double open = p.getFloat("shutteropen", 0), close = p.getFloat("shutterclose", 1);
+    if (close < open) p.fail("shutterclose (" + formatNumber(close) + ") comes before shutteropen (" + formatNumber(open) + ")");
+    if (close > open) return close - open;
+    warnings.push_back(describe(p.where()) + ": shutteropen = shutterclose = " + formatNumber(open) +
+                       ": no exposure interval, rendering with unit exposure");
+    return 1;
+}
+
+// The later course's clipping planes. Camera rays start at the front lens element and run uncut, so
+// only values that could clip something (other than pbrt-v2's defaults) are worth a warning.
+void checkClipping(const ParamSet& p, std::vector<std::string>& warnings) {
+    const double hither = p.getFloat("hither", 1e-3), yon = p.getFloat("yon", 1e30);
+    if (hither > 1e-3 || yon < 1e30)
+        warnings.push_back(describe(p.where()) + ": hither " + formatNumber(hither) + " / yon " + formatNumber(yon) +
+                           " not applied: camera rays run uncut from the front lens element");
+}
+
+// Runs `build`, reporting the optics' own errors at the Camera directive.
+template <class Build>
+auto atCamera(const ParamSet& p, Build build) -> decltype(build()) {
+    try {
+        return build();
+    } catch (const OpticsError& e) {
+        p.fail(e.what());
+    } catch (const LensTableError& e) {
+        p.fail(e.what());
+    }
+}
+
+ApertureShape apertureShape(const SceneDescription& scene, const ParamSet& p) {
+    const std::string name = p.getString("aperture", "circular");
+    if (ApertureShape::isNamed(name)) return ApertureShape::named(name);
+    const std::string image = resolveScenePath(scene, name, p.where());
+    try {
+        return ApertureShape::fromImage(image);
+    } catch (const std::runtime_error& e) {
+        p.fail(std::string(e.what()) + " (aperture: circular, gaussian, square, pentagon, star or an image file)");
+    }
+}
 
 std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverrides& o, int width, int height,
                                       double margin) {
     const ParamSet& p = scene.camera.params;
-    RealisticParams r;
-    // pbrt-v3 names (lensfile, aperturediameter, focusdistance in metres from the film,
-    // simpleweighting) and the course's (specfile, fstop, focaldistance in mm from the front vertex).
+    refuseSynonyms(p, {"specfile", "lensfile"}, "the lens table");
+    refuseSynonyms(p, {"fstop", "aperture_diameter", "aperturediameter"}, "the aperture");
+    refuseSynonyms(p, {"focaldistance", "filmdistance", "focusdistance"}, "the focus");
+    refuseSynonyms(p, {"filmdiagonal", "filmdiag"}, "the film diagonal");
+    // Three generations of names (docs/camera-conventions.md). The course's (specfile: fstop,
+    // focaldistance, filmdiagonal; later filmdistance, aperture_diameter, filmdiag) have camera space
+    // in millimetres; pbrt-v3/v4's lensfile puts it in metres (lens mm x 0.001), with focusdistance
+    // in those units measured from the film, a 1 mm opening and simple weighting by default.
     const bool pbrtStyle = p.has("lensfile");
+    RealisticParams r;
+    r.cameraUnitMm = pbrtStyle ? 1000 : 1;
     const std::string lensName = pbrtStyle ? p.getString("lensfile", "") : p.getString("specfile", "");
-    if (o.lensFile) r.lensPath = *o.lensFile;
-    else if (lensName.empty()) p.fail("needs \"string specfile\" (or pbrt-v3's \"lensfile\")");
-    else r.lensPath = findLensFile(scene, lensName, p.where());
+    if (lensName.empty() && !o.lensFile) p.fail("needs \"string specfile\" (or pbrt-v3's \"lensfile\")");
+    // The scene's own lens: the one rendered, or (under an override) the one its filmdistance was set for.
+    const auto sceneLens = [&] { return resolveScenePath(scene, lensName, p.where()); };
+    r.lensPath = o.lensFile ? *o.lensFile : sceneLens();
 
     if (p.has("fstop")) r.fstop = p.getFloat("fstop", 0);
-    if (p.has("aperturediameter")) r.stopDiameterMm = p.getFloat("aperturediameter", 1);
-    else if (pbrtStyle && !r.fstop) r.stopDiameterMm = 1.0;  // pbrt-v3's default opening
+    for (const char* name : {"aperture_diameter", "aperturediameter"})
+        if (p.has(name)) r.stopDiameterMm = p.getFloat(name, 1);
+    if (pbrtStyle && !r.fstop && !r.stopDiameterMm) r.stopDiameterMm = 1.0;  // pbrt-v3's default opening
     if (o.fstop) {
         r.fstop = *o.fstop;
         r.stopDiameterMm.reset();
     }
-    if (p.has("focaldistance") && p.has("focusdistance"))
-        p.fail("give either \"focaldistance\" (mm from the front vertex) or \"focusdistance\" (m from the film)");
-    if (p.has("focusdistance")) {
-        r.focusDistanceMm = 1000.0 * p.getFloat("focusdistance", 10);
+    const bool focusFromFilm = p.has("focusdistance") || (pbrtStyle && !p.has("focaldistance"));
+    if (p.has("filmdistance")) {
+        r.filmDistanceMm = p.getFloat("filmdistance", 0);
+    } else if (focusFromFilm) {
+        r.focusDistanceMm = r.cameraUnitMm * p.getFloat("focusdistance", 10);  // pbrt-v3's default: 10 units
         r.focusFromFilm = true;
     } else {
         r.focusDistanceMm = p.getFloat("focaldistance", 10000);
@@ -55,24 +103,32 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     if (o.focalDistance) {
         r.focusDistanceMm = *o.focalDistance;
         r.focusFromFilm = false;
+        r.filmDistanceMm.reset();
+    } else if (o.lensFile && r.filmDistanceMm) {
+        // A film distance belongs to the scene's lens: another lens focuses where that one did.
+        const std::string ownPath = sceneLens();
+        r.focusDistanceMm = atCamera(p, [&] {
+            const LensSystem own = loadLensSystem(ownPath);
+            return thickLensFocusForFilm(own, computeFirstOrder(own), own.rearZ() - *r.filmDistanceMm);
+        });
+        r.filmDistanceMm.reset();
     }
-    r.filmDiagonalMm = o.filmDiagonal.value_or(p.getFloat("filmdiagonal", scene.film.diagonalMm));
+    const double sceneDiagonal = p.has("filmdiag") ? p.getFloat("filmdiag", 35) : p.getFloat("filmdiagonal", scene.film.diagonalMm);
+    r.filmDiagonalMm = o.filmDiagonal.value_or(sceneDiagonal);
     const std::string mode = o.mode.value_or(p.getString("mode", "accurate"));
     const std::optional<LensMode> lensMode = parseLensMode(mode);
     if (!lensMode) p.fail("mode must be accurate|approximate|auto, got \"" + mode + "\"");
     r.mode = *lensMode;
     r.autoThresholdPixels = p.getFloat("autothreshold", r.autoThresholdPixels);
     r.crop = scene.film.crop;  // the effective window: the render settings' crop overrides the scene's
-    r.exposureTime = p.getFloat("shutterclose", 1) - p.getFloat("shutteropen", 0);
+    r.exposureTime = exposureTime(p, scene.warnings);
+    checkClipping(p, scene.warnings);
     r.simpleWeighting = p.getBool("simpleweighting", pbrtStyle);
+    r.aperture = apertureShape(scene, p);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
-    try {
+    return atCamera(p, [&]() -> std::unique_ptr<Camera> {
         return std::make_unique<RealisticCamera>(r, scene.camera.cameraToWorld, width, height, margin);
-    } catch (const OpticsError& e) {
-        p.fail(e.what());
-    } catch (const LensTableError& e) {
-        p.fail(e.what());
-    }
+    });
 }
 
 std::unique_ptr<Camera> makeOrthographic(const SceneDescription& scene, int width, int height) {

@@ -9,12 +9,9 @@
 namespace lenslab {
 
 // width/height: the full image in pixels; filmMarginPixels: the pixel filter's reach beyond it.
-// Throws SceneError naming the Camera directive for bad or out-of-range parameters.
+// Throws SceneError naming the Camera directive for bad or out-of-range parameters. A lens file is
+// resolved like every file the scene names (resolveScenePath), never looked up elsewhere.
 std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverrides& overrides, int width, int height,
                                    double filmMarginPixels);
-
-// Where a lens table named in a scene is found: in the scene's folder tree, else (by file name)
-// among lenslab's bundled lenses.
-std::string findLensFile(const SceneDescription& scene, const std::string& name, const SourceLocation& where);
 
 }  // namespace lenslab

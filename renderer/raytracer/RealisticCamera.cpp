@@ -1,6 +1,7 @@
 #include "RealisticCamera.h"
 
 #include <cmath>
+#include <limits>
 
 #include "Aperture.h"
 #include "ExactTrace.h"
@@ -29,7 +30,25 @@ double fstopForStopDiameter(const LensSystem& lens, double diameter) {
 
 double cos4(double c) { return (c * c) * (c * c); }
 
+// The focus result for a film placed directly: both models' film at filmZ, the plane of focus the
+// thick lens's conjugate (the exact trace's best-focus spot is not measured).
+FocusResult filmPlacedAt(const LensSystem& lens, const FirstOrder& fo, double filmZ) {
+    FocusResult f;
+    const double distance = thickLensFocusForFilm(lens, fo, filmZ);
+    f.infinity = std::isinf(distance);
+    f.objectZ = f.infinity ? distance : lens.frontZ() + distance;
+    f.imageZThick = f.imageZExact = filmZ;
+    return f;
+}
+
 }  // namespace
+
+double thickLensFocusForFilm(const LensSystem& lens, const FirstOrder& fo, double filmZ) {
+    const double imageDistance = fo.zPPrime - filmZ;  // P' to the film, positive toward the film
+    if (!(imageDistance > fo.efl)) return std::numeric_limits<double>::infinity();
+    const double objectDistance = fo.efl * imageDistance / (imageDistance - fo.efl);  // from P
+    return fo.zP + objectDistance - lens.frontZ();
+}
 
 RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform& cameraToWorld, int width, int height,
                                  double filmMarginPixels)
@@ -37,6 +56,7 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     if (!(params.filmDiagonalMm > 0 && params.filmDiagonalMm < 1e4))
         throw OpticsError("film diagonal must lie in (0, 10000) mm, got " + formatNumber(params.filmDiagonalMm));
     if (!(params.exposureTime > 0)) throw OpticsError("exposure time (shutterclose) must be positive");
+    if (!(params.cameraUnitMm > 0)) throw OpticsError("the camera unit must be a positive number of millimetres");
     if (!(params.autoThresholdPixels > 0)) throw OpticsError("the auto threshold must be a positive number of pixels");
     const double diag = std::hypot(double(width), double(height));
     halfWidthMm_ = 0.5 * params.filmDiagonalMm * width / diag;
@@ -47,7 +67,13 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     std::optional<double> fstop = params.fstop;
     if (!fstop && params.stopDiameterMm) fstop = fstopForStopDiameter(lens, *params.stopDiameterMm);
     const bool thickFilm = params.mode == LensMode::Approximate;
-    if (params.focusFromFilm) {
+    if (params.filmDistanceMm) {
+        if (!(*params.filmDistanceMm > 0))
+            throw OpticsError("film distance must be positive (mm behind the rear vertex), got " +
+                              formatNumber(*params.filmDistanceMm));
+        analysis_ = analyzeLens(lens, fstop, std::numeric_limits<double>::infinity());
+        analysis_.focus = filmPlacedAt(analysis_.lens, analysis_.firstOrder, lens.rearZ() - *params.filmDistanceMm);
+    } else if (params.focusFromFilm) {
         // Object distance from the film = focus distance: the film position depends on the focus,
         // so iterate (the film moves by far less than the distance).
         double filmZ = computeFirstOrder(lens).zFPrime;
@@ -143,11 +169,16 @@ double RealisticCamera::aimThick(double fx, double fy, float u1, float u2, Ray& 
     float dx, dy;
     concentricDisk(u1, u2, dx, dy);
     const Pupil& xp = analysis_.pupils.exit;
+    // The exit pupil is the stop's image: a pupil point maps back to the stop by the sign of its
+    // magnification.
+    const double toStop = xp.magnification < 0 ? -1.0 : 1.0;
+    const double shape = params_.aperture.weight(toStop * dx, toStop * dy);
+    if (!(shape > 0)) return 0;
     const Vec3 from{fx, fy, filmZThick_};
     const Vec3 d = Vec3{0.5 * xp.diameter * dx, 0.5 * xp.diameter * dy, xp.z} - from;
     ray = {from, (1.0 / length(d)) * d};
     const double dz = xp.z - filmZThick_;
-    return cos4(ray.direction.z) * (M_PI * 0.25 * xp.diameter * xp.diameter) / (dz * dz) * weightScaleThick_;
+    return shape * cos4(ray.direction.z) * (M_PI * 0.25 * xp.diameter * xp.diameter) / (dz * dz) * weightScaleThick_;
 }
 
 double RealisticCamera::aimExact(double fx, double fy, float u1, float u2, Ray& ray) const {
@@ -160,8 +191,24 @@ double RealisticCamera::aimExact(double fx, double fy, float u1, float u2, Ray& 
     return cos4(ray.direction.z) * s.area / (dz * dz) * weightScaleExact_;
 }
 
+TraceResult RealisticCamera::traceShaped(const Ray& ray, double& weight) const {
+    if (params_.aperture.isCircular()) return traceRay(analysis_.lens, ray, TraceDirection::FilmToScene);
+    // Film to stop (the stop included), the shape where the ray crosses it, then on to the front.
+    const int stop = analysis_.lens.stopIndex;
+    TraceOptions toStop;
+    toStop.begin = stop;
+    const TraceResult atStop = traceRay(analysis_.lens, ray, TraceDirection::FilmToScene, toStop);
+    if (!atStop.ok()) return atStop;
+    const double radius = analysis_.lens.stop().apertureRadius;
+    weight *= params_.aperture.weight(atStop.ray.origin.x / radius, atStop.ray.origin.y / radius);
+    TraceOptions toFront;
+    toFront.end = stop;
+    return traceRay(analysis_.lens, atStop.ray, TraceDirection::FilmToScene, toFront);
+}
+
 bool RealisticCamera::finish(const Ray& lensRay, double weight, CameraRay& out) const {
-    const Vec3f o{float(lensRay.origin.x * 1e-3), float(lensRay.origin.y * 1e-3), float(lensRay.origin.z * 1e-3)};
+    const double unit = 1.0 / params_.cameraUnitMm;
+    const Vec3f o{float(lensRay.origin.x * unit), float(lensRay.origin.y * unit), float(lensRay.origin.z * unit)};
     const Vec3f dir{float(lensRay.direction.x), float(lensRay.direction.y), float(lensRay.direction.z)};
     out.origin = transformPoint(cameraToWorld_, o);
     out.direction = normalize(transformVector(cameraToWorld_, dir));
@@ -179,14 +226,14 @@ bool RealisticCamera::generateRay(double rasterX, double rasterY, float u1, floa
         const TraceResult r = traceThick(analysis_.thick, ray, TraceDirection::FilmToScene);
         return weight > 0 && r.ok() && finish(r.ray, weight, out);
     }
-    const double weight = aimExact(fx, fy, u1, u2, ray);
+    double weight = aimExact(fx, fy, u1, u2, ray);
     if (!(weight > 0)) return false;
-    const TraceResult r = traceRay(analysis_.lens, ray, TraceDirection::FilmToScene);
-    return r.ok() && finish(r.ray, weight, out);
+    const TraceResult r = traceShaped(ray, weight);
+    return r.ok() && weight > 0 && finish(r.ray, weight, out);
 }
 
 void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const {
-    if (!modes_.usesExact()) {
+    if (!modes_.usesExact() || !params_.aperture.isCircular()) {  // a shaped stop is met ray by ray
         Camera::generateRays(samples, n, out);
         return;
     }
@@ -231,6 +278,9 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"fstop", formatNumber(a.fstop)},
             {"stopDiameterMm", formatNumber(a.stopDiameter)},
             {"focusDistanceMm", a.focus.infinity ? "inf" : formatNumber(a.focus.objectZ - a.lens.frontZ())},
+            {"filmPlacement", params_.filmDistanceMm ? "filmdistance " + formatNumber(*params_.filmDistanceMm) + " mm behind the rear vertex"
+                                                     : "focused"},
+            {"aperture", params_.aperture.name()},
             {"filmDiagonalMm", formatNumber(params_.filmDiagonalMm)},
             {"filmZMm", formatNumber(filmZ())},
             {"eflMm", formatNumber(a.firstOrder.efl)},
@@ -238,7 +288,7 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"exitPupilDiameterMm", formatNumber(a.pupils.exit.diameter)},
             {"exposureTimeS", formatNumber(params_.exposureTime)},
             {"weighting", params_.simpleWeighting ? "simple (centre = 1)" : "radiometric (cos^4 A / d^2 * t)"},
-            {"units", "lens mm, world m"}};
+            {"cameraSpaceUnitMm", formatNumber(params_.cameraUnitMm)}};
     if (params_.mode == LensMode::Auto) {
         // The prediction behind the split: worst film error of the thick lens, in pixels, per radius.
         const double pixelMm = params_.filmDiagonalMm / std::hypot(double(width_), double(height_));

@@ -3,7 +3,9 @@
 // (exact trace, "accurate"), its thick-lens model ("approximate"), or each by film radius ("auto":
 // the thick lens where its predicted error stays under a threshold). Lens space is millimetres with
 // the origin at the front vertex and +z toward the scene, like pbrt's camera space; a lens-space
-// ray leaving the front element maps to camera space by dividing by 1000 (metres).
+// ray leaving the front element maps to camera space by dividing by the millimetres of one camera
+// unit (1 with the course's parameters, whose camera space is millimetres; 1000 with pbrt-v3's
+// lensfile, whose camera space is metres: docs/camera-conventions.md).
 //
 // Each model keeps its own film plane (exact: best focus of the real lens; thick: the thick-lens
 // conjugate of the plane of focus), so an auto picture equals the accurate one where the exact
@@ -13,7 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "ApertureShape.h"
 #include "Camera.h"
+#include "ExactTrace.h"
 #include "ExitPupilBounds.h"
 #include "LensAnalysis.h"
 #include "LensModeMap.h"
@@ -27,15 +31,24 @@ struct RealisticParams {
     std::optional<double> stopDiameterMm;  // pbrt-v3's aperturediameter: the stop opening itself
     double focusDistanceMm = 10000;        // front vertex to the plane of focus
     bool focusFromFilm = false;            // pbrt-v3: focusDistanceMm is measured from the film instead
+    // The later course's filmdistance: rear vertex to film. Set: the film sits there in every mode
+    // and nothing is focused (focusDistanceMm unused).
+    std::optional<double> filmDistanceMm;
+    double cameraUnitMm = 1000;            // millimetres per camera-space unit (1: course, 1000: pbrt-v3)
+    ApertureShape aperture;                // pbrt-v4's shape of the stop's opening
     double filmDiagonalMm = 35;
     LensMode mode = LensMode::Accurate;
     double autoThresholdPixels = 0.5;      // auto: the largest predicted thick-lens film error allowed
     // The rendered part of the image, x0, x1, y0, y1 as fractions (pbrt's cropwindow): only the film
     // radii it reaches are prepared (error map, exit-pupil bounds).
     std::array<double, 4> crop = {0, 1, 0, 1};
-    double exposureTime = 1;               // seconds the shutter is open
+    double exposureTime = 1;               // seconds the shutter is open (> 0)
     bool simpleWeighting = false;          // pbrt-v3: weights normalised to 1 at the image centre
 };
+
+// The plane the thick lens images onto a film at filmZ (lens space, mm): its distance from the front
+// vertex, infinity when the film lies at or in front of F' (no real object is in focus).
+double thickLensFocusForFilm(const LensSystem& lens, const FirstOrder& firstOrder, double filmZ);
 
 class RealisticCamera : public Camera {
 public:
@@ -67,6 +80,9 @@ private:
     // it (0: no aim), for the thick lens or the exact trace.
     double aimThick(double fx, double fy, float u1, float u2, Ray& ray) const;
     double aimExact(double fx, double fy, float u1, float u2, Ray& ray) const;
+    // The exact trace with the stop's shape applied where the ray crosses the stop; the weight is
+    // multiplied by the shape's.
+    TraceResult traceShaped(const Ray& ray, double& weight) const;
     bool finish(const Ray& lensRay, double weight, CameraRay& out) const;
 
     RealisticParams params_;

@@ -4,6 +4,10 @@ namespace lenslab::test {
 
 std::string lensPath(const std::string& name) { return std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name; }
 
+std::string courseCamera(const std::string& lens, const std::string& params) {
+    return "Scale 1000 1000 1000\nCamera \"realistic\" \"string specfile\" \"" + lensPath(lens) + "\" " + params;
+}
+
 RenderOutput render(const std::string& scene, int width, int height, int spp, RenderSettings s) {
     s.scenePath = scene;
     s.width = width;

@@ -9,6 +9,10 @@ namespace lenslab::test {
 
 std::string lensPath(const std::string& name);  // lenslab's bundled lens table
 
+// A Camera "realistic" with the course's parameter names for a bundled lens (`params` follow the
+// lens), preceded by the Scale that brings a world in metres into its millimetre camera space.
+std::string courseCamera(const std::string& lens, const std::string& params);
+
 // Renders with the given settings (threads 2 unless set).
 RenderOutput render(const std::string& scene, int width, int height, int spp, RenderSettings s = {});
 

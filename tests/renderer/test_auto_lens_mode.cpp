@@ -80,10 +80,10 @@ TEST(AutoLensMode, ACropWindowPreparesOnlyTheFilmRadiiItReaches) {
 TEST(AutoLensMode, TheSceneCropWindowReachesTheCameraOfARender) {
     test::TempDir dir;
     const std::string scene = dir.write("crop.pbrt",
-        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"float fstop\" 4 \"string mode\" \"auto\"\n"
+        test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4 \"string mode\" \"auto\"\n") +
         "Film \"image\" \"float cropwindow\" [0.45 0.55 0.45 0.55]\nWorldBegin\nWorldEnd\n");
     const RenderOutput full = test::render(dir.write("full.pbrt",
-        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"float fstop\" 4 \"string mode\" \"accurate\"\n"
+        test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4 \"string mode\" \"accurate\"\n") +
         "Film \"image\"\nWorldBegin\nWorldEnd\n"), 100, 100, 1);
     EXPECT_EQ(full.metadata.at("exitPupilBoundsRadii"), "64");
     const RenderOutput crop = test::render(scene, 100, 100, 1);
@@ -98,7 +98,7 @@ TEST(AutoLensMode, TheSceneCropWindowReachesTheCameraOfARender) {
 TEST(AutoLensMode, ACropOverrideInTheRenderSettingsReachesTheCamera) {
     test::TempDir dir;
     const std::string scene = dir.write("corner.pbrt",
-        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"float fstop\" 4 \"string mode\" \"auto\"\n"
+        test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4 \"string mode\" \"auto\"\n") +
         "Film \"image\" \"float cropwindow\" [0.9 1 0 0.1]\nWorldBegin\nWorldEnd\n");
     RenderSettings centre;
     centre.crop = std::array<double, 4>{0.45, 0.55, 0.45, 0.55};  // overrides the scene's corner window
@@ -110,7 +110,7 @@ TEST(AutoLensMode, ACropOverrideInTheRenderSettingsReachesTheCamera) {
 
 // A checkerboard wall 3 m ahead under a uniform sky, through the fisheye on a 24 x 24 mm film.
 std::string fisheyeWall(const std::string& mode) {
-    return "Camera \"realistic\" \"string specfile\" \"fisheye.10mm.dat\" \"float fstop\" 5.6 \"float focaldistance\" "
+    return test::courseCamera("fisheye.10mm.dat", "\"float fstop\" 5.6 \"float focaldistance\" ") +
            "3000 \"float filmdiagonal\" 33.94 \"string mode\" \"" + mode + "\"\n"
            "Film \"image\"\nPixelFilter \"box\"\nIntegrator \"directlighting\" \"integer maxdepth\" 1\n"
            "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
@@ -166,7 +166,7 @@ TEST(AutoLensMode, AutoImageIsTheApproximateOneWhereThickAndTheAccurateOneWhereE
 TEST(AutoLensMode, ModeAutoIsAcceptedAsAnOverrideAndABadModeNamesTheChoices) {
     test::TempDir dir;
     const std::string scene = dir.write("m.pbrt",
-        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"float fstop\" 8\nFilm \"image\"\nWorldBegin\nWorldEnd\n");
+        test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 8\nFilm \"image\"\nWorldBegin\nWorldEnd\n"));
     RenderSettings s;
     s.camera.mode = "auto";  // what the CLI's --mode and the API's "mode" pass on
     EXPECT_EQ(test::render(scene, 16, 16, 1, s).metadata.at("mode"), "auto");
@@ -179,7 +179,7 @@ TEST(AutoLensMode, ModeAutoIsAcceptedAsAnOverrideAndABadModeNamesTheChoices) {
             << e.what();
     }
     const std::string threshold = dir.write("t.pbrt",
-        "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" \"string mode\" \"auto\" \"float autothreshold\" 0\n"
+        test::courseCamera("dgauss.50mm.dat", "\"string mode\" \"auto\" \"float autothreshold\" 0\n") +
         "Film \"image\"\nWorldBegin\nWorldEnd\n");
     EXPECT_THROW(test::render(threshold, 16, 16, 1), SceneError);
 }

@@ -52,7 +52,7 @@ TEST(LensCamera, TinyApertureMatchesPinholeOfSameFieldOfView) {
     const double fov = 2 * std::atan(0.5 * diag / std::sqrt(2.0) / imageDistance) * 180 / M_PI;
     const double pupilZm = a.pupils.entrance.z / 1000.0;
     const std::string realistic = dir.write("r.pbrt", checkerWall(
-        "Camera \"realistic\" \"string specfile\" \"dgauss.dat\" \"float fstop\" " + num(fstop) +
+        test::courseCamera("dgauss.dat", "\"float fstop\" ") + num(fstop) +
         " \"float focaldistance\" " + num(focus) + " \"float filmdiagonal\" " + num(diag) + " \"bool simpleweighting\" true"));
     const auto pinhole = [&](double fovDegrees) {
         return dir.write("p.pbrt", checkerWall("Translate 0 0 " + num(-pupilZm) + "\nCamera \"perspective\" \"float fov\" " +
@@ -76,7 +76,7 @@ Blur measureBlur(const std::string& mode) {
     const double fstop = 4, focus = 2000, object = 1000, diag = 35, ball = 2.0;  // mm
     const int res = 256;
     const std::string scene = dir.write("coc.pbrt",
-        "Camera \"realistic\" \"string specfile\" \"dgauss.dat\" \"float fstop\" " + num(fstop) +
+        test::courseCamera("dgauss.dat", "\"float fstop\" ") + num(fstop) +
         " \"float focaldistance\" " + num(focus) + " \"float filmdiagonal\" " + num(diag) + " \"string mode\" \"" + mode +
         "\"\nFilm \"image\"\nPixelFilter \"box\"\nWorldBegin\nAttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
         "Translate 0 0 " + num(object / 1000) + "\nShape \"sphere\" \"float radius\" " + num(ball / 1000) +
@@ -134,7 +134,7 @@ void checkCosFourthFalloff(const std::string& mode, double tolerance) {
     const double fstop = 16, focus = 2000, diag = 70;
     const int res = 96;
     const std::string scene = dir.write("wall.pbrt",
-        "Camera \"realistic\" \"string specfile\" \"dgauss.dat\" \"float fstop\" " + num(fstop) +
+        test::courseCamera("dgauss.dat", "\"float fstop\" ") + num(fstop) +
         " \"float focaldistance\" " + num(focus) + " \"float filmdiagonal\" " + num(diag) + " \"string mode\" \"" + mode +
         "\"\nFilm \"image\"\nPixelFilter \"box\"\nWorldBegin\nAttributeBegin\n"
         "AreaLightSource \"diffuse\" \"rgb L\" [1 1 1] \"bool twosided\" true\n"
@@ -197,7 +197,7 @@ std::vector<double> barRows(const std::string& camera, int res) {
 TEST(LensCamera, FisheyeBendsStraightLinesIntoBarrels) {
     const int res = 128;
     const std::vector<double> fisheye = barRows(
-        "Camera \"realistic\" \"string specfile\" \"fisheye.dat\" \"float fstop\" 8 \"float focaldistance\" 1000 "
+        test::courseCamera("fisheye.dat", "\"float fstop\" 8 \"float focaldistance\" 1000 ") +
         "\"float filmdiagonal\" 250", res);
     const std::vector<double> pinhole = barRows("Camera \"perspective\" \"float fov\" 70", res);
     const int edge = res / 16, middle = res / 2;

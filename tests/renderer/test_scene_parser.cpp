@@ -137,18 +137,18 @@ TEST(SceneErrors, UnsupportedFeaturesAreNamedNeverIgnored) {
 TEST(SceneErrors, RealisticCameraRangesAreNamed) {
     test::TempDir dir;
     const auto scene = [&](const std::string& params) {
-        return dir.write("cam.pbrt", "Camera \"realistic\" \"string specfile\" \"dgauss.50mm.dat\" " + params +
-                                         "\nFilm \"image\"\nWorldBegin\nWorldEnd\n");
+        return dir.write("cam.pbrt", test::courseCamera("dgauss.50mm.dat", params) + "\nFilm \"image\"\nWorldBegin\nWorldEnd\n");
     };
     const std::string fstop = renderErrorOf(scene("\"float fstop\" 1.2 \"float focaldistance\" 3000"));
-    EXPECT_NE(fstop.find("cam.pbrt:1: Camera \"realistic\""), std::string::npos) << fstop;
+    EXPECT_NE(fstop.find("cam.pbrt:2: Camera \"realistic\""), std::string::npos) << fstop;
     EXPECT_NE(fstop.find("range"), std::string::npos) << fstop;
     const std::string focus = renderErrorOf(scene("\"float fstop\" 4 \"float focaldistance\" 20"));
     EXPECT_NE(focus.find("closest"), std::string::npos) << focus;
     EXPECT_EQ(renderErrorOf(scene("\"float fstop\" 4 \"float focaldistance\" 3000")), "(no error)");
     const std::string missing = renderErrorOf(dir.write("m.pbrt", "Camera \"realistic\" \"string specfile\" \"nolens.dat\"\n"
                                                                   "WorldBegin\nWorldEnd\n"));
-    EXPECT_NE(missing.find("lens file 'nolens.dat' not found"), std::string::npos) << missing;
+    EXPECT_NE(missing.find("cannot open 'nolens.dat' (looked for " + dir.path() + "/nolens.dat" + ")"),
+              std::string::npos) << missing;
 }
 
 }  // namespace
