@@ -1,6 +1,8 @@
 #pragma once
-// The world's geometry in Embree 3: triangle meshes, and spheres as Embree's analytic sphere
-// primitive. Answers closest-hit and shadow queries and turns hits into shading records.
+// The scene's geometry in Embree 3: the world's shapes in one scene, every instanced object in a
+// scene of its own that each ObjectInstance places with an Embree instance (one copy of the object
+// however many instances). Answers closest-hit and shadow queries and turns hits into world-space
+// shading records.
 #include <embree3/rtcore.h>
 
 #include <memory>
@@ -21,8 +23,8 @@ struct Intersection {
 
 class SceneGeometry {
 public:
-    // Takes the shapes from the scene and creates an area light for every emitting triangle or
-    // sphere; lights() holds those and the scene's other lights.
+    // Takes the shapes, objects, instances and lights from the scene, creates an area light for every
+    // primitive of an emitting world shape, and tells every light the scene's bounding sphere.
     explicit SceneGeometry(SceneDescription& scene);
     ~SceneGeometry();
     SceneGeometry(const SceneGeometry&) = delete;
@@ -33,20 +35,28 @@ public:
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
 
 private:
-    struct MeshRecord {
-        TriangleMesh mesh;
-        std::vector<const Light*> triangleLights;  // per triangle, when the mesh emits
+    // What one Embree geometry id of the world scene stands for: a shape (with the index of its
+    // first primitive's area light, when it emits) or an instance.
+    struct WorldSlot {
+        const ShapeEntry* shape = nullptr;
+        std::size_t firstLight = 0;
+        bool emits = false;
+        const ObjectInstance* instance = nullptr;
     };
-    struct SphereRecord {
-        Sphere sphere;
-        const Light* light = nullptr;
+    struct ObjectScene {
+        RTCScene scene = nullptr;
+        std::vector<const ShapeEntry*> shapes;  // by Embree geometry id
     };
+
+    ObjectScene buildObject(const ObjectDefinition& object);
 
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
-    std::vector<MeshRecord> meshes_;      // by Embree geometry id
-    std::vector<SphereRecord> spheres_;   // by primitive id of the one sphere geometry
-    unsigned sphereGeometry_ = RTC_INVALID_GEOMETRY_ID;
+    std::vector<ShapeEntry> shapes_;
+    std::vector<ObjectDefinition> objects_;
+    std::vector<ObjectInstance> instances_;
+    std::vector<WorldSlot> world_;         // by Embree geometry id
+    std::vector<ObjectScene> objectScenes_;  // by object index
     std::vector<std::unique_ptr<Light>> lights_;
 };
 
