@@ -58,7 +58,7 @@ TEST(AreaLights, EveryShapeGivesTheIrradianceItShould) {
         // A disk of radius 1 at height 2 facing down: pi r^2 / (r^2 + h^2).
         {light + "Translate 0 0 2\nReverseOrientation\nShape \"disk\"", M_PI / 5},
         // A unit square of two triangles 2 above: four corner rectangles of X = Y = a / h, each
-        // giving 2 X / sqrt(1 + X^2) atan(X / sqrt(1 + X^2)) / 2.
+        // giving X / sqrt(1 + X^2) atan(X / sqrt(1 + X^2)) times L.
         {light + "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] "
                  "\"point P\" [-0.5 -0.5 2  -0.5 0.5 2  0.5 0.5 2  0.5 -0.5 2]",
          4 * (0.5 / std::sqrt(4.25)) * std::atan(0.5 / std::sqrt(4.25))},
