@@ -79,7 +79,10 @@ void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
 Quadric::Quadric(const Transform& objectToGroup, bool reverseOrientation, double phiMaxDegrees)
     : phiMax_(std::clamp(phiMaxDegrees, 0.0, 360.0) * M_PI / 180),
       objectToGroup_(objectToGroup),
-      flip_(reverseOrientation != swapsHandedness(objectToGroup) ? -1.0f : 1.0f) {}
+      flip_(reverseOrientation != swapsHandedness(objectToGroup) ? -1.0f : 1.0f),
+      similarityScale_(isSimilarity(objectToGroup.forward) ? std::cbrt(std::fabs(determinant3(objectToGroup.forward))) : 0) {}
+
+Vec3f Quadric::toGroup(Vec3d p) const { return toFloat(apply(objectToGroup_.forward, p, 1)); }
 
 Vec3d Quadric::toObject(Vec3f p) const { return apply(objectToGroup_.backward, {p.x, p.y, p.z}, 1); }
 Vec3d Quadric::toObjectVector(Vec3f v) const { return apply(objectToGroup_.backward, {v.x, v.y, v.z}, 0); }
@@ -115,8 +118,8 @@ void Quadric::measure() {
     }
     groupBounds_ = {b[0], b[1], b[2], 0, b[3], b[4], b[5], 0};
 
-    if (isSimilarity(objectToGroup_.forward)) {
-        groupArea_ = objectArea() * std::pow(std::fabs(determinant3(objectToGroup_.forward)), 2.0 / 3.0);
+    if (similarityScale_ > 0) {
+        groupArea_ = objectArea() * similarityScale_ * similarityScale_;
         return;
     }
     // Otherwise integrate the local area growth over the surface: the mean of growth / density over
@@ -184,7 +187,7 @@ void Quadric::surface(Vec3f o, Vec3f d, float t, unsigned, float, float, Surface
     uv(p, u, v);
     h.u = float(u);
     h.v = float(v);
-    h.p = toFloat(apply(objectToGroup_.forward, p, 1));
+    h.p = toGroup(p);
     h.ng = h.ns = groupNormal(p, growth);
 }
 
@@ -193,7 +196,7 @@ ShapeSample Quadric::samplePrimitive(std::size_t, float u1, float u2) const {
     double growth;
     ShapeSample s;
     s.n = groupNormal(p, growth);
-    s.p = toFloat(apply(objectToGroup_.forward, p, 1));
+    s.p = toGroup(p);
     s.pdf = float(objectPdf(p) / growth);
     return s;
 }

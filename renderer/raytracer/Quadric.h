@@ -54,6 +54,11 @@ protected:
     virtual Vec3d sample(double u1, double u2) const = 0;
     virtual double objectPdf(Vec3d) const { return 1.0 / objectArea(); }
 
+    // The linear scale of objectToGroup when it is a similarity (a rotation, mirror and one scale
+    // factor: areas scale by one constant), else 0; and an object-space point in the group's space.
+    double similarityScale() const { return similarityScale_; }
+    Vec3f toGroup(Vec3d p) const;
+
     // The nearest root of a t^2 + b t + c = 0 in (tMin, tMax) whose point passes accepts().
     bool nearestRoot(double a, double b, double c, Vec3d o, Vec3d d, double tMin, double tMax, double& t) const;
 
@@ -66,6 +71,7 @@ private:
 
     Transform objectToGroup_;
     float flip_;               // -1: ReverseOrientation xor a handedness swap
+    double similarityScale_;
     double groupArea_ = 0;
     RTCBounds groupBounds_{};
 };

@@ -35,28 +35,27 @@ public:
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
 
 private:
-    // What one Embree geometry id of the world scene stands for: a shape (with the index of its
-    // first primitive's area light, when it emits) or an instance.
-    struct WorldSlot {
-        const ShapeEntry* shape = nullptr;
-        std::size_t firstLight = 0;
-        bool emits = false;
-        const ObjectInstance* instance = nullptr;
-    };
-    struct ObjectScene {
+    // One Embree scene: the world or an object. Its geometry ids name shapes, instances (world
+    // only) or the one batch of whole spheres, whose primitive ids name shapes in turn.
+    struct Group {
         RTCScene scene = nullptr;
-        std::vector<const ShapeEntry*> shapes;  // by Embree geometry id
+        std::vector<const ShapeEntry*> byGeometry;      // nullptr: the sphere batch or an instance
+        std::vector<const ObjectInstance*> instances;   // by geometry id; nullptr: not an instance
+        unsigned sphereBatch = RTC_INVALID_GEOMETRY_ID;
+        std::vector<const ShapeEntry*> spheres;         // by the batch's primitive id
     };
 
-    ObjectScene buildObject(const ObjectDefinition& object);
+    Group buildGroup(const std::vector<ShapeEntry>& shapes);
+    // The shape Embree hit, and its primitive.
+    static const ShapeEntry& hitShape(const Group& group, unsigned geomID, unsigned& prim);
 
     RTCDevice device_ = nullptr;
-    RTCScene scene_ = nullptr;
     std::vector<ShapeEntry> shapes_;
     std::vector<ObjectDefinition> objects_;
     std::vector<ObjectInstance> instances_;
-    std::vector<WorldSlot> world_;         // by Embree geometry id
-    std::vector<ObjectScene> objectScenes_;  // by object index
+    Group world_;
+    std::vector<Group> objectGroups_;          // by object index
+    std::vector<std::size_t> firstLight_;      // by world shape: its first primitive's area light
     std::vector<std::unique_ptr<Light>> lights_;
 };
 

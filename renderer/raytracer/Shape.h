@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,12 @@
 namespace lenslab {
 
 // A point drawn on a primitive, in the shape's space.
+// A whole sphere in the group's space, for Embree's own sphere primitive.
+struct EmbreeSphere {
+    Vec3f centre;
+    float radius = 0;
+};
+
 struct ShapeSample {
     Vec3f p;
     Vec3f n;          // oriented geometric normal (the side ReverseOrientation chose), unit
@@ -29,6 +36,10 @@ public:
     // Adds this shape to `scene` as one geometry; returns Embree's geometry id. The shape must outlive
     // the scene (user geometries keep a pointer to it).
     virtual unsigned attach(RTCDevice device, RTCScene scene) const = 0;
+    // Set for a whole sphere under a similarity: many of those are traced fastest as one batch of
+    // Embree's sphere primitive (one geometry each would cost Embree a lookup per primitive test);
+    // the batch calls surface() with primitive 0.
+    virtual std::optional<EmbreeSphere> embreeSphere() const { return std::nullopt; }
     // The surface record at a hit of ray (o, d) at distance t on primitive `prim`, with Embree's hit
     // (u, v) (barycentrics for triangles; unused for quadrics), in the shape's space: position,
     // oriented geometric normal, shading normal, pbrt-v3's (u, v).

@@ -15,6 +15,11 @@ public:
         : Quadric(toGroup, ro, phiMax), r_(r), zMin_(std::clamp(std::min(z0, z1), -r, r)),
           zMax_(std::clamp(std::max(z0, z1), -r, r)), thetaZMin_(std::acos(zMin_ / r)), thetaZMax_(std::acos(zMax_ / r)) {}
 
+    std::optional<EmbreeSphere> embreeSphere() const override {
+        if (!(similarityScale() > 0 && zMin_ <= -r_ && zMax_ >= r_ && phiMax_ >= 2 * M_PI)) return std::nullopt;
+        return EmbreeSphere{toGroup({0, 0, 0}), float(r_ * similarityScale())};
+    }
+
     double objectArea() const override { return phiMax_ * r_ * (zMax_ - zMin_); }
     void uv(Vec3d p, double& u, double& v) const override {
         u = azimuth(p.x, p.y) / phiMax_;
