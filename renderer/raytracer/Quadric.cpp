@@ -42,11 +42,9 @@ bool isSimilarity(const Matrix44& a) {
 }
 
 // Embree's user-geometry callbacks; lenslab traces single rays (rtcIntersect1/rtcOccluded1), so N is 1.
-void quadricBounds(const RTCBoundsFunctionArguments* args) {
-    *args->bounds_o = static_cast<const Quadric*>(args->geometryUserPtr)->groupBounds();
-}
-
 const Quadric& quadricOf(void* userPtr) { return *static_cast<const Quadric*>(userPtr); }
+
+void quadricBounds(const RTCBoundsFunctionArguments* args) { *args->bounds_o = quadricOf(args->geometryUserPtr).groupBounds(); }
 
 void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;

@@ -48,6 +48,24 @@ TEST(Quadrics, SphereUvAndNormalsFollowPbrt) {
     EXPECT_NEAR(it.hit.u, 0.75, 1e-6);
 }
 
+// pbrt-v3 flips a quadric's normal for ReverseOrientation and, separately, for a transform that
+// swaps handedness; both flips cancel.
+TEST(Quadrics, OrientationFollowsReverseOrientationAndMirrors) {
+    test::TempDir dir;
+    Intersection it;
+    const auto normalX = [&](const std::string& world) {
+        const auto g = test::geometryOf(dir, world);
+        EXPECT_TRUE(trace(*g, {5, 0.1f, 0}, {-1, 0, 0}, it)) << world;
+        return it.hit.ng.x;
+    };
+    for (const std::string cut : {"", " \"float phimax\" 300"}) {  // Embree's sphere batch, and the general quadric
+        EXPECT_GT(normalX("Shape \"sphere\"" + cut), 0.99f) << cut;
+        EXPECT_LT(normalX("ReverseOrientation\nShape \"sphere\"" + cut), -0.99f) << cut;
+        EXPECT_LT(normalX("Scale -1 1 1\nShape \"sphere\"" + cut), -0.99f) << cut;
+        EXPECT_GT(normalX("Scale -1 1 1\nReverseOrientation\nShape \"sphere\"" + cut), 0.99f) << cut;
+    }
+}
+
 TEST(Quadrics, PartialSphereClipsAndShowsItsInside) {
     test::TempDir dir;
     const auto g = test::geometryOf(dir, "Shape \"sphere\" \"float radius\" 1 \"float zmin\" -0.5 \"float zmax\" 0.75 "
