@@ -120,6 +120,20 @@ TEST(Instancing, AreaLightsInsideObjectsAreIgnoredWithAWarning) {
         << s.warnings.back();
 }
 
+// As pbrt-v3: a second ObjectBegin of a name replaces the object for the instances that follow.
+TEST(Instancing, RedefinedObjectsServeLaterInstances) {
+    test::TempDir dir;
+    const SceneDescription s = test::parseWorld(dir,
+        "ObjectBegin \"a\"\nShape \"sphere\"\nObjectEnd\nObjectInstance \"a\"\n"
+        "ObjectBegin \"a\"\nShape \"disk\"\nShape \"disk\"\nObjectEnd\nObjectInstance \"a\"\n");
+    ASSERT_EQ(s.instances.size(), 2u);
+    EXPECT_EQ(s.objects[s.instances[0].object].shapes.size(), 1u);
+    EXPECT_EQ(s.objects[s.instances[1].object].shapes.size(), 2u);
+    ASSERT_FALSE(s.warnings.empty());
+    EXPECT_NE(s.warnings.back().find("s.pbrt:9: ObjectBegin \"a\": redefines object \"a\""), std::string::npos)
+        << s.warnings.back();
+}
+
 TEST(Instancing, BadObjectUseIsAnError) {
     test::TempDir dir;
     const auto error = [&](const std::string& world) { return errorOf(test::shapeScene(dir, world)); };
