@@ -22,9 +22,9 @@ RTCScene newScene(RTCDevice device) {
     return s;
 }
 
-// Embree's instance transform: the affine 3x4 part, column by column.
 static_assert(sizeof(EmbreeSphere) == 4 * sizeof(float), "Embree reads spheres as x, y, z, radius");
 
+// Embree's instance transform: the affine 3x4 part, column by column.
 unsigned attachInstance(RTCDevice device, RTCScene world, RTCScene object, const Transform& toWorld) {
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(g, object);
