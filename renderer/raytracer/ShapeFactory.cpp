@@ -11,7 +11,7 @@ namespace lenslab {
 
 namespace {
 
-constexpr std::size_t kMaxTriangles = std::size_t(1) << 27;  // a mesh beyond this would not fit in memory
+constexpr std::size_t kMaxTriangles = std::size_t(1) << 25;  // 33 M triangles: about 3 GB once refined and built
 
 std::vector<std::uint32_t> triangleIndices(const ParamSet& p, std::size_t pointCount) {
     std::vector<int> idx = p.getInts("indices");
