@@ -1,6 +1,6 @@
 #pragma once
 // Light sources: point, spot, distant, infinite (constant) and diffuse area emitters on
-// triangles and spheres. Radiometric quantities in the scene's RGB; positions in metres.
+// shapes (AreaLight.h). Radiometric quantities in the scene's RGB; positions in metres.
 #include <limits>
 #include <memory>
 #include <string>
@@ -45,10 +45,5 @@ public:
 // with an environment map), goniometric, projection. `resolve` finds the image files they name.
 std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& params, const Transform& lightToWorld,
                                  const PathResolver& resolve, std::vector<std::string>& warnings);
-
-// Diffuse area emitters (AreaLightSource "diffuse"): radiance L leaving the side the normal
-// points to, or both sides.
-std::unique_ptr<Light> makeTriangleLight(Vec3f p0, Vec3f p1, Vec3f p2, Vec3f normal, Vec3f L, bool twoSided);
-std::unique_ptr<Light> makeSphereLight(Vec3f centre, float radius, bool inward, Vec3f L, bool twoSided);
 
 }  // namespace lenslab

@@ -82,82 +82,6 @@ private:
     float radius_ = 1;
 };
 
-// Area emitters sampled uniformly by area; pdf converted to solid angle at the shading point.
-class AreaLight : public Light {
-public:
-    AreaLight(Vec3f L, bool twoSided, float area) : L_(L), twoSided_(twoSided), area_(area) {}
-    bool sample(Vec3f p, float u1, float u2, LightSample& s) const override {
-        Vec3f n;
-        const Vec3f q = samplePoint(u1, u2, n);
-        const Vec3f d = q - p;
-        const float d2 = dot(d, d);
-        if (!(d2 > 0)) return false;
-        s.distance = std::sqrt(d2);
-        s.wi = d / s.distance;
-        const float cosL = dot(-s.wi, n);
-        if (!twoSided_ && cosL <= 0) return false;
-        if (std::fabs(cosL) < 1e-7f) return false;
-        s.pdf = d2 / (std::fabs(cosL) * area_);
-        s.radiance = L_;
-        s.delta = false;
-        return true;
-    }
-    float pdf(Vec3f p, Vec3f w, const SurfaceHit* at) const override {
-        if (!at) return 0;
-        const Vec3f d = at->p - p;
-        const float cosL = std::fabs(dot(w, normalAt(at->p)));
-        return cosL > 1e-7f ? dot(d, d) / (cosL * area_) : 0.0f;
-    }
-    Vec3f emitted(const SurfaceHit* at, Vec3f w) const override {
-        return at && (twoSided_ || dot(normalAt(at->p), w) < 0) ? L_ : Vec3f{};
-    }
-    Vec3f power() const override { return (twoSided_ ? 2.0f : 1.0f) * float(M_PI) * area_ * L_; }
-
-protected:
-    virtual Vec3f samplePoint(float u1, float u2, Vec3f& normal) const = 0;
-    virtual Vec3f normalAt(Vec3f q) const = 0;
-
-private:
-    Vec3f L_;
-    bool twoSided_;
-    float area_;
-};
-
-class TriangleLight : public AreaLight {
-public:
-    TriangleLight(Vec3f p0, Vec3f p1, Vec3f p2, Vec3f n, Vec3f L, bool twoSided)
-        : AreaLight(L, twoSided, 0.5f * length(cross(p1 - p0, p2 - p0))), p0_(p0), e1_(p1 - p0), e2_(p2 - p0), n_(n) {}
-
-protected:
-    Vec3f samplePoint(float u1, float u2, Vec3f& normal) const override {
-        const float r = std::sqrt(u1);
-        normal = n_;
-        return p0_ + (1 - r) * e1_ + (u2 * r) * e2_;
-    }
-    Vec3f normalAt(Vec3f) const override { return n_; }
-
-private:
-    Vec3f p0_, e1_, e2_, n_;
-};
-
-class SphereLight : public AreaLight {
-public:
-    SphereLight(Vec3f c, float r, bool inward, Vec3f L, bool twoSided)
-        : AreaLight(L, twoSided, 4.0f * float(M_PI) * r * r), c_(c), r_(r), sign_(inward ? -1.0f : 1.0f) {}
-
-protected:
-    Vec3f samplePoint(float u1, float u2, Vec3f& normal) const override {
-        const Vec3f d = uniformSphere(u1, u2);
-        normal = sign_ * d;
-        return c_ + r_ * d;
-    }
-    Vec3f normalAt(Vec3f q) const override { return sign_ * normalize(q - c_); }
-
-private:
-    Vec3f c_;
-    float r_, sign_;
-};
-
 }  // namespace
 
 std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& p, const Transform& toWorld,
@@ -204,14 +128,6 @@ std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& p, con
     }
     p.checkAllUsed(warnings, {"nsamples", "samples"});
     return light;
-}
-
-std::unique_ptr<Light> makeTriangleLight(Vec3f p0, Vec3f p1, Vec3f p2, Vec3f normal, Vec3f L, bool twoSided) {
-    return std::make_unique<TriangleLight>(p0, p1, p2, normal, L, twoSided);
-}
-
-std::unique_ptr<Light> makeSphereLight(Vec3f centre, float radius, bool inward, Vec3f L, bool twoSided) {
-    return std::make_unique<SphereLight>(centre, radius, inward, L, twoSided);
 }
 
 }  // namespace lenslab

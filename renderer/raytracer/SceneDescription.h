@@ -56,24 +56,6 @@ struct AreaEmission {
     bool twoSided = false;
 };
 
-struct TriangleMesh {
-    std::vector<Vec3f> p, n;        // world space; n empty or one per vertex
-    std::vector<float> uv;          // 2 per vertex, or empty
-    std::vector<std::uint32_t> indices;
-    std::shared_ptr<const Material> material;
-    std::optional<AreaEmission> emission;
-    bool flipNormals = false;       // ReverseOrientation xor a handedness-swapping transform
-};
-
-struct Sphere {
-    Transform objectToWorld;        // a similarity (uniform scale): the sphere stays a sphere
-    Vec3f centre;
-    float radius = 1;
-    std::shared_ptr<const Material> material;
-    std::optional<AreaEmission> emission;
-    bool flipNormals = false;
-};
-
 // A shape with its look: material and, for an emitter, its diffuse area light.
 struct ShapeEntry {
     std::shared_ptr<const Shape> shape;
@@ -101,8 +83,6 @@ struct SceneDescription {
     int pixelSamples = 16;
     FilterSpec filter;
     IntegratorSpec integrator;
-    std::vector<TriangleMesh> meshes;        // superseded by shapes (being moved over)
-    std::vector<Sphere> spheres;             // superseded by shapes (being moved over)
     std::vector<ShapeEntry> shapes;          // world space
     std::vector<ObjectDefinition> objects;
     std::vector<ObjectInstance> instances;

@@ -1,6 +1,8 @@
 #pragma once
-// The world's geometry in Embree 3: triangle meshes, and spheres as Embree's analytic sphere
-// primitive. Answers closest-hit and shadow queries and turns hits into shading records.
+// The scene's geometry in Embree 3: the world's shapes in one scene, every instanced object in a
+// scene of its own that each ObjectInstance places with an Embree instance (one copy of the object
+// however many instances). Answers closest-hit and shadow queries and turns hits into world-space
+// shading records.
 #include <embree3/rtcore.h>
 
 #include <memory>
@@ -21,8 +23,8 @@ struct Intersection {
 
 class SceneGeometry {
 public:
-    // Takes the shapes from the scene and creates an area light for every emitting triangle or
-    // sphere; lights() holds those and the scene's other lights.
+    // Takes the shapes, objects, instances and lights from the scene, creates an area light for every
+    // primitive of an emitting world shape, and tells every light the scene's bounding sphere.
     explicit SceneGeometry(SceneDescription& scene);
     ~SceneGeometry();
     SceneGeometry(const SceneGeometry&) = delete;
@@ -33,20 +35,27 @@ public:
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
 
 private:
-    struct MeshRecord {
-        TriangleMesh mesh;
-        std::vector<const Light*> triangleLights;  // per triangle, when the mesh emits
-    };
-    struct SphereRecord {
-        Sphere sphere;
-        const Light* light = nullptr;
+    // One Embree scene: the world or an object. Its geometry ids name shapes, instances (world
+    // only) or the one batch of whole spheres, whose primitive ids name shapes in turn.
+    struct Group {
+        RTCScene scene = nullptr;
+        std::vector<const ShapeEntry*> byGeometry;      // nullptr: the sphere batch or an instance
+        std::vector<const ObjectInstance*> instances;   // by geometry id; nullptr: not an instance
+        unsigned sphereBatch = RTC_INVALID_GEOMETRY_ID;
+        std::vector<const ShapeEntry*> spheres;         // by the batch's primitive id
     };
 
+    Group buildGroup(const std::vector<ShapeEntry>& shapes);
+    // The shape Embree hit, and its primitive.
+    static const ShapeEntry& hitShape(const Group& group, unsigned geomID, unsigned& prim);
+
     RTCDevice device_ = nullptr;
-    RTCScene scene_ = nullptr;
-    std::vector<MeshRecord> meshes_;      // by Embree geometry id
-    std::vector<SphereRecord> spheres_;   // by primitive id of the one sphere geometry
-    unsigned sphereGeometry_ = RTC_INVALID_GEOMETRY_ID;
+    std::vector<ShapeEntry> shapes_;
+    std::vector<ObjectDefinition> objects_;
+    std::vector<ObjectInstance> instances_;
+    Group world_;
+    std::vector<Group> objectGroups_;          // by object index
+    std::vector<std::size_t> firstLight_;      // by world shape: its first primitive's area light
     std::vector<std::unique_ptr<Light>> lights_;
 };
 

@@ -78,6 +78,7 @@ public:
     }
 
     void finish() {
+        if (object_) sceneFail(objectWhere_, "not closed by ObjectEnd");
         if (!stack_.empty())
             sceneFail(stack_.back().where, "not closed by " + std::string(stack_.back().attribute ? "AttributeEnd" : "TransformEnd"));
         if (!worldBegun_) throw SceneError(scene_.file + ": no WorldBegin: the scene describes no world");
@@ -165,6 +166,9 @@ private:
             {"WorldBegin", {&Parser::worldBegin, Phase::Options}},
             {"WorldEnd", {&Parser::worldEnd, Phase::World}},
             {"Shape", {&Parser::shapeDirective, Phase::World}},
+            {"ObjectBegin", {&Parser::objectBegin, Phase::World}},
+            {"ObjectEnd", {&Parser::objectEnd, Phase::World}},
+            {"ObjectInstance", {&Parser::objectInstance, Phase::World}},
             {"Material", {&Parser::material, Phase::World}},
             {"MakeNamedMaterial", {&Parser::makeNamedMaterial, Phase::World}},
             {"NamedMaterial", {&Parser::namedMaterial, Phase::World}},
@@ -457,64 +461,49 @@ private:
 
 
     void shape(SourceLocation& where) {
-        const std::string type = quoted(where, "a shape type");
-        where.directive += " \"" + type + "\"";
+        const std::string type = typeName(where, "a shape type");
         const ParamSet p = params(where);
-        const bool flip = g_.reverseOrientation != swapsHandedness(g_.ctm);
-        if (type == "sphere") {
-            Sphere s;
-            s.objectToWorld = g_.ctm;
-            const double r = p.getFloat("radius", 1);
-            if (!(r > 0)) p.fail("radius must be positive");
-            if (p.getFloat("zmin", -r) > -r || p.getFloat("zmax", r) < r || p.getFloat("phimax", 360) < 360)
-                p.fail("partial spheres (zmin, zmax, phimax) are not supported");
-            // A sphere stays a sphere only under a similarity: equal, orthogonal axis images.
-            const Vec3f ax = transformVector(g_.ctm, {1, 0, 0}), ay = transformVector(g_.ctm, {0, 1, 0}),
-                        az = transformVector(g_.ctm, {0, 0, 1});
-            const float lx = length(ax), ly = length(ay), lz = length(az);
-            const float tol = 1e-4f * lx;
-            if (std::fabs(lx - ly) > tol || std::fabs(lx - lz) > tol || std::fabs(dot(ax, ay)) > tol * lx ||
-                std::fabs(dot(ax, az)) > tol * lx || std::fabs(dot(ay, az)) > tol * lx)
-                p.fail("a sphere under a non-uniform scale or shear is not supported");
-            s.centre = transformPoint(g_.ctm, {0, 0, 0});
-            s.radius = float(r) * lx;
-            s.material = g_.material;
-            s.emission = g_.area;
-            s.flipNormals = flip;
-            scene_.spheres.push_back(s);
-        } else if (type == "trianglemesh") {
-            TriangleMesh m;
-            const std::vector<Vec3f> P = p.getPoints("P");
-            if (P.size() < 3) p.fail("trianglemesh needs at least 3 points \"P\"");
-            std::vector<int> idx = p.getInts("indices");
-            if (idx.empty()) {
-                if (P.size() != 3) p.fail("trianglemesh needs \"indices\" (only a single triangle may omit them)");
-                idx = {0, 1, 2};
-            }
-            if (idx.size() % 3 != 0) p.fail("\"indices\" count " + std::to_string(idx.size()) + " is not a multiple of 3");
-            for (int i : idx)
-                if (i >= static_cast<int>(P.size()))
-                    p.fail("index " + std::to_string(i) + " out of range (" + std::to_string(P.size()) + " points)");
-            const std::vector<Vec3f> N = p.getPoints("N");
-            if (!N.empty() && N.size() != P.size()) p.fail("\"N\" needs one normal per point");
-            std::vector<double> uv = p.has("uv") ? p.getFloats("uv") : p.getFloats("st");
-            if (!uv.empty() && uv.size() != 2 * P.size()) p.fail("\"uv\" needs two numbers per point");
-            for (const Vec3f& x : P) m.p.push_back(transformPoint(g_.ctm, x));
-            for (const Vec3f& n : N) m.n.push_back(normalize(transformNormal(g_.ctm, n)));
-            for (double x : uv) m.uv.push_back(float(x));
-            for (int i : idx) m.indices.push_back(static_cast<std::uint32_t>(i));
-            m.material = g_.material;
-            m.emission = g_.area;
-            m.flipNormals = flip;
-            scene_.meshes.push_back(std::move(m));
-        } else if (type == "plymesh") {
-            p.fail("plymesh is not supported (no PLY reader in lenslab); convert the mesh to a trianglemesh");
-        } else {
-            p.fail("shape \"" + type + "\" is not supported (sphere, trianglemesh)");
+        std::optional<AreaEmission> emission = g_.area;
+        if (emission && object_) {
+            warn(where, "area lights inside ObjectBegin are not supported (as in pbrt-v3); this shape does not emit");
+            emission.reset();
         }
-        p.checkAllUsed(scene_.warnings);
+        std::vector<ShapeEntry>& group = object_ ? scene_.objects[*object_].shapes : scene_.shapes;
+        for (auto& s : makeShapes(type, p, g_.ctm, g_.reverseOrientation, resolver(), scene_.warnings))
+            group.push_back({std::move(s), g_.material, emission});
     }
 
+    // pbrt-v3: ObjectBegin opens an attribute block that ObjectEnd closes; shapes inside keep the
+    // current transform as the object's own space.
+    void objectBegin(SourceLocation& where, int) {
+        const std::string n = typeName(where, "an object name");
+        if (object_) sceneFail(where, "inside the definition of object \"" + scene_.objects[*object_].name + "\" (objects do not nest)");
+        stack_.push_back({true, g_, where});
+        objectDepth_ = stack_.size();
+        objectWhere_ = where;
+        if (objectIndex_.count(n)) warn(where, "redefines object \"" + n + "\" for the instances that follow");
+        objectIndex_[n] = scene_.objects.size();
+        object_ = scene_.objects.size();
+        scene_.objects.push_back({n, {}});
+    }
+
+    void objectEnd(SourceLocation& where, int) {
+        if (!object_) sceneFail(where, "without a matching ObjectBegin");
+        if (stack_.size() != objectDepth_)
+            sceneFail(where, "AttributeBegin/AttributeEnd inside object \"" + scene_.objects[*object_].name + "\" do not pair up");
+        g_ = stack_.back().state;
+        stack_.pop_back();
+        object_.reset();
+    }
+
+    void objectInstance(SourceLocation& where, int) {
+        const std::string n = typeName(where, "an object name");
+        if (object_) sceneFail(where, "inside the definition of object \"" + scene_.objects[*object_].name + "\"");
+        const auto it = objectIndex_.find(n);
+        if (it == objectIndex_.end()) sceneFail(where, "unknown object \"" + n + "\" (no ObjectBegin defines it before here)");
+        scene_.instances.push_back({it->second, g_.ctm});
+        warnIfMoving(where);
+    }
 
     SceneDescription& scene_;
     SceneParseOptions options_;
@@ -524,6 +513,10 @@ private:
     std::map<std::string, TransformPair> namedCoordinates_;
     std::map<std::string, std::shared_ptr<const Material>> namedMaterials_;
     TextureMap textures_;
+    std::map<std::string, std::size_t> objectIndex_;  // the latest definition of each object name
+    std::optional<std::size_t> object_;                // the object being defined
+    std::size_t objectDepth_ = 0;                      // stack_ size inside its ObjectBegin block
+    SourceLocation objectWhere_;                       // its ObjectBegin
     bool worldBegun_ = false, worldEnded_ = false;
     std::vector<TokenCursor> files_;  // the file being read and those that Include it
 };

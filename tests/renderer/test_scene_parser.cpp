@@ -45,16 +45,19 @@ TEST(SceneParser, TransformsPlaceShapesAsPbrtDoes) {
         "Shape \"sphere\"\n"
         "WorldEnd\n");
     const SceneDescription s = parseSceneFile(scene);
-    ASSERT_EQ(s.spheres.size(), 2u);
-    EXPECT_FLOAT_EQ(s.spheres[0].centre.x, 1);
-    EXPECT_FLOAT_EQ(s.spheres[0].centre.y, 2);
-    EXPECT_FLOAT_EQ(s.spheres[0].centre.z, 3);
-    EXPECT_FLOAT_EQ(s.spheres[0].radius, 1.0f);
-    EXPECT_FLOAT_EQ(s.spheres[1].centre.x, 0);  // attributes restored
-    EXPECT_FLOAT_EQ(s.spheres[1].radius, 1.0f);
-    ASSERT_EQ(s.meshes.size(), 1u);
-    EXPECT_NEAR(s.meshes[0].p[0].x, 0, 1e-6);   // (1,0,0) rotated 90 degrees about z
-    EXPECT_NEAR(s.meshes[0].p[0].y, 1, 1e-6);
+    ASSERT_EQ(s.shapes.size(), 3u);
+    // Points drawn on each shape: the sphere's equator at phi = 0, the triangle's first corner.
+    const Vec3f onBall = s.shapes[0].shape->samplePrimitive(0, 0.5f, 0).p;
+    EXPECT_NEAR(onBall.x, 2, 1e-5);  // centre (1, 2, 3), radius 2 * 0.5
+    EXPECT_NEAR(onBall.y, 2, 1e-5);
+    EXPECT_NEAR(onBall.z, 3, 1e-5);
+    EXPECT_NEAR(s.shapes[0].shape->primitiveArea(0), 4 * M_PI, 1e-4);
+    const Vec3f corner = s.shapes[1].shape->samplePrimitive(0, 1, 0).p;
+    EXPECT_NEAR(corner.x, 0, 1e-6);  // (1,0,0) rotated 90 degrees about z
+    EXPECT_NEAR(corner.y, 1, 1e-6);
+    const Vec3f onUnitBall = s.shapes[2].shape->samplePrimitive(0, 0.5f, 0).p;  // attributes restored
+    EXPECT_NEAR(onUnitBall.x, 1, 1e-6);
+    EXPECT_NEAR(onUnitBall.y, 0, 1e-6);
     EXPECT_EQ(s.camera.type, "perspective");
     EXPECT_EQ(s.film.xresolution, 16);
 }
@@ -63,7 +66,7 @@ TEST(SceneParser, IncludeReachesAnywhereUnlessConfined) {
     test::TempDir dir;
     dir.write("parts/ball.pbrt", "Shape \"sphere\" \"float radius\" 2\n");
     const std::string up = dir.write("scene/s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"../parts/ball.pbrt\"\nWorldEnd\n");
-    EXPECT_EQ(parseSceneFile(up).spheres.size(), 1u);  // the command line: the user's own files
+    EXPECT_EQ(parseSceneFile(up).shapes.size(), 1u);  // the command line: the user's own files
     try {
         parseSceneFile(up, {true});
         ADD_FAILURE() << "a confined scene reached outside its folder";
@@ -71,7 +74,7 @@ TEST(SceneParser, IncludeReachesAnywhereUnlessConfined) {
         EXPECT_NE(std::string(e.what()).find("outside the scene's folder"), std::string::npos) << e.what();
     }
     const std::string inside = dir.write("s2.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"parts/ball.pbrt\"\nWorldEnd\n");
-    EXPECT_EQ(parseSceneFile(inside).spheres.size(), 1u);
+    EXPECT_EQ(parseSceneFile(inside).shapes.size(), 1u);
 }
 
 TEST(SceneErrors, UnknownDirectiveNamesFileLineAndDirective) {
@@ -130,7 +133,10 @@ TEST(SceneErrors, UnsupportedFeaturesAreNamedNeverIgnored) {
         const std::string e = errorOf(p);
         EXPECT_NE(e.find(expected), std::string::npos) << e;
     };
+    check("Shape \"plymesh\" \"string filename\" \"x.ply\"", "cannot open 'x.ply'");
+    check("Shape \"curve\" \"point P\" [0 0 0 1 0 0 2 0 0 3 0 0]", "shape \"curve\" is not supported");
     check("Material \"metal\"", "material \"metal\" is not supported");
+    check("ObjectBegin \"x\"", "u.pbrt:5: ObjectBegin \"x\": not closed by ObjectEnd");
     check("AttributeBegin\nShape \"sphere\"", "not closed by AttributeEnd");
 }
 

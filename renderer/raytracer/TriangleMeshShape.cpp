@@ -1,0 +1,102 @@
+#include "TriangleMeshShape.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "Render.h"
+
+namespace lenslab {
+
+namespace {
+
+class TriangleMeshShape : public Shape {
+public:
+    TriangleMeshShape(MeshData mesh, bool flipNormals) : m_(std::move(mesh)), flip_(flipNormals) {}
+
+    unsigned attach(RTCDevice device, RTCScene scene) const override {
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<Vec3f*>(
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(Vec3f), m_.p.size()));
+        auto* ix = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                       3 * sizeof(std::uint32_t), m_.indices.size() / 3));
+        if (!v || !ix) {
+            rtcReleaseGeometry(g);
+            throw SceneError("Embree: out of memory for a mesh of " + std::to_string(m_.indices.size() / 3) + " triangles");
+        }
+        std::copy(m_.p.begin(), m_.p.end(), v);
+        std::copy(m_.indices.begin(), m_.indices.end(), ix);
+        rtcCommitGeometry(g);
+        const unsigned id = rtcAttachGeometry(scene, g);
+        rtcReleaseGeometry(g);
+        return id;
+    }
+
+    void surface(Vec3f, Vec3f, float, unsigned prim, float b1, float b2, SurfaceHit& h) const override {
+        const std::uint32_t* i = &m_.indices[3 * prim];
+        const float b0 = 1.0f - b1 - b2;
+        h.p = b0 * m_.p[i[0]] + b1 * m_.p[i[1]] + b2 * m_.p[i[2]];
+        h.ng = orientedNormal(prim);
+        h.ns = h.ng;
+        if (!m_.n.empty()) {
+            const Vec3f ns = b0 * m_.n[i[0]] + b1 * m_.n[i[1]] + b2 * m_.n[i[2]];
+            const float len = length(ns);
+            if (len > 0) h.ns = dot(ns, h.ng) >= 0 ? ns / len : -ns / len;  // SurfaceHit: ns on ng's side
+        }
+        if (!m_.uv.empty()) {
+            h.u = b0 * m_.uv[2 * i[0]] + b1 * m_.uv[2 * i[1]] + b2 * m_.uv[2 * i[2]];
+            h.v = b0 * m_.uv[2 * i[0] + 1] + b1 * m_.uv[2 * i[1] + 1] + b2 * m_.uv[2 * i[2] + 1];
+        } else {  // pbrt's default per-triangle (0,0), (1,0), (1,1)
+            h.u = b1 + b2;
+            h.v = b2;
+        }
+    }
+
+    std::size_t primitiveCount() const override { return m_.indices.size() / 3; }
+
+    float primitiveArea(std::size_t prim) const override {
+        const std::uint32_t* i = &m_.indices[3 * prim];
+        return 0.5f * length(cross(m_.p[i[1]] - m_.p[i[0]], m_.p[i[2]] - m_.p[i[0]]));
+    }
+
+    ShapeSample samplePrimitive(std::size_t prim, float u1, float u2) const override {
+        const std::uint32_t* i = &m_.indices[3 * prim];
+        const Vec3f p0 = m_.p[i[0]], e1 = m_.p[i[1]] - p0, e2 = m_.p[i[2]] - p0;
+        const float r = std::sqrt(u1);
+        return {p0 + (1 - r) * e1 + (u2 * r) * e2, orientedNormal(prim), 1.0f / primitiveArea(prim)};
+    }
+
+    float primitivePdf(std::size_t prim, const SurfaceHit&) const override { return 1.0f / primitiveArea(prim); }
+
+private:
+    // pbrt-v3's rule: the face normal (p1 - p0) x (p2 - p0) turned toward the shading normals when the
+    // mesh has them, otherwise flipped by ReverseOrientation or a mirroring transform.
+    Vec3f orientedNormal(std::size_t prim) const {
+        const std::uint32_t* i = &m_.indices[3 * prim];
+        Vec3f n = cross(m_.p[i[1]] - m_.p[i[0]], m_.p[i[2]] - m_.p[i[0]]);
+        const float len = length(n);
+        n = len > 0 ? n / len : Vec3f{0, 0, 1};
+        if (!m_.n.empty()) {
+            if (dot(n, m_.n[i[0]] + m_.n[i[1]] + m_.n[i[2]]) < 0) n = -n;
+        } else if (flip_) {
+            n = -n;
+        }
+        return n;
+    }
+
+    MeshData m_;
+    bool flip_;
+};
+
+}  // namespace
+
+std::shared_ptr<const Shape> makeTriangleMesh(MeshData mesh, const Transform& objectToGroup, bool reverseOrientation) {
+    for (Vec3f& p : mesh.p) p = transformPoint(objectToGroup, p);
+    for (Vec3f& n : mesh.n) {
+        n = transformNormal(objectToGroup, n);
+        const float len = length(n);
+        if (len > 0) n = n / len;
+    }
+    return std::make_shared<TriangleMeshShape>(std::move(mesh), reverseOrientation != swapsHandedness(objectToGroup));
+}
+
+}  // namespace lenslab
