@@ -111,8 +111,8 @@ std::shared_ptr<const Shape> makeHyperboloid(const ParamSet& params, const Trans
         ah = (1.0f / xy1 - (ppz * ppz) / (xy1 * qz * qz)) / (1 - (xy2 * ppz * ppz) / (xy1 * qz * qz));
         ch = (ah * xy2 - 1) / (qz * qz);
     }
-    if (!std::isfinite(ah) || !std::isfinite(ch) || !(ah > 0))
-        params.fail("p1 and p2 describe no hyperboloid of one sheet (the line through them meets the z axis?)");
+    if (!std::isfinite(ah) || !std::isfinite(ch))
+        params.fail("p1 and p2 describe no hyperboloid (the line through them meets the z axis?)");
     auto s = std::make_shared<Hyperboloid>(p1, p2, ah, ch, phiMax, toGroup, ro);
     if (!(s->radius2(p1.z) >= 0 && s->radius2(p2.z) >= 0))
         params.fail("p1 and p2 describe no hyperboloid of one sheet over their z range");

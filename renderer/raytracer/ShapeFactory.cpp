@@ -1,6 +1,7 @@
 // Shape "TYPE": pbrt-v3's shapes by name, with their parameters.
 #include <stdexcept>
 
+#include "CurveShape.h"
 #include "LoopSubdivision.h"
 #include "PlyMesh.h"
 #include "Quadric.h"
@@ -116,13 +117,14 @@ std::vector<std::shared_ptr<const Shape>> makeShapes(const std::string& type, co
     } else if (type == "loopsubdiv") {
         shape = loopSubdivisionSurface(p, toGroup, ro);
     } else if (type == "curve") {
-        p.fail("shape \"curve\" is not supported (hair and fur): lenslab has no curve primitive yet");
+        shape = makeCurve(p, toGroup);
     } else {
         p.fail("shape \"" + type + "\" is not supported (sphere, disk, cylinder, cone, paraboloid, hyperboloid, "
-               "trianglemesh, plymesh, loopsubdiv)");
+               "trianglemesh, plymesh, loopsubdiv, curve)");
     }
     // Tangents ("S") only turn an anisotropic shading frame; lenslab's materials are isotropic.
-    p.checkAllUsed(warnings, {"S", "faceIndices", "scheme"});
+    // Embree intersects curves directly, without pbrt-v3's "splitdepth" refinement.
+    p.checkAllUsed(warnings, {"S", "faceIndices", "scheme", "splitdepth"});
     return {shape};
 }
 

@@ -134,7 +134,6 @@ TEST(SceneErrors, UnsupportedFeaturesAreNamedNeverIgnored) {
         EXPECT_NE(e.find(expected), std::string::npos) << e;
     };
     check("Shape \"plymesh\" \"string filename\" \"x.ply\"", "cannot open 'x.ply'");
-    check("Shape \"curve\" \"point P\" [0 0 0 1 0 0 2 0 0 3 0 0]", "shape \"curve\" is not supported");
     check("Material \"metal\"", "material \"metal\" is not supported");
     check("ObjectBegin \"x\"", "u.pbrt:5: ObjectBegin \"x\": not closed by ObjectEnd");
     check("AttributeBegin\nShape \"sphere\"", "not closed by AttributeEnd");
