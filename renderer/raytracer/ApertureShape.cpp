@@ -1,9 +1,9 @@
 #include "ApertureShape.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <stdexcept>
+
+#include "ImageFileReader.h"
 
 namespace lenslab {
 
@@ -75,22 +75,24 @@ ApertureShape ApertureShape::named(const std::string& name) {
 }
 
 ApertureShape ApertureShape::fromImage(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw std::runtime_error("cannot read the aperture image '" + path + "': " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<float> all(std::size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
-        throw std::runtime_error("cannot read the aperture image '" + path + "': " + in->geterror());
+    DecodedImage image;
+    try {
+        image = readImageFile(path);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error("cannot read the aperture image '" + path + "': " + e.what());
+    }
+    const DecodedImage& spec = image;
+    const std::vector<float>& all = image.pixels;
     ApertureShape s;
     s.kind_ = Kind::Image;
     s.name_ = path;
     s.width_ = spec.width;
     s.height_ = spec.height;
-    const int colours = spec.nchannels >= 3 ? 3 : 1;  // an alpha channel is not light
+    const int colours = spec.channels >= 3 ? 3 : 1;  // an alpha channel is not light
     double sum = 0;
     for (std::size_t p = 0; p < std::size_t(spec.width) * spec.height; ++p) {
         float grey = 0;
-        for (int c = 0; c < colours; ++c) grey += all[p * spec.nchannels + c];
+        for (int c = 0; c < colours; ++c) grey += all[p * spec.channels + c];
         s.pixels_.push_back(std::max(0.0f, grey / colours));
         sum += s.pixels_.back();
     }
