@@ -57,7 +57,7 @@ PixelFilter::Axis PixelFilter::makeAxis(const FilterSpec& spec, double width) {
         signedSum += mean;
         absSum += std::fabs(mean);
     }
-    Axis axis{width, PiecewiseConstant1D(std::move(absolute)), {}};
+    Axis axis{width, spec.type == FilterType::Box, PiecewiseConstant1D(std::move(absolute)), {}};
     const float norm = signedSum > 0 ? float(absSum / signedSum) : 1.0f;
     axis.signedWeight.resize(kBins);
     for (int i = 0; i < kBins; ++i) axis.signedWeight[i] = sign[i] * norm;
@@ -65,6 +65,10 @@ PixelFilter::Axis PixelFilter::makeAxis(const FilterSpec& spec, double width) {
 }
 
 float PixelFilter::Axis::sample(float u, float& weight) const {
+    if (uniform) {
+        weight = 1;
+        return float((2.0 * u - 1.0) * width);
+    }
     float pdf;
     std::size_t bin;
     const float x = absolute.sampleContinuous(u, pdf, bin);

@@ -27,6 +27,7 @@ private:
     // One axis: |f| tabulated on [-width, width] and the sign of f per bin.
     struct Axis {
         double width = 0.5;
+        bool uniform = false;  // box: no table to search, every weight 1
         PiecewiseConstant1D absolute;
         std::vector<float> signedWeight;  // sign(f) * integral |f| / integral f, per bin
         float sample(float u, float& weight) const;
