@@ -1,0 +1,114 @@
+// The imagemap texture: images written here as EXR and PNG through OpenImageIO, read back at
+// texel centres (exact), between them (bilinear), outside [0, 1] per wrap mode, with scale,
+// invert and sRGB decoding as pbrt-v3 (and pbrt-v4 for invert) define them.
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+#include "TempDir.h"
+#include "TextureTests.h"
+
+namespace lenslab {
+namespace {
+
+using namespace test;
+
+// Pixels row by row from the top, RGB.
+void writeImage(const std::string& path, int w, int h, OIIO::TypeDesc format, const std::vector<float>& rgb) {
+    auto out = OIIO::ImageOutput::create(path);
+    ASSERT_TRUE(out) << OIIO::geterror();
+    ASSERT_TRUE(out->open(path, OIIO::ImageSpec(w, h, 3, format)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()));
+    out->close();
+}
+
+// A 2x2 float image: top row A B, bottom row C D. pbrt-v3 puts t = 0 at the bottom, so texel
+// centres (s, t) = (0.25, 0.25) is C, (0.75, 0.25) D, (0.25, 0.75) A, (0.75, 0.75) B.
+const Vec3f A{0.1f, 0.2f, 0.3f}, B{1.5f, 2.5f, 3.5f}, C{0.123456789f, 7.25f, -0.5f}, D{0.0625f, 1e-3f, 100};
+
+std::string writeExr(const TempDir& dir) {
+    const std::string path = dir.path() + "/quad.exr";
+    writeImage(path, 2, 2, OIIO::TypeDesc::FLOAT, {A.x, A.y, A.z, B.x, B.y, B.z, C.x, C.y, C.z, D.x, D.y, D.z});
+    return path;
+}
+
+std::shared_ptr<const Texture> image(const std::string& path, std::vector<Param> more = {},
+                                     TextureKind kind = TextureKind::Spectrum) {
+    more.push_back(stringParam("filename", path));
+    return texture("imagemap", std::move(more), kind);
+}
+
+TEST(ImageTexture, ExrTexelsComeBackExactlyWithTheBottomRowAtTZero) {
+    TempDir dir;
+    auto t = image(writeExr(dir));
+    expectRgb(t->evaluate(hitAt(0.25f, 0.25f)), C, 0);
+    expectRgb(t->evaluate(hitAt(0.75f, 0.25f)), D, 0);
+    expectRgb(t->evaluate(hitAt(0.25f, 0.75f)), A, 0);
+    expectRgb(t->evaluate(hitAt(0.75f, 0.75f)), B, 0);
+    expectRgb(t->evaluate(hitAt(0.5f, 0.5f)), 0.25f * (A + B + C + D), 1e-4f);  // bilinear between centres
+    expectRgb(t->evaluate(hitAt(0.5f, 0.25f)), 0.5f * (C + D), 1e-5f);
+}
+
+TEST(ImageTexture, WrapModesOutsideTheUnitSquare) {
+    TempDir dir;
+    const std::string path = writeExr(dir);
+    auto repeat = image(path);
+    auto clamp = image(path, {stringParam("wrap", "clamp")});
+    auto black = image(path, {stringParam("wrap", "black")});
+    // Texel centres one column right of the image (s = 1.25) and one left (s = -0.25).
+    expectRgb(repeat->evaluate(hitAt(1.25f, 0.25f)), C, 0);
+    expectRgb(repeat->evaluate(hitAt(-0.25f, 0.75f)), B, 0);
+    expectRgb(repeat->evaluate(hitAt(3.25f, -1.25f)), A, 0);
+    expectRgb(clamp->evaluate(hitAt(1.25f, 0.25f)), D, 0);
+    expectRgb(clamp->evaluate(hitAt(-7.0f, 9.0f)), A, 0);
+    expectRgb(black->evaluate(hitAt(1.25f, 0.25f)), {0, 0, 0}, 0);
+    expectRgb(black->evaluate(hitAt(0.25f, -0.25f)), {0, 0, 0}, 0);
+    expectRgb(black->evaluate(hitAt(1.0f, 0.25f)), 0.5f * D, 1e-6f);  // half way to the black border
+    EXPECT_THROW(image(path, {stringParam("wrap", "mirror")}), SceneError);
+}
+
+TEST(ImageTexture, ScaleThenInvert) {
+    TempDir dir;
+    const std::string path = writeExr(dir);
+    expectRgb(image(path, {floatParam("scale", 0.5)})->evaluate(hitAt(0.25f, 0.75f)), 0.5f * A, 0);
+    // invert: max(0, 1 - scale value).
+    expectRgb(image(path, {floatParam("scale", 0.5), boolParam("invert", true)})->evaluate(hitAt(0.25f, 0.25f)),
+              {1 - 0.5f * C.x, 0, 1.25f}, 1e-6f);
+}
+
+TEST(ImageTexture, EightBitImagesAreSrgbDecodedUnlessGammaIsFalse) {
+    TempDir dir;
+    const std::string png = dir.path() + "/pair.png";
+    writeImage(png, 2, 1, OIIO::TypeDesc::UINT8, {128 / 255.0f, 64 / 255.0f, 1, 0, 0, 0});
+    const auto decode = [](float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); };
+    const float r = 128 / 255.0f, g = 64 / 255.0f;
+    expectRgb(image(png)->evaluate(hitAt(0.25f, 0.5f)), {decode(r), decode(g), 1}, 1e-6f);
+    expectRgb(image(png, {boolParam("gamma", false)})->evaluate(hitAt(0.25f, 0.5f)), {r, g, 1}, 1e-6f);
+    // A float imagemap: the luminance of the stored values, then decoded (pbrt-v3's order).
+    const float y = 0.212671f * r + 0.715160f * g + 0.072169f;
+    expectRgb(image(png, {}, TextureKind::Float)->evaluate(hitAt(0.25f, 0.5f)), {decode(y), decode(y), decode(y)}, 1e-6f);
+    // "point" filtering takes the nearest texel: no blend with the black right texel.
+    expectRgb(image(png, {stringParam("filter", "point")})->evaluate(hitAt(0.45f, 0.5f)), {decode(r), decode(g), 1}, 1e-6f);
+    // A float EXR is linear: no decoding by default.
+    expectRgb(image(writeExr(dir))->evaluate(hitAt(0.25f, 0.75f)), A, 0);
+}
+
+TEST(ImageTexture, MissingOrUnreadableImageNamesTheFile) {
+    TempDir dir;
+    try {
+        image(dir.path() + "/nowhere.png");
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("nowhere.png"), std::string::npos) << e.what();
+    }
+    const std::string junk = dir.write("junk.png", "not an image");
+    try {
+        image(junk);
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("junk.png"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace lenslab
