@@ -6,10 +6,14 @@
 // finest level bilinearly, which is what lenslab does for every "filter" but "point" (nearest
 // texel); the pixel samples do the antialiasing. Unlike pbrt-v3, images whose sides are not powers
 // of two are used as they are, not resampled up to powers of two.
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <variant>
 
 #include "Material.h"
 #include "RgbImageFile.h"
@@ -22,113 +26,157 @@ namespace {
 
 enum class Wrap { Repeat, Black, Clamp };
 
-// Linear texel values, row 0 at the bottom of the image.
-template <typename T>
-struct TexelGrid {
-    int width = 0, height = 0;
-    std::vector<T> texels;
+// An 8-bit file's texel as stored: a quarter of the memory of floats, since lookups into large
+// images are bound by memory traffic.
+struct Rgb8 {
+    std::uint8_t r = 0, g = 0, b = 0, unused = 0;
 };
 
 float srgbDecode(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
+// The linear value of each byte: sRGB-decoded, or k / 255.
+const float* byteValues(bool decode) {
+    static const auto tables = [] {
+        std::array<std::array<float, 256>, 2> t{};
+        for (int k = 0; k < 256; ++k) {
+            t[0][k] = float(k) / 255.0f;
+            t[1][k] = srgbDecode(float(k) / 255.0f);
+        }
+        return t;
+    }();
+    return tables[decode].data();
+}
+
+// Texels in 4x4 tiles, rows counted from the image's bottom: the four texels of a bilinear lookup
+// mostly lie in one tile, one cache line for 4-byte texels.
+template <typename Stored>
+struct TexelGrid {
+    using StoredTexel = Stored;
+    int width = 0, height = 0;
+    std::vector<Stored> texels;
+    const float* bytes = nullptr;  // Rgb8: byteValues()
+
+    TexelGrid(int w, int h) : width(w), height(h), texels(std::size_t((w + 3) / 4) * ((h + 3) / 4) * 16) {}
+    std::size_t offset(int x, int y) const {
+        return (std::size_t(y >> 2) * ((width + 3) >> 2) + (x >> 2)) * 16 + ((y & 3) << 2) + (x & 3);
+    }
+    float linear(float v) const { return v; }
+    Vec3f linear(Vec3f v) const { return v; }
+    Vec3f linear(Rgb8 v) const { return {bytes[v.r], bytes[v.g], bytes[v.b]}; }
+};
+
+using AnyTexelGrid = std::variant<TexelGrid<float>, TexelGrid<Rgb8>, TexelGrid<Vec3f>>;
+
 Vec3f asRgb(float v) { return {v, v, v}; }
 Vec3f asRgb(Vec3f v) { return v; }
 
-// The texel index for integer coordinate i (a floor, as a double so that any finite value is
-// safe) along a side of n texels; -1 where the black wrap leaves the image.
-int wrapIndex(double i, int n, Wrap wrap) {
+// The indices of the two texels on either side of coordinate `lower` + 0.5 along a side of n
+// texels (lower: the floor of the texel-centre coordinate); -1 where the black wrap leaves the
+// image. Coordinates beyond 2^30 texels are limited first (float precision has long run out
+// there), so that the conversion to int is defined.
+void texelPair(double lower, int n, Wrap wrap, int& i0, int& i1) {
+    const int i = int(std::fmin(std::fmax(lower, -1073741824.0), 1073741824.0));
     switch (wrap) {
-        case Wrap::Repeat: {
-            const double m = std::fmod(i, double(n));
-            return int(m < 0 ? m + n : m);
-        }
-        case Wrap::Clamp: return int(std::fmin(std::fmax(i, 0.0), double(n - 1)));
-        case Wrap::Black: return i < 0 || i >= n ? -1 : int(i);
+        case Wrap::Repeat:
+            i0 = i % n;
+            if (i0 < 0) i0 += n;
+            i1 = i0 + 1 == n ? 0 : i0 + 1;
+            return;
+        case Wrap::Clamp:
+            i0 = std::clamp(i, 0, n - 1);
+            i1 = std::clamp(i + 1, 0, n - 1);
+            return;
+        case Wrap::Black:
+            i0 = i >= 0 && i < n ? i : -1;
+            i1 = i + 1 >= 0 && i + 1 < n ? i + 1 : -1;
+            return;
     }
-    return -1;
 }
 
-template <typename T>
+template <typename Stored>
 class ImageTexture : public Texture {
 public:
-    ImageTexture(TextureMapping2D map, std::shared_ptr<const TexelGrid<T>> grid, Wrap wrap, bool nearest, float scale,
-                 bool invert)
+    using Value = decltype(std::declval<TexelGrid<Stored>>().linear(Stored{}));
+
+    ImageTexture(TextureMapping2D map, std::shared_ptr<const TexelGrid<Stored>> grid, Wrap wrap, bool nearest,
+                 float scale, bool invert)
         : map_(std::move(map)), grid_(std::move(grid)), wrap_(wrap), nearest_(nearest), scale_(scale), invert_(invert) {}
 
     Vec3f evaluate(const SurfaceHit& h) const override {
         const TexCoord c = map_.map(h);
-        const Vec3f v = scale_ * asRgb(std::isfinite(c.s) && std::isfinite(c.t) ? lookup(c) : T{});
+        const Vec3f v = scale_ * asRgb(std::isfinite(c.s) && std::isfinite(c.t) ? lookup(c) : Value{});
         if (!invert_) return v;
         return {std::fmax(0.0f, 1 - v.x), std::fmax(0.0f, 1 - v.y), std::fmax(0.0f, 1 - v.z)};
     }
 
 private:
-    T lookup(TexCoord c) const {
-        const double x = double(c.s) * grid_->width - 0.5, y = double(c.t) * grid_->height - 0.5;
-        if (nearest_) return texel(index(std::floor(x + 0.5), grid_->width), index(std::floor(y + 0.5), grid_->height));
+    Value lookup(TexCoord c) const {
+        const TexelGrid<Stored>& g = *grid_;
+        const double x = double(c.s) * g.width - 0.5, y = double(c.t) * g.height - 0.5;
         const double x0 = std::floor(x), y0 = std::floor(y);
+        int ix0, ix1, iy0, iy1;
+        texelPair(x0, g.width, wrap_, ix0, ix1);
+        texelPair(y0, g.height, wrap_, iy0, iy1);
+        if (nearest_) return texel(x - x0 < 0.5 ? ix0 : ix1, y - y0 < 0.5 ? iy0 : iy1);
         const float fx = float(x - x0), fy = float(y - y0);
-        const int ix0 = index(x0, grid_->width), ix1 = index(x0 + 1, grid_->width);
-        const int iy0 = index(y0, grid_->height), iy1 = index(y0 + 1, grid_->height);
         return (1 - fy) * ((1 - fx) * texel(ix0, iy0) + fx * texel(ix1, iy0)) +
                fy * ((1 - fx) * texel(ix0, iy1) + fx * texel(ix1, iy1));
     }
-    int index(double i, int n) const { return wrapIndex(i, n, wrap_); }
-    T texel(int x, int y) const {
-        if (x < 0 || y < 0) return T{};
-        return grid_->texels[std::size_t(y) * grid_->width + x];
+    Value texel(int x, int y) const {
+        if (x < 0 || y < 0) return Value{};
+        return grid_->linear(grid_->texels[grid_->offset(x, y)]);
     }
 
     TextureMapping2D map_;
-    std::shared_ptr<const TexelGrid<T>> grid_;
+    std::shared_ptr<const TexelGrid<Stored>> grid_;
     Wrap wrap_;
     bool nearest_;
     float scale_;
     bool invert_;
 };
 
-// pbrt-v3 turns an image into a float texture through the luminance of its stored (still
-// encoded) values, then decodes.
-float texelValue(Vec3f rgb, bool decode, float*) {
-    const float y = 0.212671f * rgb.x + 0.715160f * rgb.y + 0.072169f * rgb.z;
-    return decode ? srgbDecode(y) : y;
-}
-Vec3f texelValue(Vec3f rgb, bool decode, Vec3f*) {
-    return decode ? Vec3f{srgbDecode(rgb.x), srgbDecode(rgb.y), srgbDecode(rgb.z)} : rgb;
-}
-
 // gamma: 1 decode sRGB, 0 linear, -1 as the file's format says (integer formats are encoded).
-template <typename T>
-std::shared_ptr<const TexelGrid<T>> readGrid(const std::string& path, const std::string& name, int gamma,
-                                              const SourceLocation& where) {
-    const RgbImageFile file = readRgbImageFile(path, name, where);
+// pbrt-v3 makes a float texture from the luminance of the stored (still encoded) values, then
+// decodes.
+AnyTexelGrid texelGrid(const RgbImageFile& file, TextureKind kind, int gamma) {
     const bool decode = gamma < 0 ? file.integerFormat : gamma == 1;
-    auto grid = std::make_shared<TexelGrid<T>>();
-    grid->width = file.width;
-    grid->height = file.height;
-    grid->texels.resize(file.rgb.size());
-    for (int y = 0; y < file.height; ++y)
-        for (int x = 0; x < file.width; ++x)
-            grid->texels[std::size_t(file.height - 1 - y) * file.width + x] =
-                texelValue(file.rgb[std::size_t(y) * file.width + x], decode, static_cast<T*>(nullptr));
-    return grid;
+    const auto fill = [&file](auto grid, auto convert) {
+        for (int y = 0; y < file.height; ++y)
+            for (int x = 0; x < file.width; ++x)
+                grid.texels[grid.offset(x, file.height - 1 - y)] = convert(file.rgb[std::size_t(y) * file.width + x]);
+        return grid;
+    };
+    if (kind == TextureKind::Float)
+        return fill(TexelGrid<float>(file.width, file.height), [decode](Vec3f c) {
+            const float y = 0.212671f * c.x + 0.715160f * c.y + 0.072169f * c.z;
+            return decode ? srgbDecode(y) : y;
+        });
+    if (file.eightBit) {
+        TexelGrid<Rgb8> grid(file.width, file.height);
+        grid.bytes = byteValues(decode);
+        const auto byte = [](float v) { return std::uint8_t(std::lround(std::fmin(std::fmax(v, 0.0f), 1.0f) * 255)); };
+        return fill(std::move(grid), [&](Vec3f c) { return Rgb8{byte(c.x), byte(c.y), byte(c.z)}; });
+    }
+    return fill(TexelGrid<Vec3f>(file.width, file.height), [decode](Vec3f c) {
+        return decode ? Vec3f{srgbDecode(c.x), srgbDecode(c.y), srgbDecode(c.z)} : c;
+    });
 }
 
 // Scenes often name one image in several textures (and a server renders many scenes): each file
 // is read once while any texture still holds it. The key includes the file's time and size, so
 // a changed file is read again.
-template <typename T>
-std::shared_ptr<const TexelGrid<T>> sharedGrid(const std::string& path, const std::string& name, int gamma,
-                                               const SourceLocation& where) {
+std::shared_ptr<const AnyTexelGrid> sharedTexelGrid(const std::string& path, const std::string& name, TextureKind kind,
+                                                    int gamma, const SourceLocation& where) {
     static std::mutex mutex;
-    static std::map<std::string, std::weak_ptr<const TexelGrid<T>>> cache;
+    static std::map<std::string, std::weak_ptr<const AnyTexelGrid>> cache;
     std::error_code ec;
     const auto time = std::filesystem::last_write_time(path, ec).time_since_epoch().count();
     const auto size = std::filesystem::file_size(path, ec);
-    const std::string key = path + '\n' + std::to_string(time) + ' ' + std::to_string(size) + ' ' + std::to_string(gamma);
+    const std::string key = path + '\n' + std::to_string(time) + ' ' + std::to_string(size) + ' ' +
+                            std::to_string(int(kind)) + ' ' + std::to_string(gamma);
     std::lock_guard<std::mutex> lock(mutex);
     if (auto grid = cache[key].lock()) return grid;
-    auto grid = readGrid<T>(path, name, gamma, where);
+    auto grid = std::make_shared<const AnyTexelGrid>(texelGrid(readRgbImageFile(path, name, where), kind, gamma));
     cache[key] = grid;
     return grid;
 }
@@ -140,34 +188,37 @@ int gammaParam(const ParamSet& p) {
     return whenAbsentTrue == whenAbsentFalse ? int(whenAbsentTrue) : -1;
 }
 
-template <typename T>
-std::shared_ptr<const Texture> makeImage(const TextureRequest& r, const std::string& path, const std::string& name) {
-    const ParamSet& p = r.params;
-    TextureMapping2D map = TextureMapping2D::fromParams(p, r.textureToWorld);
-    const std::string wrapName = p.getString("wrap", "repeat");
-    Wrap wrap = Wrap::Repeat;
-    if (wrapName == "black") wrap = Wrap::Black;
-    else if (wrapName == "clamp") wrap = Wrap::Clamp;
-    else if (wrapName != "repeat") p.fail("\"wrap\" must be repeat, black or clamp, not \"" + wrapName + "\"");
-    const std::string filter = p.getString("filter", "bilinear");
-    if (filter != "point" && filter != "bilinear" && filter != "trilinear" && filter != "ewa")
-        p.fail("\"filter\" must be point, bilinear, trilinear or ewa, not \"" + filter + "\"");
-    p.getBool("trilinear", false);  // pbrt-v3's MIP-map options: no effect without a footprint
-    if (!(p.getFloat("maxanisotropy", 8) > 0)) p.fail("\"maxanisotropy\" must be positive");
-    const int gamma = gammaParam(p);
-    const float scale = float(p.getFloat("scale", 1));
-    const bool invert = p.getBool("invert", false);
-    return std::make_shared<ImageTexture<T>>(std::move(map), sharedGrid<T>(path, name, gamma, p.where()), wrap,
-                                             filter == "point", scale, invert);
+Wrap wrapParam(const ParamSet& p) {
+    const std::string wrap = p.getString("wrap", "repeat");
+    if (wrap == "black") return Wrap::Black;
+    if (wrap == "clamp") return Wrap::Clamp;
+    if (wrap != "repeat") p.fail("\"wrap\" must be repeat, black or clamp, not \"" + wrap + "\"");
+    return Wrap::Repeat;
 }
 
 }  // namespace
 
 std::shared_ptr<const Texture> makeImageTexture(const TextureRequest& r) {
-    const std::string name = r.params.getString("filename", "");
-    if (name.empty()) r.params.fail("imagemap needs \"string filename\"");
-    const std::string path = r.resolve(name, r.params.where());
-    return r.kind == TextureKind::Float ? makeImage<float>(r, path, name) : makeImage<Vec3f>(r, path, name);
+    const ParamSet& p = r.params;
+    const std::string name = p.getString("filename", "");
+    if (name.empty()) p.fail("imagemap needs \"string filename\"");
+    TextureMapping2D map = TextureMapping2D::fromParams(p, r.textureToWorld);
+    const Wrap wrap = wrapParam(p);
+    const std::string filter = p.getString("filter", "bilinear");
+    if (filter != "point" && filter != "bilinear" && filter != "trilinear" && filter != "ewa")
+        p.fail("\"filter\" must be point, bilinear, trilinear or ewa, not \"" + filter + "\"");
+    p.getBool("trilinear", false);  // pbrt-v3's MIP-map options: no effect without a footprint
+    if (!(p.getFloat("maxanisotropy", 8) > 0)) p.fail("\"maxanisotropy\" must be positive");
+    const float scale = float(p.getFloat("scale", 1));
+    const bool invert = p.getBool("invert", false);
+    const auto grid = sharedTexelGrid(r.resolve(name, p.where()), name, r.kind, gammaParam(p), p.where());
+    return std::visit(
+        [&](const auto& g) -> std::shared_ptr<const Texture> {
+            using Stored = typename std::decay_t<decltype(g)>::StoredTexel;
+            return std::make_shared<ImageTexture<Stored>>(std::move(map), std::shared_ptr<const TexelGrid<Stored>>(grid, &g),
+                                                          wrap, filter == "point", scale, invert);
+        },
+        *grid);
 }
 
 }  // namespace lenslab

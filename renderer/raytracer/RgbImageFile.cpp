@@ -23,6 +23,7 @@ RgbImageFile readRgbImageFile(const std::string& path, const std::string& name, 
     image.width = spec.width;
     image.height = spec.height;
     image.integerFormat = base != OIIO::TypeDesc::FLOAT && base != OIIO::TypeDesc::HALF && base != OIIO::TypeDesc::DOUBLE;
+    image.eightBit = base == OIIO::TypeDesc::UINT8;
     image.rgb.resize(std::size_t(spec.width) * spec.height);
     for (std::size_t i = 0; i < image.rgb.size(); ++i) {
         const float* p = &raw[i * channels];

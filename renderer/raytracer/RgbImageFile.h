@@ -13,6 +13,7 @@ struct RgbImageFile {
     int width = 0, height = 0;
     std::vector<Vec3f> rgb;      // row-major, the file's top row first; grey files in all channels
     bool integerFormat = false;  // 8 or 16 bits per channel: sRGB-encoded by pbrt-v3's convention
+    bool eightBit = false;       // values are exact multiples of 1/255
 };
 
 // Reads `path` (the resolved file for `name`, as the scene gave it). A SceneError at `where`

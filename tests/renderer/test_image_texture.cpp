@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "TempDir.h"
 #include "TextureTests.h"
@@ -47,6 +48,56 @@ TEST(ImageTexture, ExrTexelsComeBackExactlyWithTheBottomRowAtTZero) {
     expectRgb(t->evaluate(hitAt(0.75f, 0.75f)), B, 0);
     expectRgb(t->evaluate(hitAt(0.5f, 0.5f)), 0.25f * (A + B + C + D), 1e-4f);  // bilinear between centres
     expectRgb(t->evaluate(hitAt(0.5f, 0.25f)), 0.5f * (C + D), 1e-5f);
+}
+
+// Every texel of a 5x3 image (texels are stored in 4x4 tiles: this crosses tile edges).
+TEST(ImageTexture, EveryTexelOfAnOddSizedImage) {
+    TempDir dir;
+    const int w = 5, h = 3;
+    std::vector<float> rgb;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) rgb.insert(rgb.end(), {float(x), float(y), 0.5f});
+    const std::string path = dir.path() + "/odd.exr";
+    writeImage(path, w, h, OIIO::TypeDesc::FLOAT, rgb);
+    auto t = image(path);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)  // file row y is t = (h - 1 - y + 0.5) / h
+            expectRgb(t->evaluate(hitAt((x + 0.5f) / w, (h - 1 - y + 0.5f) / h)), {float(x), float(y), 0.5f}, 1e-5f);
+}
+
+// 8-bit formats are decoded, float formats are not; PFM (stored bottom row first) comes out the
+// same way up as the others.
+TEST(ImageTexture, ReadsTheCommonFormats) {
+    TempDir dir;
+    const auto decode = [](float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); };
+    const std::vector<float> pixels = {64 / 255.0f, 128 / 255.0f, 1, 1, 0, 0};  // 1x2: top pixel, bottom pixel
+    for (const char* ext : {"tga", "bmp"}) {
+        const std::string path = dir.path() + "/p." + ext;
+        writeImage(path, 1, 2, OIIO::TypeDesc::UINT8, pixels);
+        expectRgb(image(path)->evaluate(hitAt(0.5f, 0.75f)), {decode(64 / 255.0f), decode(128 / 255.0f), 1}, 1e-6f);
+    }
+    for (const char* ext : {"hdr", "tif"}) {
+        const std::string path = dir.path() + "/p." + ext;
+        writeImage(path, 1, 2, OIIO::TypeDesc::FLOAT, pixels);
+        expectRgb(image(path)->evaluate(hitAt(0.5f, 0.25f)), {1, 0, 0}, 1e-6f);
+        expectRgb(image(path)->evaluate(hitAt(0.5f, 0.75f)), {pixels[0], pixels[1], pixels[2]}, 0.01f);  // RGBE: 1%
+    }
+    // JPEG is lossy: a flat grey 8x8 image stays within a few levels.
+    const std::string jpeg = dir.path() + "/grey.jpg";
+    writeImage(jpeg, 8, 8, OIIO::TypeDesc::UINT8, std::vector<float>(8 * 8 * 3, 0.5f));
+    EXPECT_NEAR(image(jpeg)->evaluate(hitAt(0.5f, 0.5f)).y, decode(0.5f), 0.01f);
+    // PFM, written by hand: rows from the bottom, little-endian (negative scale).
+    const std::string pfm = dir.path() + "/p.pfm";
+    {
+        std::FILE* f = std::fopen(pfm.c_str(), "wb");
+        ASSERT_TRUE(f);
+        std::fputs("PF\n1 2\n-1.0\n", f);
+        const float rows[6] = {1, 0, 0, 0, 0.25f, 2};  // bottom: red; top: (0, 0.25, 2)
+        std::fwrite(rows, sizeof rows, 1, f);
+        std::fclose(f);
+    }
+    expectRgb(image(pfm)->evaluate(hitAt(0.5f, 0.25f)), {1, 0, 0}, 0);
+    expectRgb(image(pfm)->evaluate(hitAt(0.5f, 0.75f)), {0, 0.25f, 2}, 0);
 }
 
 TEST(ImageTexture, WrapModesOutsideTheUnitSquare) {
