@@ -32,8 +32,6 @@ struct Rgb8 {
     std::uint8_t r = 0, g = 0, b = 0, unused = 0;
 };
 
-float srgbDecode(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-
 // The linear value of each byte: sRGB-decoded, or k / 255.
 const float* byteValues(bool decode) {
     static const auto tables = [] {

@@ -2,7 +2,11 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cmath>
+
 namespace lenslab {
+
+float srgbDecode(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
 RgbImageFile readRgbImageFile(const std::string& path, const std::string& name, const SourceLocation& where) {
     // Colours as stored, not multiplied by alpha (OpenImageIO premultiplies PNG by default; pbrt

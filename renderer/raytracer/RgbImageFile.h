@@ -16,6 +16,9 @@ struct RgbImageFile {
     bool eightBit = false;       // values are exact multiples of 1/255
 };
 
+// The sRGB transfer function undone: encoded value in [0, 1] to linear.
+float srgbDecode(float encoded);
+
 // Reads `path` (the resolved file for `name`, as the scene gave it). A SceneError at `where`
 // naming the file when it cannot be read or holds no pixels.
 RgbImageFile readRgbImageFile(const std::string& path, const std::string& name, const SourceLocation& where);
