@@ -140,6 +140,16 @@ TEST(ImageTexture, EightBitImagesAreSrgbDecodedUnlessGammaIsFalse) {
     expectRgb(image(png, {}, TextureKind::Float)->evaluate(hitAt(0.25f, 0.5f)), {decode(y), decode(y), decode(y)}, 1e-6f);
     // "point" filtering takes the nearest texel: no blend with the black right texel.
     expectRgb(image(png, {stringParam("filter", "point")})->evaluate(hitAt(0.45f, 0.5f)), {decode(r), decode(g), 1}, 1e-6f);
+    // Alpha is ignored, as in pbrt-v3: colours are not multiplied by it.
+    const std::string rgba = dir.path() + "/clear.png";
+    {
+        auto out = OIIO::ImageOutput::create(rgba);
+        ASSERT_TRUE(out->open(rgba, OIIO::ImageSpec(1, 1, 4, OIIO::TypeDesc::UINT8)));
+        const float pixel[4] = {r, g, 1, 0};
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixel));
+        out->close();
+    }
+    expectRgb(image(rgba)->evaluate(hitAt(0.5f, 0.5f)), {decode(r), decode(g), 1}, 1e-6f);
     // A float EXR is linear: no decoding by default.
     expectRgb(image(writeExr(dir))->evaluate(hitAt(0.25f, 0.75f)), A, 0);
 }
