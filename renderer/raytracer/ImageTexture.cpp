@@ -7,16 +7,10 @@
 // texel); the pixel samples do the antialiasing. Unlike pbrt-v3, images whose sides are not powers
 // of two are used as they are, not resampled up to powers of two.
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
-#include <filesystem>
-#include <map>
-#include <mutex>
-#include <variant>
 
 #include "Material.h"
-#include "RgbImageFile.h"
+#include "TexelGrid.h"
 #include "TextureClasses.h"
 #include "TextureMapping.h"
 
@@ -25,45 +19,6 @@ namespace lenslab {
 namespace {
 
 enum class Wrap { Repeat, Black, Clamp };
-
-// An 8-bit file's texel as stored: a quarter of the memory of floats, since lookups into large
-// images are bound by memory traffic.
-struct Rgb8 {
-    std::uint8_t r = 0, g = 0, b = 0, unused = 0;
-};
-
-// The linear value of each byte: sRGB-decoded, or k / 255.
-const float* byteValues(bool decode) {
-    static const auto tables = [] {
-        std::array<std::array<float, 256>, 2> t{};
-        for (int k = 0; k < 256; ++k) {
-            t[0][k] = float(k) / 255.0f;
-            t[1][k] = srgbDecode(float(k) / 255.0f);
-        }
-        return t;
-    }();
-    return tables[decode].data();
-}
-
-// Texels in 4x4 tiles, rows counted from the image's bottom: the four texels of a bilinear lookup
-// mostly lie in one tile, one cache line for 4-byte texels.
-template <typename Stored>
-struct TexelGrid {
-    using StoredTexel = Stored;
-    int width = 0, height = 0;
-    std::vector<Stored> texels;
-    const float* bytes = nullptr;  // Rgb8: byteValues()
-
-    TexelGrid(int w, int h) : width(w), height(h), texels(std::size_t((w + 3) / 4) * ((h + 3) / 4) * 16) {}
-    std::size_t offset(int x, int y) const {
-        return (std::size_t(y >> 2) * ((width + 3) >> 2) + (x >> 2)) * 16 + ((y & 3) << 2) + (x & 3);
-    }
-    float linear(float v) const { return v; }
-    Vec3f linear(Vec3f v) const { return v; }
-    Vec3f linear(Rgb8 v) const { return {bytes[v.r], bytes[v.g], bytes[v.b]}; }
-};
-
-using AnyTexelGrid = std::variant<TexelGrid<float>, TexelGrid<Rgb8>, TexelGrid<Vec3f>>;
 
 Vec3f asRgb(float v) { return {v, v, v}; }
 Vec3f asRgb(Vec3f v) { return v; }
@@ -134,51 +89,6 @@ private:
 };
 
 // gamma: 1 decode sRGB, 0 linear, -1 as the file's format says (integer formats are encoded).
-// pbrt-v3 makes a float texture from the luminance of the stored (still encoded) values, then
-// decodes.
-AnyTexelGrid texelGrid(const RgbImageFile& file, TextureKind kind, int gamma) {
-    const bool decode = gamma < 0 ? file.integerFormat : gamma == 1;
-    const auto fill = [&file](auto grid, auto convert) {
-        for (int y = 0; y < file.height; ++y)
-            for (int x = 0; x < file.width; ++x)
-                grid.texels[grid.offset(x, file.height - 1 - y)] = convert(file.rgb[std::size_t(y) * file.width + x]);
-        return grid;
-    };
-    if (kind == TextureKind::Float)
-        return fill(TexelGrid<float>(file.width, file.height), [decode](Vec3f c) {
-            const float y = 0.212671f * c.x + 0.715160f * c.y + 0.072169f * c.z;
-            return decode ? srgbDecode(y) : y;
-        });
-    if (file.eightBit) {
-        TexelGrid<Rgb8> grid(file.width, file.height);
-        grid.bytes = byteValues(decode);
-        const auto byte = [](float v) { return std::uint8_t(std::lround(std::fmin(std::fmax(v, 0.0f), 1.0f) * 255)); };
-        return fill(std::move(grid), [&](Vec3f c) { return Rgb8{byte(c.x), byte(c.y), byte(c.z)}; });
-    }
-    return fill(TexelGrid<Vec3f>(file.width, file.height), [decode](Vec3f c) {
-        return decode ? Vec3f{srgbDecode(c.x), srgbDecode(c.y), srgbDecode(c.z)} : c;
-    });
-}
-
-// Scenes often name one image in several textures (and a server renders many scenes): each file
-// is read once while any texture still holds it. The key includes the file's time and size, so
-// a changed file is read again.
-std::shared_ptr<const AnyTexelGrid> sharedTexelGrid(const std::string& path, const std::string& name, TextureKind kind,
-                                                    int gamma, const SourceLocation& where) {
-    static std::mutex mutex;
-    static std::map<std::string, std::weak_ptr<const AnyTexelGrid>> cache;
-    std::error_code ec;
-    const auto time = std::filesystem::last_write_time(path, ec).time_since_epoch().count();
-    const auto size = std::filesystem::file_size(path, ec);
-    const std::string key = path + '\n' + std::to_string(time) + ' ' + std::to_string(size) + ' ' +
-                            std::to_string(int(kind)) + ' ' + std::to_string(gamma);
-    std::lock_guard<std::mutex> lock(mutex);
-    if (auto grid = cache[key].lock()) return grid;
-    auto grid = std::make_shared<const AnyTexelGrid>(texelGrid(readRgbImageFile(path, name, where), kind, gamma));
-    cache[key] = grid;
-    return grid;
-}
-
 // 1 or 0 for "bool gamma" true or false; -1 when absent (or of another type, which
 // checkAllUsed reports).
 int gammaParam(const ParamSet& p) {
