@@ -34,12 +34,18 @@ struct TextureClass {
 };
 
 constexpr TextureClass kClasses[] = {
-    {"constant", makeConstant, false},         {"scale", makeScaleTexture, false},
-    {"mix", makeMixTexture, false},            {"bilerp", makeBilerpTexture, false},
-    {"imagemap", makeImageTexture, false},     {"uv", makeUvTexture, true},
-    {"checkerboard", makeCheckerboardTexture, false}, {"dots", makeDotsTexture, false},
-    {"fbm", makeFbmTexture, false},            {"wrinkled", makeWrinkledTexture, false},
-    {"windy", makeWindyTexture, false},        {"marble", makeMarbleTexture, true},
+    {"constant", makeConstant, false},
+    {"scale", makeScaleTexture, false},
+    {"mix", makeMixTexture, false},
+    {"bilerp", makeBilerpTexture, false},
+    {"imagemap", makeImageTexture, false},
+    {"uv", makeUvTexture, true},
+    {"checkerboard", makeCheckerboardTexture, false},
+    {"dots", makeDotsTexture, false},
+    {"fbm", makeFbmTexture, false},
+    {"wrinkled", makeWrinkledTexture, false},
+    {"windy", makeWindyTexture, false},
+    {"marble", makeMarbleTexture, true},
 };
 
 }  // namespace
