@@ -46,10 +46,12 @@ float lerp(float t, float a, float b) { return a + t * (b - a); }
 }  // namespace
 
 float perlinNoise(Vec3f p) {
+    // From 2^24 on every float is an integer, a lattice point where the noise is zero; this also
+    // keeps NaN and infinities out of the integer conversions below.
+    constexpr float kAllIntegers = 16777216.0f;
+    if (!(std::fabs(p.x) < kAllIntegers && std::fabs(p.y) < kAllIntegers && std::fabs(p.z) < kAllIntegers)) return 0;
     const float fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
-    // The lattice repeats every 256 cells; wrapping in double keeps huge coordinates defined.
-    const auto cell = [](float f) { return int(std::fmod(double(f), 256.0) + 256.0) & 255; };
-    const int x = cell(fx), y = cell(fy), z = cell(fz);
+    const int x = int(fx) & 255, y = int(fy) & 255, z = int(fz) & 255;  // the lattice repeats every 256 cells
     const float dx = p.x - fx, dy = p.y - fy, dz = p.z - fz;
     const float wx = fade(dx), wy = fade(dy), wz = fade(dz);
     const auto corner = [&](int i, int j, int k) { return gradient(x + i, y + j, z + k, dx - i, dy - j, dz - k); };

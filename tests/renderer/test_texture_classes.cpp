@@ -100,6 +100,8 @@ TEST(Noise, MatchesPbrtV3) {
     EXPECT_NEAR(perlinNoise({-4.25f, 17.6f, 3.3f}), -0.292898297f, 1e-6f);
     EXPECT_NEAR(perlinNoise({100.5f, -33.3f, 0.77f}), -0.310668409f, 1e-6f);
     EXPECT_EQ(perlinNoise({3, -7, 12}), 0.0f);  // zero at lattice points
+    EXPECT_EQ(perlinNoise({1e30f, 0.5f, 0.5f}), 0.0f);
+    EXPECT_EQ(perlinNoise({std::nanf(""), 0.5f, 0.5f}), 0.0f);
     EXPECT_NEAR(fractionalBrownianMotion({0.3f, 1.7f, -2.1f}, 0.5f, 8), -0.59823966f, 1e-5f);
     EXPECT_NEAR(turbulence({0.3f, 1.7f, -2.1f}, 0.5f, 8), 0.701446116f, 1e-5f);
     auto fbm = texture("fbm", {}, TextureKind::Float);
