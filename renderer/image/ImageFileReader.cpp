@@ -50,6 +50,7 @@ DecodedImage readImageFile(const std::string& path) {
     image.height = raw.height;
     image.channels = raw.channels;
     image.floatingPoint = raw.floatingPoint != 0;
+    image.eightBit = raw.eightBit != 0;
     image.pixels.assign(raw.pixels, raw.pixels + std::size_t(raw.width) * raw.height * raw.channels);
     p.release(&raw);
     return image;

@@ -11,7 +11,8 @@ namespace lenslab {
 struct DecodedImage {
     int width = 0, height = 0, channels = 0;
     bool floatingPoint = false;  // stored as floats (linear); otherwise integers (usually sRGB-encoded)
-    std::vector<float> pixels;   // row-major, top row first, `channels` floats per pixel; integers scaled to [0, 1]
+    bool eightBit = false;       // 8-bit integers: values are exact multiples of 1/255
+    std::vector<float> pixels;   // row-major, top row first, `channels` floats per pixel; integers scaled to [0, 1]; colours not multiplied by alpha
 };
 
 // Throws std::runtime_error with OpenImageIO's reason when the file cannot be read.

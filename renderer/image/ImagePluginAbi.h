@@ -7,6 +7,7 @@ extern "C" {
 struct PluginImage {
     int width, height, channels;
     int floatingPoint;  // 1: the file stores floats
+    int eightBit;       // 1: 8-bit integers (values are multiples of 1/255)
     float* pixels;      // owned by the plugin until lenslab_free_image
 };
 

@@ -18,7 +18,11 @@ int fail(char* error, std::size_t size, const std::string& message) {
 }  // namespace
 
 extern "C" int lenslab_read_image(const char* path, PluginImage* out, char* error, std::size_t errorSize) {
-    auto in = OIIO::ImageInput::open(path);
+    // Colours as stored, not multiplied by alpha (OpenImageIO premultiplies PNG by default; pbrt
+    // ignores alpha).
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
     if (!in) return fail(error, errorSize, OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 || (long long)spec.width * spec.height > kMaxPixels)
@@ -35,6 +39,7 @@ extern "C" int lenslab_read_image(const char* path, PluginImage* out, char* erro
     out->height = spec.height;
     out->channels = spec.nchannels;
     out->floatingPoint = base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE;
+    out->eightBit = base == OIIO::TypeDesc::UINT8;
     out->pixels = pixels;
     return 0;
 }

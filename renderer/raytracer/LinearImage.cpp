@@ -2,15 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
-#include "ImageFileReader.h"
+#include "RgbImageFile.h"
 
 namespace lenslab {
 
 namespace {
-
-float srgbDecode(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
 // Negative or non-finite texels would make radiance and sampling densities meaningless.
 float usable(float v) { return std::isfinite(v) && v > 0 ? v : 0.0f; }
@@ -35,23 +32,15 @@ Vec3f LinearImage::average() const {
 }
 
 LinearImage readLinearImage(const std::string& path, const std::string& name, const SourceLocation& where) {
-    DecodedImage raw;
-    try {
-        raw = readImageFile(path);
-    } catch (const std::runtime_error& e) {
-        sceneFail(where, "cannot read image '" + name + "' (" + e.what() + ")");
-    }
-    if (std::int64_t(raw.width) * raw.height > (1LL << 26)) sceneFail(where, "image '" + name + "' is too large");
-    const int channels = raw.channels;
+    RgbImageFile file = readRgbImageFile(path, name, where);
+    if (std::int64_t(file.width) * file.height > (1LL << 26)) sceneFail(where, "image '" + name + "' is too large");
     LinearImage image;
-    image.width = raw.width;
-    image.height = raw.height;
-    image.texels.resize(std::size_t(raw.width) * raw.height);
-    for (std::size_t i = 0; i < image.texels.size(); ++i) {
-        const float* p = &raw.pixels[i * channels];
-        Vec3f c = channels >= 3 ? Vec3f{p[0], p[1], p[2]} : Vec3f{p[0], p[0], p[0]};
-        if (!raw.floatingPoint) c = {srgbDecode(c.x), srgbDecode(c.y), srgbDecode(c.z)};
-        image.texels[i] = {usable(c.x), usable(c.y), usable(c.z)};
+    image.width = file.width;
+    image.height = file.height;
+    image.texels = std::move(file.rgb);
+    for (Vec3f& c : image.texels) {
+        if (file.integerFormat) c = {srgbDecode(c.x), srgbDecode(c.y), srgbDecode(c.z)};
+        c = {usable(c.x), usable(c.y), usable(c.z)};
     }
     return image;
 }

@@ -47,6 +47,9 @@ struct GraphicsState {
     std::shared_ptr<const Material> material;
     std::optional<AreaEmission> area;
     bool reverseOrientation = false;
+    // Scoped by AttributeBegin/End as in pbrt-v3; shared with the saved states until a Texture
+    // directive changes it (copy on write: entering a block copies no textures).
+    std::shared_ptr<TextureMap> textures = std::make_shared<TextureMap>();
 };
 
 struct StackEntry {
@@ -416,12 +419,12 @@ private:
     // --- the world ----------------------------------------------------------------------------
     void material(SourceLocation& where, int) {
         const std::string type = typeName(where, "a material type");
-        g_.material = makeMaterial(type, params(where), textures_, scene_.warnings);
+        g_.material = makeMaterial(type, params(where), *g_.textures, scene_.warnings);
     }
     void makeNamedMaterial(SourceLocation& where, int) {
         const std::string n = typeName(where, "a material name");
         const ParamSet p = params(where);
-        namedMaterials_[n] = makeMaterial(p.getString("type", ""), p, textures_, scene_.warnings);
+        namedMaterials_[n] = makeMaterial(p.getString("type", ""), p, *g_.textures, scene_.warnings);
     }
     void namedMaterial(SourceLocation& where, int) {
         const std::string n = quoted(where, "a material name");
@@ -456,7 +459,13 @@ private:
         if (kind != "spectrum" && kind != "float" && kind != "color" && kind != "rgb")
             sceneFail(where, "texture type \"" + kind + "\" must be spectrum or float");
         const ParamSet p = params(where);
-        textures_[n] = makeTexture(cls, p, textures_, resolver(), scene_.warnings);
+        auto texture = makeTexture(cls, kind == "float" ? TextureKind::Float : TextureKind::Spectrum, p, g_.ctm,
+                                   *g_.textures, resolver(), scene_.warnings);
+        if (g_.textures.use_count() > 1) g_.textures = std::make_shared<TextureMap>(*g_.textures);
+        auto& slot = (kind == "float" ? g_.textures->floats : g_.textures->spectra)[n];
+        if (slot) warn(where, "redefines texture \"" + n + "\"");
+        slot = std::move(texture);
+        warnIfMoving(where);
     }
 
 
@@ -514,7 +523,6 @@ private:
     std::vector<StackEntry> stack_;
     std::map<std::string, TransformPair> namedCoordinates_;
     std::map<std::string, std::shared_ptr<const Material>> namedMaterials_;
-    TextureMap textures_;
     std::map<std::string, std::size_t> objectIndex_;  // the latest definition of each object name
     std::optional<std::size_t> object_;                // the object being defined
     std::size_t objectDepth_ = 0;                      // stack_ size inside its ObjectBegin block

@@ -1,0 +1,42 @@
+#pragma once
+// pbrt-v3's texture mappings: from a surface point to 2D texture coordinates (s, t) (uv,
+// spherical, cylindrical, planar), or to a point in the texture's own space for 3D textures.
+#include "ParamSet.h"
+#include "Transform.h"
+#include "Vec3f.h"
+
+namespace lenslab {
+
+struct SurfaceHit;
+
+struct TexCoord {
+    float s = 0, t = 0;
+};
+
+class TextureMapping2D {
+public:
+    // "string mapping" (uv by default) and that mapping's parameters; `textureToWorld` is the
+    // current transform at the Texture directive.
+    static TextureMapping2D fromParams(const ParamSet& params, const Transform& textureToWorld);
+    TexCoord map(const SurfaceHit& hit) const;
+
+private:
+    enum class Kind { Uv, Spherical, Cylindrical, Planar };
+    TextureMapping2D() = default;
+    Kind kind_ = Kind::Uv;
+    float uscale_ = 1, vscale_ = 1, udelta_ = 0, vdelta_ = 0;  // udelta_, vdelta_ also for planar
+    Vec3f v1_{1, 0, 0}, v2_{0, 1, 0};                         // planar
+    Transform worldToTexture_;                                 // spherical, cylindrical
+};
+
+// The hit point in the texture's space: the inverse of the transform at the Texture directive.
+class TextureMapping3D {
+public:
+    explicit TextureMapping3D(const Transform& textureToWorld) : worldToTexture_(inverse(textureToWorld)) {}
+    Vec3f map(const SurfaceHit& hit) const;
+
+private:
+    Transform worldToTexture_;
+};
+
+}  // namespace lenslab
