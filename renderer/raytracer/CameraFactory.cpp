@@ -3,6 +3,7 @@
 #include "LensTable.h"
 #include "NumberText.h"
 #include "OpticsError.h"
+#include "EnvironmentCamera.h"
 #include "OrthographicCamera.h"
 #include "PerspectiveCamera.h"
 #include "RealisticCamera.h"
@@ -155,6 +156,10 @@ std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverride
     if (o.lensFile || o.fstop || o.focalDistance || o.filmDiagonal || o.mode)
         throw SceneError(scene.file + ": the lens overrides need a Camera \"realistic\"; this scene has a " +
                          scene.camera.type + " camera");
+    if (scene.camera.type == "environment") {
+        p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose", "frameaspectratio", "screenwindow"});
+        return std::make_unique<EnvironmentCamera>(scene.camera.cameraToWorld, width, height);
+    }
     if (scene.camera.type == "orthographic") {
         auto camera = makeOrthographic(scene, width, height);
         p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose", "frameaspectratio"});

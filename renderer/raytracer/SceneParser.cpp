@@ -280,8 +280,8 @@ private:
     // --- rendering options ------------------------------------------------------------------
     void camera(SourceLocation& where, int) {
         const std::string type = typeName(where, "a camera type");
-        if (type != "perspective" && type != "realistic" && type != "orthographic")
-            sceneFail(where, "camera \"" + type + "\" is not supported (perspective, orthographic, realistic)");
+        if (type != "perspective" && type != "realistic" && type != "orthographic" && type != "environment")
+            sceneFail(where, "camera \"" + type + "\" is not supported (perspective, orthographic, environment, realistic)");
         scene_.camera.type = type;
         scene_.camera.params = params(where);
         scene_.camera.cameraToWorld = inverse(g_.ctm);

@@ -187,3 +187,30 @@ TEST(OrthographicCamera, SilhouetteWidthDoesNotDependOnDistance) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// Environment camera: azimuth across, polar angle from +y down; camera +z (forward) is a quarter
+// of the way across the middle row, +y is the top row.
+TEST(EnvironmentCamera, LatitudeLongitudeLayout) {
+    test::TempDir dir;
+    const std::string p = dir.write("env.pbrt", "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"environment\"\n"
+                                                "Film \"image\" \"integer xresolution\" 64 \"integer yresolution\" 32\n"
+                                                "WorldBegin\nMaterial \"matte\" \"rgb Kd\" [0 0 0]\n"
+                                                "AreaLightSource \"diffuse\" \"rgb L\" [1 0 0]\n"
+                                                "AttributeBegin\nTranslate 0 0 5\nShape \"sphere\" \"float radius\" 1\nAttributeEnd\n"
+                                                "AreaLightSource \"diffuse\" \"rgb L\" [0 1 0]\n"
+                                                "AttributeBegin\nTranslate 0 5 0\nShape \"sphere\" \"float radius\" 1\nAttributeEnd\nWorldEnd\n");
+    const RenderOutput out = test::render(p, 64, 32, 4);
+    const auto red = [&](int x, int y) { return out.image.rgb[(std::size_t(y) * 64 + x) * 3]; };
+    const auto green = [&](int x, int y) { return out.image.rgb[(std::size_t(y) * 64 + x) * 3 + 1]; };
+    EXPECT_NEAR(red(16, 16), 1, 1e-4);  // forward
+    EXPECT_NEAR(red(48, 16), 0, 1e-6);  // backward
+    EXPECT_NEAR(red(0, 16), 0, 1e-6);   // camera +x
+    for (int x = 0; x < 64; x += 8) EXPECT_NEAR(green(x, 0), 1, 1e-4) << x;  // the +y pole spans the top row
+    EXPECT_NEAR(green(16, 16), 0, 1e-6);
+}
+
+}  // namespace
+}  // namespace lenslab
