@@ -478,7 +478,7 @@ private:
             emission.reset();
         }
         std::vector<ShapeEntry>& group = object_ ? scene_.objects[*object_].shapes : scene_.shapes;
-        for (auto& s : makeShapes(type, p, g_.ctm, g_.reverseOrientation, resolver(), scene_.warnings)) {
+        for (auto& s : makeShapes(type, p, g_.ctm, g_.reverseOrientation, *g_.textures, resolver(), scene_.warnings)) {
             if (emission && s->primitiveCount() == 0) warn(where, "this shape cannot emit (as in pbrt-v3): no area light");
             group.push_back({std::move(s), g_.material, emission});
         }

@@ -54,9 +54,11 @@ public:
 
 // Shape "TYPE" params under the transform objectToGroup (the current transform; the space of the
 // enclosing ObjectBegin for instanced objects, else world). reverseOrientation is the graphics
-// state's flag. Throws SceneError naming the parameter for bad input; unknown types are an error.
+// state's flag; `textures` the float textures an "alpha" cutout may name. Throws SceneError naming
+// the parameter for bad input; unknown types are an error.
 std::vector<std::shared_ptr<const Shape>> makeShapes(const std::string& type, const ParamSet& params,
                                                      const Transform& objectToGroup, bool reverseOrientation,
-                                                     const PathResolver& resolve, std::vector<std::string>& warnings);
+                                                     const TextureMap& textures, const PathResolver& resolve,
+                                                     std::vector<std::string>& warnings);
 
 }  // namespace lenslab

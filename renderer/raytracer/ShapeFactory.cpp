@@ -65,14 +65,17 @@ void discardDegenerateUvs(MeshData& m, const ParamSet& p, std::vector<std::strin
     }
 }
 
-// pbrt-v3 makes a surface with "alpha" 0 or an alpha texture a cutout; lenslab renders every
-// surface opaque, which would change the picture.
-void refuseCutouts(const ParamSet& p) {
-    for (const char* name : {"alpha", "shadowalpha"}) {
-        if (!p.has(name)) continue;
-        if (!p.getColorOrTexture(name, {1, 1, 1}).texture && p.getFloat(name, 1) != 0) continue;
-        p.fail(std::string("\"") + name + "\" cutouts (alpha textures or alpha 0) are not supported");
-    }
+// pbrt-v3's cutouts: where "alpha" (a number or a float texture) is 0 the mesh is not there for
+// camera and scattered rays; "shadowalpha" does the same for shadow rays. Alpha 1 everywhere is
+// no cutout at all.
+void readCutouts(const ParamSet& p, const TextureMap& textures, MeshData& m) {
+    const auto cutout = [&](const char* name) -> std::shared_ptr<const Texture> {
+        if (!p.has(name)) return nullptr;
+        if (!p.getColorOrTexture(name, {1, 1, 1}).texture && p.getFloat(name, 1) != 0) return nullptr;
+        return floatTextureParam(p, name, 1, textures);
+    };
+    m.alpha = cutout("alpha");
+    m.shadowAlpha = cutout("shadowalpha");
 }
 
 std::shared_ptr<const Shape> loopSubdivisionSurface(const ParamSet& p, const Transform& toGroup, bool ro) {
@@ -93,8 +96,8 @@ std::shared_ptr<const Shape> loopSubdivisionSurface(const ParamSet& p, const Tra
 }  // namespace
 
 std::vector<std::shared_ptr<const Shape>> makeShapes(const std::string& type, const ParamSet& p,
-                                                     const Transform& toGroup, bool ro, const PathResolver& resolve,
-                                                     std::vector<std::string>& warnings) {
+                                                     const Transform& toGroup, bool ro, const TextureMap& textures,
+                                                     const PathResolver& resolve, std::vector<std::string>& warnings) {
     std::shared_ptr<const Shape> shape;
     if (type == "sphere") {
         shape = makeSphere(p, toGroup, ro);
@@ -109,9 +112,9 @@ std::vector<std::shared_ptr<const Shape>> makeShapes(const std::string& type, co
     } else if (type == "hyperboloid") {
         shape = makeHyperboloid(p, toGroup, ro);
     } else if (type == "trianglemesh" || type == "plymesh") {
-        refuseCutouts(p);
         MeshData m = type == "trianglemesh" ? triangleMesh(p)
                                             : readPlyMesh(resolve(p.getString("filename", ""), p.where()), p.where(), warnings);
+        readCutouts(p, textures, m);
         discardDegenerateUvs(m, p, warnings);
         shape = makeTriangleMesh(std::move(m), toGroup, ro);
     } else if (type == "loopsubdiv") {

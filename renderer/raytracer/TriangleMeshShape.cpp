@@ -25,6 +25,9 @@ public:
         }
         std::copy(m_.p.begin(), m_.p.end(), v);
         std::copy(m_.indices.begin(), m_.indices.end(), ix);
+        rtcSetGeometryUserData(g, const_cast<TriangleMeshShape*>(this));
+        if (m_.alpha) rtcSetGeometryIntersectFilterFunction(g, &TriangleMeshShape::cutIntersections);
+        if (m_.shadowAlpha) rtcSetGeometryOccludedFilterFunction(g, &TriangleMeshShape::cutShadows);
         rtcCommitGeometry(g);
         const unsigned id = rtcAttachGeometry(scene, g);
         rtcReleaseGeometry(g);
@@ -68,6 +71,26 @@ public:
     float primitivePdf(std::size_t prim, const SurfaceHit&) const override { return 1.0f / primitiveArea(prim); }
 
 private:
+    // Embree's filter callbacks: a candidate hit where the cutout texture is 0 is rejected, and the
+    // ray goes on to the next surface.
+    static void cutIntersections(const RTCFilterFunctionNArguments* args) { cut(args, false); }
+    static void cutShadows(const RTCFilterFunctionNArguments* args) { cut(args, true); }
+    static void cut(const RTCFilterFunctionNArguments* args, bool shadow) {
+        const auto* self = static_cast<const TriangleMeshShape*>(args->geometryUserPtr);
+        const Texture& alpha = shadow ? *self->m_.shadowAlpha : *self->m_.alpha;
+        for (unsigned i = 0; i < args->N; ++i) {
+            if (args->valid[i] == 0) continue;
+            const Vec3f o{RTCRayN_org_x(args->ray, args->N, i), RTCRayN_org_y(args->ray, args->N, i),
+                          RTCRayN_org_z(args->ray, args->N, i)};
+            const Vec3f d{RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                          RTCRayN_dir_z(args->ray, args->N, i)};
+            SurfaceHit h;
+            self->surface(o, d, RTCRayN_tfar(args->ray, args->N, i), RTCHitN_primID(args->hit, args->N, i),
+                          RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i), h);
+            if (alpha.evaluate(h).x == 0) args->valid[i] = 0;
+        }
+    }
+
     // pbrt-v3's rule: the face normal (p1 - p0) x (p2 - p0) turned toward the shading normals when the
     // mesh has them, otherwise flipped by ReverseOrientation or a mirroring transform.
     Vec3f orientedNormal(std::size_t prim) const {

@@ -13,6 +13,7 @@ struct MeshData {
     std::vector<Vec3f> p, n;             // n: empty or one per point
     std::vector<float> uv;               // empty or two per point
     std::vector<std::uint32_t> indices;  // three per triangle, each < p.size()
+    std::shared_ptr<const Texture> alpha, shadowAlpha;  // cutouts: no surface where they are 0
 };
 
 // Moves the mesh from its object space into the group's space (points, and normals by the inverse
