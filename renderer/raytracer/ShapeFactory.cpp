@@ -3,6 +3,7 @@
 
 #include "CurveShape.h"
 #include "LoopSubdivision.h"
+#include "NurbsSurface.h"
 #include "PlyMesh.h"
 #include "Quadric.h"
 #include "Shape.h"
@@ -119,11 +120,13 @@ std::vector<std::shared_ptr<const Shape>> makeShapes(const std::string& type, co
         shape = makeTriangleMesh(std::move(m), toGroup, ro);
     } else if (type == "loopsubdiv") {
         shape = loopSubdivisionSurface(p, toGroup, ro);
+    } else if (type == "nurbs") {
+        shape = makeTriangleMesh(diceNurbs(p), toGroup, ro);
     } else if (type == "curve") {
         shape = makeCurve(p, toGroup);
     } else {
         p.fail("shape \"" + type + "\" is not supported (sphere, disk, cylinder, cone, paraboloid, hyperboloid, "
-               "trianglemesh, plymesh, loopsubdiv, curve)");
+               "trianglemesh, plymesh, loopsubdiv, nurbs, curve)");
     }
     // Tangents ("S") only turn an anisotropic shading frame; lenslab's materials are isotropic.
     // Embree intersects curves directly, without pbrt-v3's "splitdepth" refinement.
