@@ -6,6 +6,7 @@
 #include "ArgParser.h"
 #include "Commands.h"
 #include "LensDiagram.h"
+#include "LensFlags.h"
 
 namespace lenslab {
 
@@ -33,8 +34,7 @@ int runDiagramCommand(const std::vector<std::string>& args) {
     p.positional("FILE", "lens table (.dat)");
     p.option("-o", "OUT.png", "the PNG to write");
     p.option("--mode", "M", "exact (real rays), thick (thick-lens rays) or overlay (both); default exact");
-    p.option("--fstop", "N", "f-number (default: the widest the lens allows)");
-    p.option("--focus", "MM", "focus distance from the front vertex in mm, or inf (default inf)");
+    declareLensFlags(p);
     p.option("--field", "MM", "film height of the off-axis fan in mm; 0 for the axial fan only (default: automatic)");
     p.option("--rays", "N", "rays per fan (default 9)");
     p.option("--size", "WxH", "picture size in pixels (default 1200x600)");
@@ -48,8 +48,7 @@ int runDiagramCommand(const std::vector<std::string>& args) {
     DiagramOptions options;
     if (p.has("--mode")) options.mode = parseDiagramMode(p.get("--mode"));
     if (p.has("--backend")) options.backend = parseDiagramBackend(p.get("--backend"));
-    options.fstop = p.number("--fstop");
-    if (p.has("--focus")) options.focusDistance = parseDistance(p.get("--focus"), "--focus");
+    options.lens = lensFlags(p);
     options.fieldHeight = p.number("--field");
     if (const auto rays = p.integer("--rays")) {
         if (*rays < 1 || *rays > std::numeric_limits<int>::max())

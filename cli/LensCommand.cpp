@@ -4,6 +4,7 @@
 #include "ArgParser.h"
 #include "Commands.h"
 #include "LensAnalysis.h"
+#include "LensFlags.h"
 #include "LensJson.h"
 #include "LensText.h"
 #include "OpticsError.h"
@@ -15,8 +16,7 @@ int runLensCommand(const std::vector<std::string>& args) {
                 "Prints a lens's first-order data: focal length, cardinal points, stop, pupils,\n"
                 "f-number range and the film position for a focus distance (mm from the front vertex).");
     p.positional("FILE", "lens table (.dat)");
-    p.option("--fstop", "N", "f-number (default: the widest the lens allows)");
-    p.option("--focus", "MM", "focus distance from the front vertex in mm, or inf (default inf)");
+    declareLensFlags(p);
     p.option("--layout", "L", "gap-before | gap-after (default: detect)");
     p.flag("--json", "print one JSON object");
     if (!p.parse(args)) {
@@ -28,9 +28,7 @@ int runLensCommand(const std::vector<std::string>& args) {
         layout = parseLayoutName(p.get("--layout"));
         if (!layout) throw UsageError("lens: --layout must be gap-before or gap-after, got '" + p.get("--layout") + "'");
     }
-    const double focus = p.has("--focus") ? parseDistance(p.get("--focus"), "--focus")
-                                          : std::numeric_limits<double>::infinity();
-    const LensAnalysis a = analyzeLens(loadLensSystem(p.arg(0), layout), p.number("--fstop"), focus);
+    const LensAnalysis a = analyzeLens(loadLensSystem(p.arg(0), layout), lensFlags(p));
     if (p.has("--json")) std::cout << lensAnalysisJson(a).dump(2) << "\n";
     else std::cout << lensAnalysisText(a);
     return 0;

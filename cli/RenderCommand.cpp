@@ -9,6 +9,7 @@
 
 #include "ArgParser.h"
 #include "Commands.h"
+#include "LensFlags.h"
 #include "MpiRender.h"
 #include "Render.h"
 
@@ -104,9 +105,9 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.option("--seed", "N", "random seed (default 0)");
     p.option("--exposure", "E", "PNG exposure scale (default 1)");
     p.option("--lens", "FILE", "realistic camera: lens table instead of the scene's specfile");
-    p.option("--fstop", "N", "realistic camera: f-number");
-    p.option("--focus", "MM", "realistic camera: focus distance from the front vertex, mm");
+    declareLensFlags(p);
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
+    p.option("--layout", "L", "realistic camera: the --lens table's layout, gap-before | gap-after (default: detect)");
     p.option("--mode", "M", "realistic camera: accurate | approximate | auto (thick lens where its error < 0.5 px)");
     p.flag("--quiet", "no progress bar, no summary");
     p.flag("--progress-json", "print one JSON line per finished tile on stdout, and the statistics last");
@@ -140,8 +141,13 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     if (auto v = p.integer("--seed")) s.seed = std::uint64_t(*v);
     if (p.has("--crop")) s.crop = parseCrop(p.get("--crop"));
     if (p.has("--lens")) s.camera.lensFile = p.get("--lens");
-    if (auto v = p.number("--fstop")) s.camera.fstop = *v;
-    if (p.has("--focus")) s.camera.focalDistance = parseDistance(p.get("--focus"), "--focus");
+    if (p.has("--layout")) {
+        s.camera.lensLayout = parseLayoutName(p.get("--layout"));
+        if (!s.camera.lensLayout) throw UsageError("render: --layout must be gap-before or gap-after, got '" + p.get("--layout") + "'");
+    }
+    const LensSettings flags = lensFlags(p);
+    s.camera.fstop = flags.fstop;
+    s.camera.focusDistance = flags.focusDistance;
     if (auto v = p.number("--filmdiag")) s.camera.filmDiagonal = *v;
     if (p.has("--mode")) s.camera.mode = p.get("--mode");
     const double exposure = p.number("--exposure").value_or(1.0);

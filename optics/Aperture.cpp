@@ -61,9 +61,9 @@ ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo)
     }
     ApertureRange range;
     range.fstopMin = 1.0 / (2.0 * lo);
-    // A lens slower than kMaxFstop at its widest (a micrometre stop, a kilometre focal length) still
+    // A lens slower than kNarrowestFstop at its widest (a micrometre stop, a kilometre focal length) still
     // has that one setting, rather than a range whose ends cross.
-    range.fstopMax = std::max(kMaxFstop, range.fstopMin);
+    range.fstopMax = std::max(kNarrowestFstop, range.fstopMin);
     bool blocked = false;
     range.stopDiameterMax = 2.0 * stopHeight(lens, fo, lo, &blocked);
     return range;
@@ -80,6 +80,19 @@ double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const 
     const double h = stopHeight(lens, fo, sinTheta, &blocked);
     if (blocked) throw OpticsError("f/" + fmt(fstop) + ": the marginal ray is blocked behind the stop");
     return std::min(2.0 * h, 2.0 * lens.stop().apertureRadius);
+}
+
+double fstopForStopDiameter(const LensSystem& lens, const FirstOrder& fo, const ApertureRange& range, double diameter) {
+    if (!(diameter > 0)) throw OpticsError("the stop diameter must be positive, got " + fmt(diameter) + " mm");
+    if (diameter >= range.stopDiameterMax) return range.fstopMin;
+    // The opening shrinks as the cone narrows: bisect sin theta between the widest cone and none.
+    double lo = 0, hi = 1.0 / (2.0 * range.fstopMin);
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        bool blocked = false;
+        (2.0 * stopHeight(lens, fo, mid, &blocked) < diameter ? lo : hi) = mid;
+    }
+    return 1.0 / (2.0 * 0.5 * (lo + hi));
 }
 
 std::vector<double> fullStops(double fstopMin, double fstopMax) {

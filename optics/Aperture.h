@@ -4,15 +4,14 @@
 #include <vector>
 
 #include "FirstOrder.h"
+#include "LensSettings.h"
 #include "LensSystem.h"
 
 namespace lenslab {
 
-constexpr double kMaxFstop = 10000.0;  // any stop opening a simulation can use (f/10000 ~ microns)
-
 struct ApertureRange {
-    double fstopMin = 0;          // the widest the lens allows (table stop or an element clips)
-    double fstopMax = kMaxFstop;  // or fstopMin, for a lens slower than that at its widest
+    double fstopMin = 0;                // the widest the lens allows (table stop or an element clips)
+    double fstopMax = kNarrowestFstop;  // or fstopMin, for a lens slower than that at its widest
     double stopDiameterMax = 0;   // the stop opening at fstopMin, mm
 };
 
@@ -24,6 +23,11 @@ ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo)
 // request lies outside it.
 double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const ApertureRange& range,
                             double fstop);
+
+// The f-number whose marginal ray fills a stop opening of `diameter` mm: 1 / (2 sin theta) for the
+// cone from F' that just fills the stop. Openings at or beyond the widest give fstopMin (as pbrt-v3
+// clamps them). Throws OpticsError for a diameter that is not positive.
+double fstopForStopDiameter(const LensSystem& lens, const FirstOrder& fo, const ApertureRange& range, double diameter);
 
 // Full stops (powers of sqrt 2) from the first at or above fstopMin up to fstopMax, exact values.
 std::vector<double> fullStops(double fstopMin, double fstopMax = 64.0);

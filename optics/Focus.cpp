@@ -1,6 +1,7 @@
 #include "Focus.h"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "ExactTrace.h"
@@ -77,6 +78,24 @@ FocusResult focusAt(const LensSystem& lens, const FirstOrder& fo, const Pupils& 
     refineExact(lens, pupils, r);
     r.difference = r.imageZExact - r.imageZThick;
     return r;
+}
+
+double thickLensFocusForFilm(const LensSystem& lens, const FirstOrder& fo, double filmZ) {
+    const double imageDistance = fo.zPPrime - filmZ;  // P' to the film, positive toward the film
+    if (!(imageDistance > fo.efl)) return std::numeric_limits<double>::infinity();
+    const double objectDistance = fo.efl * imageDistance / (imageDistance - fo.efl);  // from P
+    return fo.zP + objectDistance - lens.frontZ();
+}
+
+FocusResult filmPlacedAt(const LensSystem& lens, const FirstOrder& fo, double filmZ) {
+    if (!(filmZ < lens.rearZ()))
+        throw OpticsError("the film must lie behind the rear vertex: film distance " + formatNumber(lens.rearZ() - filmZ) + " mm");
+    FocusResult f;
+    const double distance = thickLensFocusForFilm(lens, fo, filmZ);
+    f.infinity = std::isinf(distance);
+    f.objectZ = f.infinity ? distance : lens.frontZ() + distance;
+    f.imageZThick = f.imageZExact = filmZ;
+    return f;
 }
 
 }  // namespace lenslab

@@ -28,4 +28,13 @@ double closestFocusDistance(const FirstOrder& fo);
 // closer than closestFocusDistance, or where no exact ray passes.
 FocusResult focusAt(const LensSystem& lens, const FirstOrder& fo, const Pupils& pupils, double distance);
 
+// The plane the thick lens images onto a film at filmZ: its distance from the front vertex,
+// infinity when the film lies at or in front of F' (no real object is in focus).
+double thickLensFocusForFilm(const LensSystem& lens, const FirstOrder& fo, double filmZ);
+
+// A film placed directly at filmZ (the later course's filmdistance): both models' film there, the
+// plane of focus the thick lens's conjugate. Throws OpticsError unless the film lies behind the
+// rear vertex.
+FocusResult filmPlacedAt(const LensSystem& lens, const FirstOrder& fo, double filmZ);
+
 }  // namespace lenslab

@@ -5,6 +5,7 @@
 #include "Aperture.h"
 #include "FirstOrder.h"
 #include "Focus.h"
+#include "LensSettings.h"
 #include "LensSystem.h"
 #include "Pupils.h"
 #include "ThickLens.h"
@@ -22,8 +23,13 @@ struct LensAnalysis {
     FocusResult focus;
 };
 
-// fstop: nullopt for the widest; focusDistance in mm from the front vertex (infinity allowed).
-// Throws OpticsError for requests outside the lens's ranges.
+// The one check of lens settings: the aperture within [the lens's widest, f/64] (or a stop diameter
+// within the stop), the focus reachable, the film behind the rear vertex, at most one way of
+// giving each. Throws OpticsError whose message starts with the offending setting's source.
+LensAnalysis analyzeLens(const LensSystem& lens, const LensSettings& settings);
+
+// Shorthand for code and tests with plain numbers: fstop nullopt for the widest; focusDistance in
+// mm from the front vertex (infinity allowed).
 LensAnalysis analyzeLens(const LensSystem& lens, std::optional<double> fstop, double focusDistance);
 
 }  // namespace lenslab

@@ -10,4 +10,11 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// An OpticsError about one lens setting whose message starts with where the setting came from (a
+// flag, a JSON field, a scene line): callers pass it on as it is.
+class SettingError : public OpticsError {
+public:
+    using OpticsError::OpticsError;
+};
+
 }  // namespace lenslab

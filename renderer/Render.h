@@ -10,16 +10,20 @@
 #include <string>
 #include <vector>
 
+#include "LensSettings.h"
+#include "LensTable.h"
+
 namespace lenslab {
 
-// Overrides of the scene's Camera "realistic" parameters (the server's form); unset = as in the
-// scene. Millimetres, as the course defined them.
+// Overrides of the scene's Camera "realistic" parameters (the command line's and the server's);
+// unset = as in the scene. Millimetres. Settings carry their source for messages ("--fstop").
 struct CameraOverrides {
-    std::optional<std::string> lensFile;   // specfile
-    std::optional<double> fstop;
-    std::optional<double> focalDistance;   // front vertex to the plane of focus
+    std::optional<std::string> lensFile;   // instead of the scene's specfile / lensfile
+    std::optional<TableLayout> lensLayout; // the layout lensFile was checked with (uploads)
+    std::optional<Setting> fstop;
+    std::optional<Setting> focusDistance;  // front vertex to the plane of focus
     std::optional<double> filmDiagonal;
-    std::optional<std::string> mode;       // "accurate" | "approximate"
+    std::optional<std::string> mode;       // "accurate" | "approximate" | "auto"
 };
 
 struct RenderSettings {

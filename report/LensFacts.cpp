@@ -36,7 +36,7 @@ LensFacts measureLens(const std::string& id, const std::string& path, const Lens
     try {
         const LensSystem lens = loadLensSystem(path);
         if (!lens.comments.empty()) f.description = lens.comments.front();
-        const LensAnalysis a = analyzeLens(lens, request.fstop, request.focusDistance);
+        const LensAnalysis a = analyzeLens(lens, request.lens);
         f.analysis = lensAnalysisJson(a);
         f.thickError = thickErrorAcrossPupil(a, request.quick ? 12 : 41);
         f.filmZ = a.focus.imageZExact;

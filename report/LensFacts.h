@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "LensSettings.h"
+
 #include "Distortion.h"
 #include "RelativeIllumination.h"
 #include "ThickLens.h"
@@ -26,8 +28,7 @@ struct LensFacts {
 };
 
 struct LensFactsRequest {
-    std::optional<double> fstop;  // nullopt: the widest
-    double focusDistance = 0;     // mm from the front vertex (infinity allowed)
+    LensSettings lens;            // aperture and focus of the tables and curves
     bool quick = false;           // fewer samples
 };
 

@@ -5,9 +5,21 @@
 
 namespace lenslab {
 
+namespace {
+
+// The report's one setting for every lens's tables and diagrams (the report command's flags).
+LensSettings tableSettings(const ReportOptions& o) {
+    LensSettings s;
+    if (o.fstop) s.fstop = Setting{*o.fstop, "report --fstop"};
+    s.focusDistance = Setting{o.focusDistance, "report --focus"};
+    return s;
+}
+
+}  // namespace
+
 LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::string& path, const ReportOptions& o) {
     LensEntry entry;
-    const LensFactsRequest request{o.fstop, o.focusDistance, o.quick};
+    const LensFactsRequest request{tableSettings(o), o.quick};
     InputsHash lensInputs = itemInputs("lens");
     lensInputs.addFile(path).add(o.fstop.value_or(0)).add(o.focusDistance).add(o.quick ? "quick" : "full");
     const std::string jsonFile = "assets/lenses/" + id + ".json";
@@ -38,8 +50,7 @@ LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::s
         }
         DiagramOptions d;
         d.mode = parseDiagramMode(mode);
-        d.fstop = o.fstop;
-        d.focusDistance = o.focusDistance;
+        d.lens = tableSettings(o);
         d.width = o.quick ? 480 : 960;
         d.height = o.quick ? 240 : 480;
         const std::string image = "assets/lenses/" + id + "-" + mode + ".png";

@@ -68,7 +68,7 @@ struct RenderJob {
         RenderSettings s;
         s.scenePath = scene.path;
         s.camera.lensFile = lens.facts.path;
-        s.camera.fstop = fstop;
+        s.camera.fstop = Setting{fstop, "report --render-fstop"};
         s.camera.mode = mode;
         s.spp = spp;
         s.width = width;

@@ -37,8 +37,7 @@ DiagramOptions diagramOptions(const httplib::Request& req) {
     } catch (const DiagramError& e) {
         throw HttpError(400, e.what());
     }
-    o.fstop = queryNumber(req, "fstop", 0.5, 128);
-    if (auto focus = queryDistance(req, "focus", 1, 1e7)) o.focusDistance = *focus;
+    o.lens = queryLensSettings(req);
     o.fieldHeight = queryNumber(req, "field", 0, 100);
     std::tie(o.width, o.height) = diagramSize(req);
     return o;
@@ -47,7 +46,8 @@ DiagramOptions diagramOptions(const httplib::Request& req) {
 std::string cacheKey(const std::string& lensId, const DiagramOptions& o) {
     std::ostringstream key;
     key.precision(17);
-    key << lensId << "|" << static_cast<int>(o.mode) << "|" << (o.fstop ? *o.fstop : 0.0) << "|" << o.focusDistance
+    key << lensId << "|" << static_cast<int>(o.mode) << "|" << (o.lens.fstop ? o.lens.fstop->value : 0.0) << "|"
+        << (o.lens.focusDistance ? o.lens.focusDistance->value : std::numeric_limits<double>::infinity())
         << "|" << (o.fieldHeight ? *o.fieldHeight : -1.0) << "|" << o.width << "x" << o.height;
     return key.str();
 }

@@ -8,8 +8,10 @@ RenderedImages EngineRenderer::render(const RenderJobInput& job, const TileCallb
     settings.scenePath = job.scenePath;
     settings.confined = true;
     settings.camera.lensFile = job.lensPath;
-    settings.camera.fstop = job.request.fstop;
-    settings.camera.focalDistance = job.request.focalDistance;
+    settings.camera.lensLayout = job.lensLayout;
+    const LensSettings lens = lensSettings(job.request);
+    settings.camera.fstop = lens.fstop;
+    settings.camera.focusDistance = lens.focusDistance;
     settings.camera.filmDiagonal = job.request.filmDiagonal;
     settings.camera.mode = job.request.mode;
     settings.spp = job.request.spp;

@@ -22,8 +22,8 @@ json lensSummaryJson(const StoredLens& lens) {
 }
 
 // The `lenslab lens --json` object, with the lens's id and how the service holds it.
-json lensDetailJson(const StoredLens& lens, std::optional<double> fstop, double focus) {
-    json body = lensAnalysisJson(analyzeLens(lens.system, fstop, focus));
+json lensDetailJson(const StoredLens& lens, const LensSettings& settings) {
+    json body = lensAnalysisJson(analyzeLens(lens.system, settings));
     body["id"] = lens.id;
     body["name"] = lens.name;
     body["description"] = lens.description;
@@ -67,7 +67,7 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
         try {
             const auto lens = parts.lenses.add(name, text, layoutParameter(req));
             res.set_header("Location", "/api/lenses/" + lens->id);
-            replyJson(res, 201, lensDetailJson(*lens, std::nullopt, std::numeric_limits<double>::infinity()));
+            replyJson(res, 201, lensDetailJson(*lens, LensSettings{}));
         } catch (const LensTableError& e) {
             replyJson(res, 400, {{"error", e.what()}, {"file", e.file()}, {"line", e.line()}, {"problem", e.problem()}});
         } catch (const LensStoreFull& e) {
@@ -77,9 +77,7 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
 
     server.Get(R"(/api/lenses/([^/]+))", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
-        const auto fstop = queryNumber(req, "fstop", 0.5, 128);
-        const double focus = queryDistance(req, "focus", 1, 1e7).value_or(std::numeric_limits<double>::infinity());
-        replyJson(res, 200, lensDetailJson(*lens, fstop, focus));
+        replyJson(res, 200, lensDetailJson(*lens, queryLensSettings(req)));
     });
 
     server.Get(R"(/api/lenses/([^/]+)/table)", [&parts](const httplib::Request& req, httplib::Response& res) {

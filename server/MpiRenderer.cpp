@@ -65,10 +65,10 @@ RenderedImages MpiRenderer::render(const RenderJobInput& job, const TileCallback
     argv.insert(argv.end(), {"--hostfile", launch_.hostfile, "-np", std::to_string(launch_.processes), lenslabBinary_,
                              "render", job.scenePath, "--mpi", "--progress-json", "--quiet", "--mode", r.mode, "--spp", std::to_string(r.spp), "--width", std::to_string(r.width),
                              "--height", std::to_string(r.height), "-o", exr, "-o", png});
-    if (!job.lensPath.empty()) argv.insert(argv.end(), {"--lens", job.lensPath});
+    if (!job.lensPath.empty()) argv.insert(argv.end(), {"--lens", job.lensPath, "--layout", layoutName(job.lensLayout)});
     if (launch_.threadsPerWorker > 0) argv.insert(argv.end(), {"--threads", std::to_string(launch_.threadsPerWorker)});
     if (r.fstop) argv.insert(argv.end(), {"--fstop", exactNumber(*r.fstop)});
-    if (r.focalDistance) argv.insert(argv.end(), {"--focus", exactNumber(*r.focalDistance)});
+    if (r.focusDistance) argv.insert(argv.end(), {"--focus", exactNumber(*r.focusDistance)});
     if (r.filmDiagonal) argv.insert(argv.end(), {"--filmdiag", exactNumber(*r.filmDiagonal)});
 
     struct Cleanup {

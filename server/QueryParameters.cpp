@@ -41,6 +41,14 @@ std::optional<double> queryNumber(const httplib::Request& req, const std::string
     return x;
 }
 
+LensSettings queryLensSettings(const httplib::Request& req) {
+    constexpr double kAny = std::numeric_limits<double>::max();  // the range is optics' to check
+    LensSettings s;
+    if (const auto fstop = queryNumber(req, "fstop", -kAny, kAny)) s.fstop = Setting{*fstop, "query parameter fstop"};
+    if (const auto focus = queryDistance(req, "focus", -kAny, kAny)) s.focusDistance = Setting{*focus, "query parameter focus"};
+    return s;
+}
+
 std::optional<double> queryDistance(const httplib::Request& req, const std::string& name, double min, double max) {
     const auto text = queryText(req, name);
     if (text && (*text == "inf" || *text == "infinity")) return std::numeric_limits<double>::infinity();

@@ -13,8 +13,8 @@ RenderJobInput resolveRenderJob(const std::string& jobId, const RenderRequest& r
     if (!scene) throw HttpError(400, "no scene with id '" + request.scene + "' (see GET /api/scenes)");
     const auto lens = lenses.find(request.lens);
     if (!lens) throw HttpError(400, "no lens with id '" + request.lens + "' (see GET /api/lenses)");
-    analyzeLens(lens->system, request.fstop, request.focalDistance.value_or(std::numeric_limits<double>::infinity()));
-    return {jobId, request, scene->path, lens->path};
+    analyzeLens(lens->system, lensSettings(request));
+    return {jobId, request, scene->path, lens->path, lens->system.layout};
 }
 
 }  // namespace lenslab

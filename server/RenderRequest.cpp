@@ -1,6 +1,7 @@
 #include "RenderRequest.h"
 
 #include <cmath>
+#include <limits>
 
 #include "HttpError.h"
 #include "Identifiers.h"
@@ -62,8 +63,9 @@ RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, c
     if (!body.contains("scene") && defaultScene.empty()) throw HttpError(400, "scene is required (see GET /api/scenes)");
     r.scene = identifierField(body, "scene", defaultScene);
     r.lens = identifierField(body, "lens", r.lens);
-    r.fstop = fieldNumber(body, "fstop", 0.5, 128);
-    r.focalDistance = fieldNumber(body, "focaldistance", 1, 1e7);
+    constexpr double kAny = std::numeric_limits<double>::max();  // lens settings' ranges are optics' to check
+    r.fstop = fieldNumber(body, "fstop", -kAny, kAny);
+    r.focusDistance = fieldNumber(body, "focaldistance", -kAny, kAny);
     r.filmDiagonal = fieldNumber(body, "filmdiagonal", 1, 500);
     r.mode = fieldText(body, "mode", r.mode);
     if (r.mode != "accurate" && r.mode != "approximate" && r.mode != "auto")
@@ -74,12 +76,19 @@ RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, c
     return r;
 }
 
+LensSettings lensSettings(const RenderRequest& r) {
+    LensSettings s;
+    if (r.fstop) s.fstop = Setting{*r.fstop, "field fstop"};
+    if (r.focusDistance) s.focusDistance = Setting{*r.focusDistance, "field focaldistance"};
+    return s;
+}
+
 nlohmann::json renderRequestJson(const RenderRequest& r) {
     auto optional = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
     return {{"scene", r.scene},
             {"lens", r.lens},
             {"fstop", optional(r.fstop)},
-            {"focaldistance", optional(r.focalDistance)},
+            {"focaldistance", optional(r.focusDistance)},
             {"filmdiagonal", optional(r.filmDiagonal)},
             {"mode", r.mode},
             {"spp", r.spp},

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "LensSettings.h"
 #include "ServiceConfig.h"
 
 namespace lenslab {
@@ -14,7 +15,7 @@ struct RenderRequest {
     std::string scene;                   // id from GET /api/scenes
     std::string lens = "dgauss.50mm";    // id from GET /api/lenses
     std::optional<double> fstop;         // unset: as in the scene
-    std::optional<double> focalDistance; // front vertex to the plane of focus; unset: as in the scene
+    std::optional<double> focusDistance; // front vertex to the plane of focus (field focaldistance); unset: as in the scene
     std::optional<double> filmDiagonal;  // unset: as in the scene
     std::string mode = "accurate";       // accurate (exact trace) | approximate (thick lens) | auto
     int spp = 16;
@@ -25,6 +26,9 @@ struct RenderRequest {
 // `defaultScene` fills an omitted scene.
 RenderRequest parseRenderRequest(const nlohmann::json& body, const RenderLimits& limits,
                                  const std::string& defaultScene);
+
+// The request's fstop and focaldistance as lens settings named by their fields.
+LensSettings lensSettings(const RenderRequest& request);
 
 // The request in the body's own field names (what job listings show and resubmission reuses).
 nlohmann::json renderRequestJson(const RenderRequest& request);

@@ -19,6 +19,7 @@ struct RenderJobInput {
     RenderRequest request;
     std::string scenePath;  // resolved inside the scenes folder
     std::string lensPath;   // resolved inside the lens folders
+    TableLayout lensLayout = TableLayout::GapBefore;  // the layout the lens was checked with
 };
 
 struct RenderedImages {

@@ -37,7 +37,7 @@ BENCHMARK_CAPTURE(BM_DiagramPng, egl, DiagramBackendKind::EGL)->Unit(benchmark::
 void BM_ColdContextAndDraw(benchmark::State& state, DiagramBackendKind backend) {
     const DiagramOptions options = benchOptions(backend);
     const DiagramPicture picture =
-        composeDiagram(analyzeLens(benchLens(), options.fstop, options.focusDistance), "dgauss", options);
+        composeDiagram(analyzeLens(benchLens(), options.lens), "dgauss", options);
     for (auto _ : state) {
         const auto context = createDiagramBackend(backend);
         GlCanvas canvas;
@@ -50,14 +50,14 @@ BENCHMARK_CAPTURE(BM_ColdContextAndDraw, egl, DiagramBackendKind::EGL)->Unit(ben
 void BM_AnalysisAndLayout(benchmark::State& state) {
     const DiagramOptions options = benchOptions(DiagramBackendKind::OSMesa);
     for (auto _ : state)
-        benchmark::DoNotOptimize(composeDiagram(analyzeLens(benchLens(), options.fstop, options.focusDistance), "dgauss", options));
+        benchmark::DoNotOptimize(composeDiagram(analyzeLens(benchLens(), options.lens), "dgauss", options));
 }
 BENCHMARK(BM_AnalysisAndLayout)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_RasteriseOnWarmContext(benchmark::State& state, DiagramBackendKind backend) {
     const DiagramOptions options = benchOptions(backend);
     const DiagramPicture picture =
-        composeDiagram(analyzeLens(benchLens(), options.fstop, options.focusDistance), "dgauss", options);
+        composeDiagram(analyzeLens(benchLens(), options.lens), "dgauss", options);
     const auto context = createDiagramBackend(backend);
     GlCanvas canvas;
     for (auto _ : state)
@@ -69,7 +69,7 @@ BENCHMARK_CAPTURE(BM_RasteriseOnWarmContext, egl, DiagramBackendKind::EGL)->Unit
 void BM_TextAndPng(benchmark::State& state) {
     const DiagramOptions options = benchOptions(DiagramBackendKind::OSMesa);
     const DiagramPicture picture =
-        composeDiagram(analyzeLens(benchLens(), options.fstop, options.focusDistance), "dgauss", options);
+        composeDiagram(analyzeLens(benchLens(), options.lens), "dgauss", options);
     const std::vector<std::uint8_t> blank(static_cast<std::size_t>(picture.width) * picture.height * 4, 255);
     for (auto _ : state) {
         std::vector<std::uint8_t> pixels = blank;

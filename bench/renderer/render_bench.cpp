@@ -14,10 +14,8 @@ namespace {
 
 double cameraSetupSeconds(const lenslab::RenderOutput& out) {
     using namespace lenslab;
-    RealisticParams p;
-    p.lensPath = out.metadata.at("lensFile");
-    p.fstop = std::stod(out.metadata.at("fstop"));
-    p.focusDistanceMm = std::stod(out.metadata.at("focusDistanceMm"));
+    RealisticParams p = realisticParams(out.metadata.at("lensFile"), std::stod(out.metadata.at("fstop")),
+                                        std::stod(out.metadata.at("focusDistanceMm")));
     p.filmDiagonalMm = std::stod(out.metadata.at("filmDiagonalMm"));
     const auto start = std::chrono::steady_clock::now();
     RealisticCamera camera(p, {}, 400, 400, 0.5);

@@ -13,8 +13,8 @@ TimedFrame renderFrame(const LensCase& lens, const StopCase& stop, const std::st
     s.scenePath = std::string(LENSLAB_SOURCE_DIR) + "/scenes/shared-dgauss.pbrt";
     s.camera.lensFile = lens.path;
     // The scene names its own stop: the widest must be asked for by number.
-    s.camera.fstop = stop.fstop ? *stop.fstop : analyzeLens(loadLensSystem(lens.path), std::nullopt, kFocusDistanceMm).fstop;
-    s.camera.focalDistance = kFocusDistanceMm;
+    s.camera.fstop = Setting{stop.fstop ? *stop.fstop : analyzeLens(loadLensSystem(lens.path), std::nullopt, kFocusDistanceMm).fstop, "bench"};
+    s.camera.focusDistance = Setting{kFocusDistanceMm, "bench"};
     s.camera.filmDiagonal = filmDiagonalMm();
     s.camera.mode = mode;
     s.width = width;

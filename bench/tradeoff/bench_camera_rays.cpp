@@ -31,10 +31,7 @@ struct Workload {
 
 Workload makeWorkload(const LensCase& lens, const StopCase& stop, const FieldCase& field) {
     Workload w;
-    RealisticParams p;
-    p.lensPath = lens.path;
-    p.fstop = stop.fstop;
-    p.focusDistanceMm = kFocusDistanceMm;
+    RealisticParams p = realisticParams(lens.path, stop.fstop, kFocusDistanceMm);
     p.filmDiagonalMm = filmDiagonalMm();
     w.accurate = std::make_shared<RealisticCamera>(p, Transform{}, kFrameWidth, kFrameHeight, 0.5);
     p.mode = LensMode::Approximate;

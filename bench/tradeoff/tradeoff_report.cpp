@@ -29,10 +29,7 @@ const char* const kConvergenceStop = "f/5.6";
 double pixelMm() { return kFilmWidthMm / kFrameWidth; }
 
 LensAnalysis analysisOf(const LensCase& lens, const StopCase& stop) {
-    RealisticParams p;
-    p.lensPath = lens.path;
-    p.fstop = stop.fstop;
-    p.focusDistanceMm = kFocusDistanceMm;
+    RealisticParams p = realisticParams(lens.path, stop.fstop, kFocusDistanceMm);
     p.filmDiagonalMm = filmDiagonalMm();
     return RealisticCamera(p, {}, kFrameWidth, kFrameHeight, 0.5).analysis();
 }

@@ -32,11 +32,6 @@ void validate(const DiagramOptions& o) {
                            std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide) + " pixels");
     if (o.rays < 1 || o.rays > kMaxRays)
         throw DiagramError("rays per fan must be 1 to " + std::to_string(kMaxRays) + ", got " + std::to_string(o.rays));
-    if (o.fstop && !(std::isfinite(*o.fstop) && *o.fstop > 0))
-        throw DiagramError("f-number must be a positive number, got " + formatNumber(*o.fstop));
-    if (!(o.focusDistance > 0))  // also refuses NaN; infinity is allowed
-        throw DiagramError("focus distance must be positive (mm in front of the front vertex) or infinity, got " +
-                           formatNumber(o.focusDistance));
     if (o.fieldHeight && !(std::isfinite(*o.fieldHeight) && *o.fieldHeight >= 0))
         throw DiagramError("field height must be a non-negative number of mm on the film, got " + formatNumber(*o.fieldHeight));
 }
@@ -59,7 +54,7 @@ DiagramBackendKind parseDiagramBackend(const std::string& name) {
 
 std::vector<std::uint8_t> drawLensDiagramPng(const LensSystem& lens, const DiagramOptions& options) {
     validate(options);
-    const LensAnalysis analysis = analyzeLens(lens, options.fstop, options.focusDistance);
+    const LensAnalysis analysis = analyzeLens(lens, options.lens);
     const DiagramPicture picture = composeDiagram(analysis, displayName(lens.name), options);
     std::vector<std::uint8_t> pixels = threadCanvas(options.backend)
                                            .rasterise(picture.shapes, picture.width, picture.height, diagram_style::kBackground);

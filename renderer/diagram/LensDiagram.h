@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "LensSettings.h"
 #include "LensSystem.h"
 
 namespace lenslab {
@@ -16,8 +17,7 @@ enum class DiagramBackendKind { OSMesa, EGL, Auto };
 
 struct DiagramOptions {
     DiagramMode mode = DiagramMode::Exact;
-    std::optional<double> fstop;        // nullopt: the widest the lens allows
-    double focusDistance = std::numeric_limits<double>::infinity();  // mm from the front vertex
+    LensSettings lens;                  // aperture and focus (default: widest, at infinity)
     std::optional<double> fieldHeight;  // mm on the film for the off-axis fan; nullopt: automatic
     int rays = 9;                       // rays per fan
     int width = 1200, height = 600;     // pixels

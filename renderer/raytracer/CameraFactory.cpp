@@ -41,11 +41,14 @@ void checkClipping(const ParamSet& p, std::vector<std::string>& warnings) {
                            " not applied: camera rays run uncut from the front lens element");
 }
 
-// Runs `build`, reporting the optics' own errors at the Camera directive.
+// Runs `build`, reporting the optics' own errors at the Camera directive; errors about a setting
+// already name where it came from (a scene line, or a command-line flag that overrode it).
 template <class Build>
 auto atCamera(const ParamSet& p, Build build) -> decltype(build()) {
     try {
         return build();
+    } catch (const SettingError& e) {
+        throw SceneError(e.what());
     } catch (const OpticsError& e) {
         p.fail(e.what());
     } catch (const LensTableError& e) {
@@ -83,36 +86,46 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     // The scene's own lens: the one rendered, or (under an override) the one its filmdistance was set for.
     const auto sceneLens = [&] { return resolveScenePath(scene, lensName, p.where()); };
     r.lensPath = o.lensFile ? *o.lensFile : sceneLens();
+    r.lens = atCamera(p, [&] { return loadLensSystem(r.lensPath, o.lensFile ? o.lensLayout : std::nullopt); });
 
-    if (p.has("fstop")) r.fstop = p.getFloat("fstop", 0);
-    for (const char* name : {"aperture_diameter", "aperturediameter"})
-        if (p.has(name)) r.stopDiameterMm = p.getFloat(name, 1);
-    if (pbrtStyle && !r.fstop && !r.stopDiameterMm) r.stopDiameterMm = 1.0;  // pbrt-v3's default opening
+    // The scene's settings, each named by its parameter; the caller's overrides replace them.
+    const auto sceneSetting = [&](const char* name, double scale = 1) -> std::optional<Setting> {
+        if (!p.has(name)) return std::nullopt;
+        return Setting{scale * p.getFloat(name, 0), describe(p.where()) + ": " + name};
+    };
+    LensSettings& s = r.settings;
+    s.fstop = sceneSetting("fstop");
+    s.stopDiameter = p.has("aperture_diameter") ? sceneSetting("aperture_diameter") : sceneSetting("aperturediameter");
+    if (pbrtStyle && !s.fstop && !s.stopDiameter)
+        s.stopDiameter = Setting{1.0, describe(p.where()) + ": aperturediameter (pbrt-v3's default, 1 mm)"};
     if (o.fstop) {
-        r.fstop = *o.fstop;
-        r.stopDiameterMm.reset();
+        s.fstop = o.fstop;
+        s.stopDiameter.reset();
     }
-    const bool focusFromFilm = p.has("focusdistance") || (pbrtStyle && !p.has("focaldistance"));
-    if (p.has("filmdistance")) {
-        r.filmDistanceMm = p.getFloat("filmdistance", 0);
-    } else if (focusFromFilm) {
-        r.focusDistanceMm = r.cameraUnitMm * p.getFloat("focusdistance", 10);  // pbrt-v3's default: 10 units
-        r.focusFromFilm = true;
+    s.filmDistance = sceneSetting("filmdistance");
+    s.focusFromFilm = p.has("focusdistance") || (pbrtStyle && !p.has("focaldistance"));
+    if (s.filmDistance) {
+        s.focusFromFilm = false;
+    } else if (s.focusFromFilm) {
+        s.focusDistance = p.has("focusdistance") ? sceneSetting("focusdistance", r.cameraUnitMm)
+                                                 : Setting{r.cameraUnitMm * 10, describe(p.where()) + ": focusdistance (pbrt-v3's default, 10 units)"};
     } else {
-        r.focusDistanceMm = p.getFloat("focaldistance", 10000);
+        s.focusDistance = p.has("focaldistance") ? sceneSetting("focaldistance")
+                                                 : Setting{10000, describe(p.where()) + ": focaldistance (default, 10 m)"};
     }
-    if (o.focalDistance) {
-        r.focusDistanceMm = *o.focalDistance;
-        r.focusFromFilm = false;
-        r.filmDistanceMm.reset();
-    } else if (o.lensFile && r.filmDistanceMm) {
+    if (o.focusDistance) {
+        s.focusDistance = o.focusDistance;
+        s.focusFromFilm = false;
+        s.filmDistance.reset();
+    } else if (o.lensFile && s.filmDistance) {
         // A film distance belongs to the scene's lens: another lens focuses where that one did.
         const std::string ownPath = sceneLens();
-        r.focusDistanceMm = atCamera(p, [&] {
+        const double distance = atCamera(p, [&] {
             const LensSystem own = loadLensSystem(ownPath);
-            return thickLensFocusForFilm(own, computeFirstOrder(own), own.rearZ() - *r.filmDistanceMm);
+            return thickLensFocusForFilm(own, computeFirstOrder(own), own.rearZ() - s.filmDistance->value);
         });
-        r.filmDistanceMm.reset();
+        s.focusDistance = Setting{distance, s.filmDistance->source + " (where the scene's own lens focuses)"};
+        s.filmDistance.reset();
     }
     const double sceneDiagonal = p.has("filmdiag") ? p.getFloat("filmdiag", 35) : p.getFloat("filmdiagonal", scene.film.diagonalMm);
     r.filmDiagonalMm = o.filmDiagonal.value_or(sceneDiagonal);
@@ -153,7 +166,7 @@ std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverride
                                    double filmMarginPixels) {
     const ParamSet& p = scene.camera.params;
     if (scene.camera.type == "realistic") return makeRealistic(scene, o, width, height, filmMarginPixels);
-    if (o.lensFile || o.fstop || o.focalDistance || o.filmDiagonal || o.mode)
+    if (o.lensFile || o.fstop || o.focusDistance || o.filmDiagonal || o.mode)
         throw SceneError(scene.file + ": the lens overrides need a Camera \"realistic\"; this scene has a " +
                          scene.camera.type + " camera");
     if (scene.camera.type == "environment") {

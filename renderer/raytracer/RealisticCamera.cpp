@@ -14,40 +14,17 @@ namespace lenslab {
 
 namespace {
 
-// The f-number whose stop opening is `diameter` (pbrt-v3 scenes give the opening itself).
-double fstopForStopDiameter(const LensSystem& lens, double diameter) {
-    const FirstOrder fo = computeFirstOrder(lens);
-    const ApertureRange range = computeApertureRange(lens, fo);
-    if (!(diameter > 0)) throw OpticsError("aperture diameter must be positive");
-    if (diameter >= range.stopDiameterMax) return range.fstopMin;  // pbrt-v3 clamps to the widest too
-    double lo = std::log(range.fstopMin), hi = std::log(range.fstopMax);
-    for (int it = 0; it < 60; ++it) {  // the opening shrinks as the f-number grows
-        const double mid = 0.5 * (lo + hi);
-        (stopDiameterForFstop(lens, fo, range, std::exp(mid)) > diameter ? lo : hi) = mid;
-    }
-    return std::exp(0.5 * (lo + hi));
-}
-
 double cos4(double c) { return (c * c) * (c * c); }
-
-// The focus result for a film placed directly: both models' film at filmZ, the plane of focus the
-// thick lens's conjugate (the exact trace's best-focus spot is not measured).
-FocusResult filmPlacedAt(const LensSystem& lens, const FirstOrder& fo, double filmZ) {
-    FocusResult f;
-    const double distance = thickLensFocusForFilm(lens, fo, filmZ);
-    f.infinity = std::isinf(distance);
-    f.objectZ = f.infinity ? distance : lens.frontZ() + distance;
-    f.imageZThick = f.imageZExact = filmZ;
-    return f;
-}
 
 }  // namespace
 
-double thickLensFocusForFilm(const LensSystem& lens, const FirstOrder& fo, double filmZ) {
-    const double imageDistance = fo.zPPrime - filmZ;  // P' to the film, positive toward the film
-    if (!(imageDistance > fo.efl)) return std::numeric_limits<double>::infinity();
-    const double objectDistance = fo.efl * imageDistance / (imageDistance - fo.efl);  // from P
-    return fo.zP + objectDistance - lens.frontZ();
+RealisticParams realisticParams(const std::string& lensPath, std::optional<double> fstop, double focusDistanceMm) {
+    RealisticParams p;
+    p.lensPath = lensPath;
+    p.lens = loadLensSystem(lensPath);
+    if (fstop) p.settings.fstop = Setting{*fstop, "fstop"};
+    p.settings.focusDistance = Setting{focusDistanceMm, "focus distance"};
+    return p;
 }
 
 RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform& cameraToWorld, int width, int height,
@@ -63,30 +40,9 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     halfHeightMm_ = 0.5 * params.filmDiagonalMm * height / diag;
     const double fullFrameRadius = findFilmRadiusRange(filmMarginPixels);
 
-    const LensSystem lens = loadLensSystem(params.lensPath);
-    std::optional<double> fstop = params.fstop;
-    if (!fstop && params.stopDiameterMm) fstop = fstopForStopDiameter(lens, *params.stopDiameterMm);
-    const bool thickFilm = params.mode == LensMode::Approximate;
-    if (params.filmDistanceMm) {
-        if (!(*params.filmDistanceMm > 0))
-            throw OpticsError("film distance must be positive (mm behind the rear vertex), got " +
-                              formatNumber(*params.filmDistanceMm));
-        analysis_ = analyzeLens(lens, fstop, std::numeric_limits<double>::infinity());
-        analysis_.focus = filmPlacedAt(analysis_.lens, analysis_.firstOrder, lens.rearZ() - *params.filmDistanceMm);
-    } else if (params.focusFromFilm) {
-        // Object distance from the film = focus distance: the film position depends on the focus,
-        // so iterate (the film moves by far less than the distance).
-        double filmZ = computeFirstOrder(lens).zFPrime;
-        for (int it = 0; it < 8; ++it) {
-            const double fromVertex = params.focusDistanceMm + filmZ - lens.frontZ();
-            analysis_ = analyzeLens(lens, fstop, fromVertex);
-            const double next = thickFilm ? analysis_.focus.imageZThick : analysis_.focus.imageZExact;
-            if (std::fabs(next - filmZ) < 1e-9) break;
-            filmZ = next;
-        }
-    } else {
-        analysis_ = analyzeLens(lens, fstop, params.focusDistanceMm);
-    }
+    LensSettings settings = params.settings;
+    settings.focusModel = params.mode == LensMode::Approximate ? FocusModel::Thick : FocusModel::Exact;
+    analysis_ = analyzeLens(params.lens, settings);
     filmZExact_ = analysis_.focus.imageZExact;
     filmZThick_ = analysis_.focus.imageZThick;
 
@@ -278,7 +234,7 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"fstop", formatNumber(a.fstop)},
             {"stopDiameterMm", formatNumber(a.stopDiameter)},
             {"focusDistanceMm", a.focus.infinity ? "inf" : formatNumber(a.focus.objectZ - a.lens.frontZ())},
-            {"filmPlacement", params_.filmDistanceMm ? "filmdistance " + formatNumber(*params_.filmDistanceMm) + " mm behind the rear vertex"
+            {"filmPlacement", params_.settings.filmDistance ? "filmdistance " + formatNumber(params_.settings.filmDistance->value) + " mm behind the rear vertex"
                                                      : "focused"},
             {"aperture", params_.aperture.name()},
             {"filmDiagonalMm", formatNumber(params_.filmDiagonalMm)},

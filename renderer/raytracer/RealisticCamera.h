@@ -20,20 +20,16 @@
 #include "ExactTrace.h"
 #include "ExitPupilBounds.h"
 #include "LensAnalysis.h"
+#include "LensSettings.h"
 #include "LensModeMap.h"
 #include "Transform.h"
 
 namespace lenslab {
 
 struct RealisticParams {
-    std::string lensPath;
-    std::optional<double> fstop;           // nullopt: the widest (unless stopDiameterMm is set)
-    std::optional<double> stopDiameterMm;  // pbrt-v3's aperturediameter: the stop opening itself
-    double focusDistanceMm = 10000;        // front vertex to the plane of focus
-    bool focusFromFilm = false;            // pbrt-v3: focusDistanceMm is measured from the film instead
-    // The later course's filmdistance: rear vertex to film. Set: the film sits there in every mode
-    // and nothing is focused (focusDistanceMm unused).
-    std::optional<double> filmDistanceMm;
+    std::string lensPath;                  // for the metadata
+    LensSystem lens;                       // the table as read, in its checked layout
+    LensSettings settings;                 // aperture and focus, checked by analyzeLens
     double cameraUnitMm = 1000;            // millimetres per camera-space unit (1: course, 1000: pbrt-v3)
     ApertureShape aperture;                // pbrt-v4's shape of the stop's opening
     double filmDiagonalMm = 35;
@@ -46,9 +42,9 @@ struct RealisticParams {
     bool simpleWeighting = false;          // pbrt-v3: weights normalised to 1 at the image centre
 };
 
-// The plane the thick lens images onto a film at filmZ (lens space, mm): its distance from the front
-// vertex, infinity when the film lies at or in front of F' (no real object is in focus).
-double thickLensFocusForFilm(const LensSystem& lens, const FirstOrder& firstOrder, double filmZ);
+// Parameters for a lens file at an f-number (nullopt: the widest) focused at focusDistanceMm from the
+// front vertex: the benchmarks' and tests' shorthand.
+RealisticParams realisticParams(const std::string& lensPath, std::optional<double> fstop, double focusDistanceMm);
 
 class RealisticCamera : public Camera {
 public:

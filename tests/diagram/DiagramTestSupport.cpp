@@ -20,7 +20,7 @@ RgbaImage renderDiagram(const LensSystem& lens, const DiagramOptions& options) {
 }
 
 DiagramPicture layoutDiagram(const LensSystem& lens, const DiagramOptions& options) {
-    return composeDiagram(analyzeLens(lens, options.fstop, options.focusDistance), lens.name, options);
+    return composeDiagram(analyzeLens(lens, options.lens), lens.name, options);
 }
 
 Rgba pixelAt(const RgbaImage& image, Point2 p) {

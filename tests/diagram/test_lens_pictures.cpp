@@ -53,7 +53,7 @@ int rayExtent(const RgbaImage& image, const DiagramPicture& picture, int x) {
 TEST_P(DiagramOfBundledLens, DrawsLensAxisAndRaysOnBothBackends) {
     const LensSystem lens = loadBundledLens(GetParam());
     DiagramOptions options;
-    const LensAnalysis analysis = analyzeLens(lens, options.fstop, options.focusDistance);
+    const LensAnalysis analysis = analyzeLens(lens, options.lens);
     const DiagramPicture picture = layoutDiagram(lens, options);
 
     options.backend = DiagramBackendKind::OSMesa;
@@ -95,14 +95,14 @@ TEST_P(DiagramOfBundledLens, AxialFanConvergesOnTheFocusedObject) {
     const LensSystem lens = loadBundledLens(GetParam());
     DiagramOptions options;
     options.fieldHeight = 0.0;
-    const LensAnalysis infinity = analyzeLens(lens, std::nullopt, options.focusDistance);
+    const LensAnalysis infinity = analyzeLens(lens, options.lens);
     // Near enough to be in the picture, far enough for the lens to focus (the telephoto's F is far out).
-    options.focusDistance = std::max(1.2 * (lens.frontZ() - infinity.focus.imageZExact),
-                                     1.1 * closestFocusDistance(infinity.firstOrder));
+    const double focus = std::max(1.2 * (lens.frontZ() - infinity.focus.imageZExact), 1.1 * closestFocusDistance(infinity.firstOrder));
+    options.lens.focusDistance = Setting{focus, "focus"};
     const DiagramPicture picture = layoutDiagram(lens, options);
     const RgbaImage image = renderDiagram(lens, options);
 
-    const double objectZ = lens.frontZ() + options.focusDistance;
+    const double objectZ = lens.frontZ() + focus;
     const double xFront = picture.view.toPicture({lens.frontZ(), 0}).x;
     const double xObject = picture.view.toPicture({objectZ, 0}).x;
     ASSERT_GT(xObject, picture.content.left);

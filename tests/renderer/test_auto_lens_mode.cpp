@@ -12,10 +12,7 @@ namespace {
 
 // A 36 x 24 mm film at 240 x 160 pixels (0.15 mm pixels), focused at 5.5 m.
 RealisticParams params(const std::string& lens, double fstop, LensMode mode) {
-    RealisticParams p;
-    p.lensPath = test::lensPath(lens);
-    p.fstop = fstop;
-    p.focusDistanceMm = 5500;
+    RealisticParams p = realisticParams(test::lensPath(lens), fstop, 5500);
     p.filmDiagonalMm = std::hypot(36.0, 24.0);
     p.mode = mode;
     return p;
@@ -127,10 +124,7 @@ TEST(AutoLensMode, AutoImageIsTheApproximateOneWhereThickAndTheAccurateOneWhereE
         return test::render(dir.write(mode + ".pbrt", fisheyeWall(mode)), kSize, kSize, 4).image;
     };
     const Image accurate = render("accurate"), approximate = render("approximate"), automatic = render("auto");
-    RealisticParams p;
-    p.lensPath = test::lensPath("fisheye.10mm.dat");
-    p.fstop = 5.6;
-    p.focusDistanceMm = 3000;
+    RealisticParams p = realisticParams(test::lensPath("fisheye.10mm.dat"), 5.6, 3000);
     p.filmDiagonalMm = 33.94;
     p.mode = LensMode::Auto;
     const RealisticCamera camera(p, {}, kSize, kSize, 0.5);

@@ -109,15 +109,13 @@ TEST(CameraGenerations, FilmDistancePlacesTheFilmWhereTheFocusSolvePutsIt) {
     const double fstop = 4, focus = 2500;
     const LensAnalysis a = analyzeLens(lens, fstop, focus);
     for (const LensMode mode : {LensMode::Accurate, LensMode::Approximate}) {
-        RealisticParams focused;
-        focused.lensPath = test::lensPath("dgauss.dat");
-        focused.fstop = fstop;
-        focused.focusDistanceMm = focus;
+        RealisticParams focused = realisticParams(test::lensPath("dgauss.dat"), fstop, focus);
         focused.mode = mode;
         focused.cameraUnitMm = 1;
         RealisticParams placed = focused;
         const double filmZ = mode == LensMode::Accurate ? a.focus.imageZExact : a.focus.imageZThick;
-        placed.filmDistanceMm = lens.rearZ() - filmZ;
+        placed.settings.focusDistance.reset();
+        placed.settings.filmDistance = Setting{lens.rearZ() - filmZ, "filmdistance"};
         const RealisticCamera f(focused, Transform(), 64, 48, 0), p(placed, Transform(), 64, 48, 0);
         EXPECT_NEAR(p.filmZ(), f.filmZ(), 1e-9);
         int compared = 0;

@@ -214,3 +214,37 @@ TEST(EnvironmentCamera, LatitudeLongitudeLayout) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// A lens setting is blamed on where it came from: the scene's line, or the flag that overrode it.
+TEST(LensSettingSources, ErrorsNameTheSceneLineOrTheOverridingFlag) {
+    test::TempDir dir;
+    const std::string p = dir.write("cam.pbrt", test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 1.2 ") +
+                                                    "\nFilm \"image\"\nWorldBegin\nWorldEnd\n");
+    const auto errorOf = [&](RenderSettings s) {
+        s.scenePath = p;
+        s.width = s.height = 8;
+        s.spp = 1;
+        try {
+            renderScene(s);
+        } catch (const SceneError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    const std::string scene = errorOf({});
+    EXPECT_NE(scene.find("cam.pbrt:2: Camera \"realistic\": fstop: f-number 1.2 is outside this lens's range f/2.02 to f/64"),
+              std::string::npos)
+        << scene;
+    RenderSettings flag;
+    flag.camera.fstop = Setting{0.7, "--fstop"};
+    const std::string overridden = errorOf(flag);
+    EXPECT_EQ(overridden.rfind("--fstop: f-number 0.7 is outside this lens's range", 0), 0u) << overridden;
+    flag.camera.fstop = Setting{4, "--fstop"};
+    EXPECT_EQ(errorOf(flag), "(no error)");
+}
+
+}  // namespace
+}  // namespace lenslab

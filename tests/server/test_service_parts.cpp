@@ -33,7 +33,7 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
                        {"mode", "approximate"}, {"spp", 4}, {"width", 64}, {"height", 48}};
     EXPECT_EQ(renderRequestJson(parseRenderRequest(full, limits, "")), full);
     for (const json& bad : {json{{"spp", 0}}, json{{"spp", limits.maxSpp + 1}}, json{{"width", 7}},
-                            json{{"height", limits.maxHeight + 1}}, json{{"fstop", 0.1}}, json{{"focaldistance", -1}},
+                            json{{"height", limits.maxHeight + 1}}, json{{"fstop", "wide"}}, json{{"focaldistance", "near"}},
                             json{{"filmdiagonal", "big"}}, json{{"mode", "fast"}}, json{{"scene", "../x"}},
                             json{{"lens", ""}}, json{{"colour", 1}}, json{{"spp", 1.5}}}) {
         try {
