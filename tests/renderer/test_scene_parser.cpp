@@ -130,7 +130,7 @@ TEST(SceneErrors, UnsupportedFeaturesAreNamedNeverIgnored) {
         const std::string e = errorOf(p);
         EXPECT_NE(e.find(expected), std::string::npos) << e;
     };
-    check("Material \"metal\"", "material \"metal\" is not supported");
+    check("Material \"subsurface\"", "material \"subsurface\" is not supported");
     check("AttributeBegin\nShape \"sphere\"", "not closed by AttributeEnd");
 }
 
