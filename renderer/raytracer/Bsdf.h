@@ -63,17 +63,15 @@ public:
         lobes_[count_] = new (slots_[count_].bytes) L(std::forward<Args>(args)...);
         weights_[count_++] = weight;
     }
-    int lobeCount() const { return count_; }
-
-    Vec3f toLocal(Vec3f w) const { return frame_.toLocal(w); }
-    Vec3f toWorld(Vec3f w) const { return frame_.toWorld(w); }
-
     // World directions. f excludes the specular lobes; pdf is the mixture density of sample().
     Vec3f f(Vec3f wo, Vec3f wi) const;
     float pdf(Vec3f wo, Vec3f wi) const;
     bool sample(Vec3f wo, float uLobe, float u1, float u2, BsdfSample& out) const;
 
 private:
+    Vec3f toLocal(Vec3f w) const { return frame_.toLocal(w); }
+    Vec3f toWorld(Vec3f w) const { return frame_.toWorld(w); }
+
     struct alignas(16) Slot {
         std::byte bytes[128];
     };

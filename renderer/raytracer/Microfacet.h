@@ -27,10 +27,6 @@ public:
     Vec3f sampleWh(Vec3f wo, float u1, float u2) const;
     float pdf(Vec3f wo, Vec3f wh) const;  // density of sampleWh, per solid angle of wh
 
-    MicrofacetKind kind() const { return kind_; }
-    float alphaX() const { return alphaX_; }
-    float alphaY() const { return alphaY_; }
-
 private:
     MicrofacetKind kind_;
     float alphaX_, alphaY_;
