@@ -109,6 +109,36 @@ TEST(Materials, NoneSphereIsInvisibleInARender) {
         for (int x = 0; x < 8; ++x) EXPECT_NEAR(test::lum(im, x, y), 0.5f, 1e-4f) << x << "," << y;
 }
 
+// A convex object under a uniform sky of radiance 1 reflects, by direct lighting alone, its
+// directional albedo. The path tracer gets there by combining light samples and BSDF samples with
+// multiple importance sampling, which is unbiased only when each material's pdf() is the density
+// its sample() draws from.
+TEST(Materials, UnderAUniformSkyARenderShowsTheAlbedo) {
+    test::TempDir dir;
+    const std::string r = " \"bool remaproughness\" \"false\"";
+    const std::string materials[] = {
+        "Material \"plastic\" \"rgb Kd\" [0.5 0.3 0.1] \"rgb Ks\" [0.5 0.5 0.5] \"float roughness\" 0.2" + r,
+        "Material \"metal\" \"float roughness\" 0.3" + r,
+        "Material \"substrate\" \"rgb Kd\" [0.6 0.6 0.6] \"rgb Ks\" [0.2 0.2 0.2]",
+        "Material \"uber\" \"rgb Kd\" [0.3 0.3 0.3] \"rgb Ks\" [0.3 0.3 0.3] \"rgb Kr\" [0.3 0.3 0.3]",
+        "Material \"matte\" \"rgb Kd\" [0.8 0.8 0.8] \"float sigma\" 40"};
+    for (const std::string& m : materials) {
+        // The centre of the sphere seen head-on: the outgoing direction is the normal.
+        const std::string scene = dir.write("sky.pbrt",
+            "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 1\n"
+            "Film \"image\" \"integer xresolution\" 4 \"integer yresolution\" 4\n"
+            "Integrator \"path\" \"integer maxdepth\" 1\nWorldBegin\n"
+            "LightSource \"infinite\" \"rgb L\" [1 1 1]\n" + m + "\nShape \"sphere\"\nWorldEnd\n");
+        const Image im = test::render(scene, 4, 4, 1024).image;
+        double mean = 0;
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) mean += test::lum(im, x, y) / 16.0;
+        const auto a = test::sampledAlbedo(*test::parseMaterial(dir, m), {0, 0, 1}, 200000);
+        const float albedo = (a.mean.x + a.mean.y + a.mean.z) / 3;
+        EXPECT_NEAR(mean, albedo, 0.015 * albedo) << m;
+    }
+}
+
 // Uber with opacity 0.25: three quarters of the light passes straight through, unbent.
 TEST(Materials, UberOpacityPassesTheRestStraightThrough) {
     test::TempDir dir;
