@@ -246,6 +246,11 @@ public:
 
     TexturePtr color(const std::string& name, Vec3f fallback) const { return textureParam(p_, name, fallback, c_.textures); }
     TexturePtr number(const std::string& name, float fallback) const { return color(name, grey(fallback)); }
+    // A float parameter that, when absent, takes another parameter's value.
+    TexturePtr numberOr(const std::string& name, const TexturePtr& fallback) const {
+        return p_.has(name) ? number(name, 0) : fallback;
+    }
+    [[noreturn]] void fail(const std::string& message) const { p_.fail(message); }
     // A number given in the scene (no texture) equal to `value`, or absent with that default.
     bool isConstant(const std::string& name, float fallback, float value) const {
         const ColorOrTexture c = p_.getColorOrTexture(name, grey(fallback));
@@ -284,12 +289,11 @@ private:
     const MaterialContext& c_;
 };
 
-std::shared_ptr<const Material> makeMetal(const Reader& r, const ParamSet& p) {
+std::shared_ptr<const Material> makeMetal(const Reader& r) {
     // pbrt-v3's default is copper.
     static const Vec3f copperEta = namedSpectrumRgb("metal-Cu-eta").value(), copperK = namedSpectrumRgb("metal-Cu-k").value();
     const TexturePtr rough = r.number("roughness", 0.01f);
-    const TexturePtr u = p.has("uroughness") ? r.number("uroughness", 0) : rough;
-    const TexturePtr v = p.has("vroughness") ? r.number("vroughness", 0) : rough;
+    const TexturePtr u = r.numberOr("uroughness", rough), v = r.numberOr("vroughness", rough);
     return std::make_shared<Metal>(r.color("eta", copperEta), r.color("k", copperK), r.roughness(u, v));
 }
 
@@ -299,10 +303,9 @@ std::shared_ptr<const Material> makeGlass(const Reader& r) {
                                    r.roughness(r.number("uroughness", 0), r.number("vroughness", 0)), smooth);
 }
 
-std::shared_ptr<const Material> makeUber(const Reader& r, const ParamSet& p) {
-    const TexturePtr rough = r.number("roughness", 0.1f);
-    const TexturePtr u = p.has("uroughness") ? r.number("uroughness", 0) : rough;
-    const TexturePtr v = p.has("vroughness") ? r.number("vroughness", 0) : u;  // pbrt-v3: v follows u
+std::shared_ptr<const Material> makeUber(const Reader& r) {
+    const TexturePtr u = r.numberOr("uroughness", r.number("roughness", 0.1f));
+    const TexturePtr v = r.numberOr("vroughness", u);  // pbrt-v3: v follows u, not "roughness"
     return std::make_shared<Uber>(Uber::Inputs{r.color("Kd", grey(0.25f)), r.color("Ks", grey(0.25f)),
                                                r.color("Kr", grey(0)), r.color("Kt", grey(0)),
                                                r.color("opacity", grey(1)),
@@ -310,10 +313,10 @@ std::shared_ptr<const Material> makeUber(const Reader& r, const ParamSet& p) {
                                                r.roughness(u, v)});
 }
 
-std::shared_ptr<const Material> makeMix(const Reader& r, const ParamSet& p) {
+std::shared_ptr<const Material> makeMix(const Reader& r) {
     auto a = r.named("namedmaterial1"), b = r.named("namedmaterial2");
     if (a->maxLobes() + b->maxLobes() > Bsdf::kMaxLobes)
-        p.fail("mix of materials with more than " + std::to_string(Bsdf::kMaxLobes) + " lobes in all");
+        r.fail("mix of materials with more than " + std::to_string(Bsdf::kMaxLobes) + " lobes in all");
     return std::make_shared<Mix>(std::move(a), std::move(b), r.color("amount", grey(0.5f)));
 }
 
@@ -334,7 +337,7 @@ std::shared_ptr<const Material> makeMaterial(const std::string& type, const Para
     } else if (type == "plastic") {
         m = std::make_shared<Plastic>(r.color("Kd", grey(0.25f)), r.color("Ks", grey(0.25f)), r.isotropicRoughness(0.1f));
     } else if (type == "metal") {
-        m = makeMetal(r, p);
+        m = makeMetal(r);
     } else if (type == "mirror") {
         m = std::make_shared<Mirror>(r.color("Kr", grey(0.9f)));
     } else if (type == "glass") {
@@ -343,14 +346,14 @@ std::shared_ptr<const Material> makeMaterial(const std::string& type, const Para
         m = std::make_shared<Substrate>(r.color("Kd", grey(0.5f)), r.color("Ks", grey(0.5f)),
                                         r.roughness(r.number("uroughness", 0.1f), r.number("vroughness", 0.1f)));
     } else if (type == "uber") {
-        m = makeUber(r, p);
+        m = makeUber(r);
     } else if (type == "translucent") {
         m = std::make_shared<Translucent>(Translucent::Inputs{r.color("Kd", grey(0.25f)), r.color("Ks", grey(0.25f)),
                                                               r.color("reflect", grey(0.5f)),
                                                               r.color("transmit", grey(0.5f)),
                                                               r.isotropicRoughness(0.1f)});
     } else if (type == "mix") {
-        m = makeMix(r, p);
+        m = makeMix(r);
     } else if (type == "measured") {
         const std::string name = p.getString("filename", "");
         if (name.empty()) p.fail("measured needs \"string filename\" (a .brdf or MERL file)");
