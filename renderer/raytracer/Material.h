@@ -1,6 +1,8 @@
 #pragma once
-// Surface scattering: matte, plastic, mirror and glass, with pbrt-v3's parameters and defaults.
+// Surface scattering with pbrt-v3's materials, parameters and defaults: matte, plastic, metal,
+// mirror, glass, substrate, uber, translucent, mix, measured and none/interface.
 // Directions point away from the surface, in world space.
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,32 +14,52 @@ namespace lenslab {
 
 struct SurfaceHit {
     Vec3f p;        // world position, metres
-    Vec3f ng;       // geometric normal (unit)
+    Vec3f ng;       // geometric normal (unit), as the shape orients it
     Vec3f ns;       // shading normal (unit, same side as ng)
+    Vec3f dpdu;     // surface tangent along u (any length); zero when the shape gives none
     float u = 0, v = 0;
 };
 
 struct BsdfSample {
     Vec3f wi;
     Vec3f weight;       // f * |cos| / pdf
-    float pdf = 0;      // solid angle; meaningless for specular samples
+    float pdf = 0;      // solid angle; for a specular sample, the probability of choosing it
     bool specular = false;
 };
+
+class Bsdf;
 
 class Material {
 public:
     virtual ~Material() = default;
-    // f(wo, wi) |cos(wi, ns)|; zero for purely specular materials.
-    virtual Vec3f evaluate(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const = 0;
-    virtual float pdf(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const = 0;
-    virtual bool sample(const SurfaceHit& hit, Vec3f wo, float uLobe, float u1, float u2, BsdfSample& out) const = 0;
-    // True when only specular lobes remain: light sampling is pointless there.
+    // Lays this material's lobes at `hit` into `bsdf`, their weights multiplied by `scale` (a mix
+    // material scales the lobes of its two parts).
+    virtual void addLobes(const SurfaceHit& hit, Vec3f scale, Bsdf& bsdf) const = 0;
+    // The most lobes addLobes may add, so that a mix can be checked to fit in one Bsdf.
+    virtual int maxLobes() const = 0;
+    // True when every lobe is specular wherever the material is hit: light sampling is pointless.
     virtual bool isSpecular() const { return false; }
+
+    // f(wo, wi) |cos(wi, ns)|; zero for specular lobes.
+    Vec3f evaluate(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const;
+    float pdf(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const;
+    bool sample(const SurfaceHit& hit, Vec3f wo, float uLobe, float u1, float u2, BsdfSample& out) const;
 };
 
-// Material "TYPE" params (or MakeNamedMaterial's "string type"): matte, plastic, mirror, glass.
-std::shared_ptr<const Material> makeMaterial(const std::string& type, const ParamSet& params, const TextureMap& textures,
-                                             std::vector<std::string>& warnings);
+using NamedMaterials = std::map<std::string, std::shared_ptr<const Material>>;
+
+// What a material definition may refer to: declared textures, named materials (for "mix"), files
+// (for "measured"), and where warnings go.
+struct MaterialContext {
+    const TextureMap& textures;
+    const NamedMaterials& named;
+    PathResolver resolve;
+    std::vector<std::string>& warnings;
+};
+
+// Material "TYPE" params (or MakeNamedMaterial's "string type"). Unknown types are a SceneError.
+std::shared_ptr<const Material> makeMaterial(const std::string& type, const ParamSet& params,
+                                             const MaterialContext& context);
 
 std::shared_ptr<const Material> makeDefaultMaterial();  // matte, Kd 0.5
 

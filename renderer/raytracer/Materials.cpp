@@ -1,216 +1,369 @@
+// pbrt-v3's materials: what lobes each lays down at a hit, from its (possibly textured)
+// parameters, with pbrt-v3's names and defaults.
 #include <cmath>
 
-#include "Material.h"
-#include "Sampling.h"
+#include "Bsdf.h"
+#include "DiffuseLobes.h"
+#include "MeasuredBrdf.h"
+#include "MetalSpectra.h"
+#include "MicrofacetLobes.h"
+#include "SpecularLobes.h"
 
 namespace lenslab {
 
 namespace {
 
-constexpr float kInvPi = 0.318309886f;
+using TexturePtr = std::shared_ptr<const Texture>;
 
-// The shading normal turned toward wo's side of the surface.
-Vec3f facing(const SurfaceHit& h, Vec3f wo) { return dot(wo, h.ng) >= 0 ? h.ns : -h.ns; }
-bool sameSide(const SurfaceHit& h, Vec3f a, Vec3f b) { return dot(a, h.ng) * dot(b, h.ng) > 0; }
-Vec3f reflect(Vec3f wo, Vec3f n) { return 2.0f * dot(wo, n) * n - wo; }
+Vec3f atLeastZero(Vec3f c) { return {std::max(0.0f, c.x), std::max(0.0f, c.y), std::max(0.0f, c.z)}; }
+Vec3f grey(float v) { return {v, v, v}; }
 
-// Unpolarised Fresnel reflectance between dielectrics; cosI > 0 on the etaI side.
-float fresnelDielectric(float cosI, float etaI, float etaT) {
-    const float sinT = etaI / etaT * std::sqrt(std::max(0.0f, 1.0f - cosI * cosI));
-    if (sinT >= 1.0f) return 1.0f;
-    const float cosT = std::sqrt(std::max(0.0f, 1.0f - sinT * sinT));
-    const float par = (etaT * cosI - etaI * cosT) / (etaT * cosI + etaI * cosT);
-    const float perp = (etaI * cosI - etaT * cosT) / (etaI * cosI + etaT * cosT);
-    return 0.5f * (par * par + perp * perp);
+// A float parameter that may name a float texture; its value is the texture's first channel.
+float floatAt(const TexturePtr& t, const SurfaceHit& h) { return t->evaluate(h).x; }
+
+// An index of refraction from a texture, which may hold anything: 1 (no boundary) unless positive.
+float indexAt(const TexturePtr& t, const SurfaceHit& h) {
+    const float eta = floatAt(t, h);
+    return eta > 0 ? eta : 1.0f;
 }
 
-class Matte : public Material {
-public:
-    explicit Matte(std::shared_ptr<const Texture> kd) : kd_(std::move(kd)) {}
-    Vec3f evaluate(const SurfaceHit& h, Vec3f wo, Vec3f wi) const override {
-        if (!sameSide(h, wo, wi)) return {};
-        return kInvPi * std::fabs(dot(wi, h.ns)) * kd_->evaluate(h);
-    }
-    float pdf(const SurfaceHit& h, Vec3f wo, Vec3f wi) const override {
-        return sameSide(h, wo, wi) ? std::fabs(dot(wi, h.ns)) * kInvPi : 0.0f;
-    }
-    bool sample(const SurfaceHit& h, Vec3f wo, float, float u1, float u2, BsdfSample& s) const override {
-        const Vec3f n = facing(h, wo);
-        s.wi = Frame(n).toWorld(cosineHemisphere(u1, u2));
-        s.pdf = pdf(h, wo, s.wi);
-        if (!(s.pdf > 0)) return false;
-        s.weight = kd_->evaluate(h);
-        s.specular = false;
-        return true;
-    }
+// Microfacet widths from pbrt-v3's roughness parameters (per hit, as they may be textures).
+struct Roughness {
+    TexturePtr u, v;
+    bool remap = true;
+    MicrofacetKind kind = MicrofacetKind::TrowbridgeReitz;
 
-private:
-    std::shared_ptr<const Texture> kd_;
-};
-
-// Diffuse base under a rough dielectric coat (Trowbridge-Reitz microfacets, Fresnel at n = 1.5).
-class Plastic : public Material {
-public:
-    Plastic(std::shared_ptr<const Texture> kd, std::shared_ptr<const Texture> ks, float alpha)
-        : kd_(std::move(kd)), ks_(std::move(ks)), alpha_(std::max(alpha, 1e-3f)) {}
-
-    Vec3f evaluate(const SurfaceHit& h, Vec3f wo, Vec3f wi) const override {
-        if (!sameSide(h, wo, wi)) return {};
-        const Frame f(facing(h, wo));
-        const Vec3f lo = f.toLocal(wo), li = f.toLocal(wi);
-        if (lo.z <= 0 || li.z <= 0) return {};
-        const Vec3f m = normalize(lo + li);
-        const float spec = D(m) * G(lo, li) * fresnelDielectric(dot(li, m), 1.0f, 1.5f) / (4.0f * lo.z);
-        return kInvPi * li.z * kd_->evaluate(h) + spec * ks_->evaluate(h);
-    }
-    float pdf(const SurfaceHit& h, Vec3f wo, Vec3f wi) const override {
-        if (!sameSide(h, wo, wi)) return 0;
-        const Frame f(facing(h, wo));
-        const Vec3f lo = f.toLocal(wo), li = f.toLocal(wi);
-        if (lo.z <= 0 || li.z <= 0) return 0;
-        const Vec3f m = normalize(lo + li);
-        return 0.5f * li.z * kInvPi + 0.5f * D(m) * m.z / (4.0f * dot(lo, m));
-    }
-    bool sample(const SurfaceHit& h, Vec3f wo, float uLobe, float u1, float u2, BsdfSample& s) const override {
-        const Frame f(facing(h, wo));
-        const Vec3f lo = f.toLocal(wo);
-        if (lo.z <= 0) return false;
-        Vec3f li;
-        if (uLobe < 0.5f) {
-            li = cosineHemisphere(u1, u2);
-        } else {
-            const float tan2 = alpha_ * alpha_ * u1 / std::max(1.0f - u1, 1e-7f);
-            const float cosT = 1.0f / std::sqrt(1.0f + tan2), sinT = std::sqrt(std::max(0.0f, 1.0f - cosT * cosT));
-            const float phi = 2.0f * float(M_PI) * u2;
-            const Vec3f m{sinT * std::cos(phi), sinT * std::sin(phi), cosT};
-            li = reflect(lo, m);
+    // pbrt-v3 tests for a smooth surface before remapping: 0 means specular, remapped or not.
+    bool smoothAt(const SurfaceHit& h) const { return floatAt(u, h) == 0 && floatAt(v, h) == 0; }
+    MicrofacetDistribution at(const SurfaceHit& h) const {
+        float au = floatAt(u, h), av = floatAt(v, h);
+        if (remap) {
+            au = roughnessToAlpha(au);
+            av = roughnessToAlpha(av);
         }
-        if (li.z <= 0) return false;
-        s.wi = f.toWorld(li);
-        s.pdf = pdf(h, wo, s.wi);
-        if (!(s.pdf > 0)) return false;
-        s.weight = evaluate(h, wo, s.wi) / s.pdf;
-        s.specular = false;
-        return allFinite(s.weight);
+        return {kind, au, av};
     }
-
-private:
-    float D(Vec3f m) const {
-        if (m.z <= 0) return 0;
-        const float c2 = m.z * m.z, tan2 = (1 - c2) / c2, a2 = alpha_ * alpha_;
-        const float e = 1 + tan2 / a2;
-        return 1.0f / (float(M_PI) * a2 * c2 * c2 * e * e);
-    }
-    float lambda(Vec3f w) const {
-        const float c2 = w.z * w.z, tan2 = std::max(0.0f, 1 - c2) / c2;
-        return 0.5f * (-1.0f + std::sqrt(1.0f + alpha_ * alpha_ * tan2));
-    }
-    float G(Vec3f a, Vec3f b) const { return 1.0f / (1.0f + lambda(a) + lambda(b)); }
-
-    std::shared_ptr<const Texture> kd_, ks_;
-    float alpha_;
 };
 
-class Mirror : public Material {
+class Matte final : public Material {
 public:
-    explicit Mirror(std::shared_ptr<const Texture> kr) : kr_(std::move(kr)) {}
-    Vec3f evaluate(const SurfaceHit&, Vec3f, Vec3f) const override { return {}; }
-    float pdf(const SurfaceHit&, Vec3f, Vec3f) const override { return 0; }
-    bool sample(const SurfaceHit& h, Vec3f wo, float, float, float, BsdfSample& s) const override {
-        s.wi = reflect(wo, facing(h, wo));
-        s.weight = kr_->evaluate(h);
-        s.pdf = 1;
-        s.specular = true;
-        return sameSide(h, wo, s.wi);
+    Matte(TexturePtr kd, TexturePtr sigma) : kd_(std::move(kd)), sigma_(std::move(sigma)) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
+        const Vec3f w = scale * atLeastZero(kd_->evaluate(h));
+        const float sigma = std::clamp(floatAt(sigma_, h), 0.0f, 90.0f);
+        if (sigma == 0) b.add<LambertianReflection>(w);
+        else b.add<OrenNayar>(w, sigma);
     }
+    int maxLobes() const override { return 1; }
+
+private:
+    TexturePtr kd_, sigma_;
+};
+
+// A diffuse base under a glossy dielectric coat. The coat's Fresnel factor takes pbrt-v3's
+// indices as they are, 1.5 on the incident side and 1 beyond (pbrt-v3 issue #210, kept there so
+// that existing scenes render unchanged): past about 42 degrees from the facet normal the coat
+// reflects totally on surfaces whose normals face the viewer.
+class Plastic final : public Material {
+public:
+    Plastic(TexturePtr kd, TexturePtr ks, Roughness r) : kd_(std::move(kd)), ks_(std::move(ks)), rough_(std::move(r)) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
+        b.add<LambertianReflection>(scale * atLeastZero(kd_->evaluate(h)));
+        const Vec3f ks = scale * atLeastZero(ks_->evaluate(h));
+        if (!isBlack(ks)) b.add<MicrofacetReflection>(ks, rough_.at(h), Fresnel::dielectric(1.5f, 1.0f));
+    }
+    int maxLobes() const override { return 2; }
+
+private:
+    TexturePtr kd_, ks_;
+    Roughness rough_;
+};
+
+class Metal final : public Material {
+public:
+    Metal(TexturePtr eta, TexturePtr k, Roughness r) : eta_(std::move(eta)), k_(std::move(k)), rough_(std::move(r)) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
+        b.add<MicrofacetReflection>(scale, rough_.at(h), Fresnel::conductor(eta_->evaluate(h), k_->evaluate(h)));
+    }
+    int maxLobes() const override { return 1; }
+
+private:
+    TexturePtr eta_, k_;
+    Roughness rough_;
+};
+
+class Mirror final : public Material {
+public:
+    explicit Mirror(TexturePtr kr) : kr_(std::move(kr)) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
+        b.add<SpecularReflection>(scale * atLeastZero(kr_->evaluate(h)), Fresnel::one());
+    }
+    int maxLobes() const override { return 1; }
     bool isSpecular() const override { return true; }
 
 private:
-    std::shared_ptr<const Texture> kr_;
+    TexturePtr kr_;
 };
 
-// Smooth dielectric: Fresnel-weighted choice of reflection or refraction.
-class Glass : public Material {
+// A dielectric boundary from air (the normal's side) into index eta: smooth (one lobe choosing
+// reflection or refraction by Fresnel) or rough (microfacet reflection and transmission).
+class Glass final : public Material {
 public:
-    Glass(std::shared_ptr<const Texture> kr, std::shared_ptr<const Texture> kt, float eta)
-        : kr_(std::move(kr)), kt_(std::move(kt)), eta_(eta) {}
-    Vec3f evaluate(const SurfaceHit&, Vec3f, Vec3f) const override { return {}; }
-    float pdf(const SurfaceHit&, Vec3f, Vec3f) const override { return 0; }
-    bool sample(const SurfaceHit& h, Vec3f wo, float uLobe, float, float, BsdfSample& s) const override {
-        const bool entering = dot(wo, h.ng) > 0;
-        const Vec3f n = entering ? h.ns : -h.ns;
-        const float etaI = entering ? 1.0f : eta_, etaT = entering ? eta_ : 1.0f;
-        const float cosI = std::max(0.0f, dot(wo, n));
-        const float F = fresnelDielectric(cosI, etaI, etaT);
-        s.pdf = 1;
-        s.specular = true;
-        if (uLobe < F) {
-            s.wi = reflect(wo, n);
-            s.weight = kr_->evaluate(h);
-            return true;
+    Glass(TexturePtr kr, TexturePtr kt, TexturePtr eta, Roughness r, bool alwaysSmooth)
+        : kr_(std::move(kr)), kt_(std::move(kt)), eta_(std::move(eta)), rough_(std::move(r)), alwaysSmooth_(alwaysSmooth) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
+        const Vec3f r = atLeastZero(kr_->evaluate(h)), t = atLeastZero(kt_->evaluate(h));
+        if (isBlack(r) && isBlack(t)) return;
+        const float eta = indexAt(eta_, h);
+        if (rough_.smoothAt(h)) {
+            b.add<FresnelSpecular>(scale, r, t, 1.0f, eta);
+            return;
         }
-        const float ratio = etaI / etaT;
-        const float sin2T = ratio * ratio * std::max(0.0f, 1.0f - cosI * cosI);
-        if (sin2T >= 1.0f) return false;
-        const float cosT = std::sqrt(1.0f - sin2T);
-        s.wi = normalize(-ratio * wo + (ratio * cosI - cosT) * n);
-        s.weight = ratio * ratio * kt_->evaluate(h);  // radiance is compressed entering denser glass
-        return true;
+        const MicrofacetDistribution d = rough_.at(h);
+        b.add<MicrofacetReflection>(scale * r, d, Fresnel::dielectric(1.0f, eta));
+        b.add<MicrofacetTransmission>(scale * t, d, 1.0f, eta);
     }
-    bool isSpecular() const override { return true; }
+    int maxLobes() const override { return 2; }
+    bool isSpecular() const override { return alwaysSmooth_; }
 
 private:
-    std::shared_ptr<const Texture> kr_, kt_;
-    float eta_;
+    TexturePtr kr_, kt_, eta_;
+    Roughness rough_;
+    bool alwaysSmooth_;
 };
 
-// pbrt-v3's map from a perceptual roughness in [0, 1] to the Trowbridge-Reitz alpha.
-float roughnessToAlpha(float roughness) {
-    const float x = std::log(std::max(roughness, 1e-3f));
-    return 1.62142f + 0.819955f * x + 0.1734f * x * x + 0.0171201f * x * x * x + 0.000640711f * x * x * x * x;
+class Substrate final : public Material {
+public:
+    Substrate(TexturePtr kd, TexturePtr ks, Roughness r) : kd_(std::move(kd)), ks_(std::move(ks)), rough_(std::move(r)) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
+        const Vec3f kd = atLeastZero(kd_->evaluate(h)), ks = atLeastZero(ks_->evaluate(h));
+        if (isBlack(kd) && isBlack(ks)) return;
+        b.add<FresnelBlend>(scale, kd, ks, rough_.at(h));
+    }
+    int maxLobes() const override { return 1; }
+
+private:
+    TexturePtr kd_, ks_;
+    Roughness rough_;
+};
+
+// pbrt-v3's catch-all: diffuse, glossy coat, mirror reflection and refraction (no bending at the
+// far side: a thin sheet is two surfaces), all scaled by opacity; the rest passes straight through.
+class Uber final : public Material {
+public:
+    struct Inputs {
+        TexturePtr kd, ks, kr, kt, opacity, eta;
+        Roughness rough;
+    };
+    explicit Uber(Inputs in) : in_(std::move(in)) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
+        const Vec3f op = atLeastZero(in_.opacity->evaluate(h));
+        b.add<SpecularTransmission>(scale * atLeastZero(Vec3f{1, 1, 1} - op), 1.0f, 1.0f);
+        const float eta = indexAt(in_.eta, h);
+        const Vec3f w = scale * op;
+        b.add<LambertianReflection>(w * atLeastZero(in_.kd->evaluate(h)));
+        const Vec3f ks = w * atLeastZero(in_.ks->evaluate(h));
+        if (!isBlack(ks)) b.add<MicrofacetReflection>(ks, in_.rough.at(h), Fresnel::dielectric(1.0f, eta));
+        b.add<SpecularReflection>(w * atLeastZero(in_.kr->evaluate(h)), Fresnel::dielectric(1.0f, eta));
+        b.add<SpecularTransmission>(w * atLeastZero(in_.kt->evaluate(h)), 1.0f, eta);
+    }
+    int maxLobes() const override { return 5; }
+
+private:
+    Inputs in_;
+};
+
+// Diffuse and glossy reflection and transmission through a thin sheet (index 1.5), split by the
+// "reflect" and "transmit" colours.
+class Translucent final : public Material {
+public:
+    struct Inputs {
+        TexturePtr kd, ks, reflect, transmit;
+        Roughness rough;
+    };
+    explicit Translucent(Inputs in) : in_(std::move(in)) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
+        constexpr float kEta = 1.5f;
+        const Vec3f r = atLeastZero(in_.reflect->evaluate(h)), t = atLeastZero(in_.transmit->evaluate(h));
+        if (isBlack(r) && isBlack(t)) return;
+        const Vec3f kd = scale * atLeastZero(in_.kd->evaluate(h));
+        b.add<LambertianReflection>(r * kd);
+        b.add<LambertianTransmission>(t * kd);
+        const Vec3f ks = scale * atLeastZero(in_.ks->evaluate(h));
+        if (isBlack(ks)) return;
+        const MicrofacetDistribution d = in_.rough.at(h);
+        b.add<MicrofacetReflection>(r * ks, d, Fresnel::dielectric(1.0f, kEta));
+        b.add<MicrofacetTransmission>(t * ks, d, 1.0f, kEta);
+    }
+    int maxLobes() const override { return 4; }
+
+private:
+    Inputs in_;
+};
+
+// pbrt-v3's mix: the first material's lobes scaled by "amount", the second's by 1 - amount.
+class Mix final : public Material {
+public:
+    Mix(std::shared_ptr<const Material> a, std::shared_ptr<const Material> b, TexturePtr amount)
+        : a_(std::move(a)), b_(std::move(b)), amount_(std::move(amount)) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
+        const Vec3f s = atLeastZero(amount_->evaluate(h));
+        a_->addLobes(h, scale * s, b);
+        b_->addLobes(h, scale * atLeastZero(Vec3f{1, 1, 1} - s), b);
+    }
+    int maxLobes() const override { return a_->maxLobes() + b_->maxLobes(); }
+    bool isSpecular() const override { return a_->isSpecular() && b_->isSpecular(); }
+
+private:
+    std::shared_ptr<const Material> a_, b_;
+    TexturePtr amount_;
+};
+
+class Measured final : public Material {
+public:
+    explicit Measured(std::shared_ptr<const MeasuredBrdf> brdf) : brdf_(std::move(brdf)) {}
+    void addLobes(const SurfaceHit&, Vec3f scale, Bsdf& b) const override { b.add<MeasuredLobe>(scale, brdf_.get()); }
+    int maxLobes() const override { return 1; }
+
+private:
+    std::shared_ptr<const MeasuredBrdf> brdf_;
+};
+
+// No surface at all (pbrt's "none" / "interface", which bound participating media): rays carry
+// on unchanged. The path integrator sees a specular transmission with weight 1 and no bending.
+class Passthrough final : public Material {
+public:
+    void addLobes(const SurfaceHit&, Vec3f scale, Bsdf& b) const override { b.add<SpecularTransmission>(scale, 1.0f, 1.0f); }
+    int maxLobes() const override { return 1; }
+    bool isSpecular() const override { return true; }
+};
+
+// --- reading the parameters ----------------------------------------------------------------------
+
+class Reader {
+public:
+    Reader(const ParamSet& p, const MaterialContext& c) : p_(p), c_(c) {}
+
+    TexturePtr color(const std::string& name, Vec3f fallback) const { return textureParam(p_, name, fallback, c_.textures); }
+    TexturePtr number(const std::string& name, float fallback) const { return floatTextureParam(p_, name, fallback, c_.textures); }
+    // A float parameter that, when absent, takes another parameter's value.
+    TexturePtr numberOr(const std::string& name, const TexturePtr& fallback) const {
+        return p_.has(name) ? number(name, 0) : fallback;
+    }
+    [[noreturn]] void fail(const std::string& message) const { p_.fail(message); }
+    // A number given in the scene (no texture) equal to `value`, or absent with that default.
+    bool isConstant(const std::string& name, float fallback, float value) const {
+        const ColorOrTexture c = p_.getColorOrTexture(name, grey(fallback));
+        return !c.texture && c.color.x == value;
+    }
+    // pbrt-v3's "eta", or its older name "index"; default 1.5.
+    TexturePtr refractiveIndex() const {
+        const std::string name = p_.has("eta") ? "eta" : "index";
+        const ColorOrTexture c = p_.getColorOrTexture(name, grey(1.5f));
+        if (!c.texture && !(c.color.x > 0)) p_.fail("\"" + name + "\" (index of refraction) must be positive");
+        return number(name, 1.5f);
+    }
+    // pbrt-v3's "remaproughness" and lenslab's "distribution" (trowbridgereitz or beckmann).
+    Roughness roughness(TexturePtr u, TexturePtr v) const {
+        Roughness r{std::move(u), std::move(v), p_.getBool("remaproughness", true), MicrofacetKind::TrowbridgeReitz};
+        const std::string kind = p_.getString("distribution", "trowbridgereitz");
+        if (kind == "beckmann") r.kind = MicrofacetKind::Beckmann;
+        else if (kind != "trowbridgereitz" && kind != "ggx")
+            p_.fail("\"distribution\" must be trowbridgereitz (ggx) or beckmann, not \"" + kind + "\"");
+        return r;
+    }
+    Roughness isotropicRoughness(float fallback) const {
+        const TexturePtr r = number("roughness", fallback);
+        return roughness(r, r);
+    }
+    std::shared_ptr<const Material> named(const std::string& param) const {
+        const std::string n = p_.getString(param, "");
+        if (n.empty()) p_.fail("mix needs \"string " + param + "\" naming a material");
+        const auto it = c_.named.find(n);
+        if (it == c_.named.end()) p_.fail("\"" + param + "\" names an undefined material \"" + n + "\"");
+        return it->second;
+    }
+
+private:
+    const ParamSet& p_;
+    const MaterialContext& c_;
+};
+
+std::shared_ptr<const Material> makeMetal(const Reader& r) {
+    // pbrt-v3's default is copper.
+    static const Vec3f copperEta = namedSpectrumRgb("metal-Cu-eta").value(), copperK = namedSpectrumRgb("metal-Cu-k").value();
+    const TexturePtr rough = r.number("roughness", 0.01f);
+    const TexturePtr u = r.numberOr("uroughness", rough), v = r.numberOr("vroughness", rough);
+    return std::make_shared<Metal>(r.color("eta", copperEta), r.color("k", copperK), r.roughness(u, v));
 }
 
-float constantFloat(const ParamSet& p, const std::string& name, float fallback) {
-    if (p.has(name) && p.getColorOrTexture(name, {}).texture)
-        p.fail("parameter \"" + name + "\" must be a number here (float textures are not supported)");
-    return float(p.getFloat(name, fallback));
+std::shared_ptr<const Material> makeGlass(const Reader& r) {
+    const bool smooth = r.isConstant("uroughness", 0, 0) && r.isConstant("vroughness", 0, 0);
+    return std::make_shared<Glass>(r.color("Kr", {1, 1, 1}), r.color("Kt", {1, 1, 1}), r.refractiveIndex(),
+                                   r.roughness(r.number("uroughness", 0), r.number("vroughness", 0)), smooth);
 }
+
+std::shared_ptr<const Material> makeUber(const Reader& r) {
+    const TexturePtr u = r.numberOr("uroughness", r.number("roughness", 0.1f));
+    const TexturePtr v = r.numberOr("vroughness", u);  // pbrt-v3: v follows u, not "roughness"
+    return std::make_shared<Uber>(Uber::Inputs{r.color("Kd", grey(0.25f)), r.color("Ks", grey(0.25f)),
+                                               r.color("Kr", grey(0)), r.color("Kt", grey(0)),
+                                               r.color("opacity", grey(1)),
+                                               r.refractiveIndex(),
+                                               r.roughness(u, v)});
+}
+
+std::shared_ptr<const Material> makeMix(const Reader& r) {
+    auto a = r.named("namedmaterial1"), b = r.named("namedmaterial2");
+    if (a->maxLobes() + b->maxLobes() > Bsdf::kMaxLobes)
+        r.fail("mix of materials with more than " + std::to_string(Bsdf::kMaxLobes) + " lobes in all");
+    return std::make_shared<Mix>(std::move(a), std::move(b), r.color("amount", grey(0.5f)));
+}
+
+const char* kSupported =
+    "(matte, plastic, metal, mirror, glass, substrate, uber, translucent, mix, measured, none, interface)";
 
 }  // namespace
 
 std::shared_ptr<const Material> makeDefaultMaterial() {
-    return std::make_shared<Matte>(makeConstantTexture({0.5f, 0.5f, 0.5f}));
+    return std::make_shared<Matte>(makeConstantTexture(grey(0.5f)), makeConstantTexture(grey(0)));
 }
 
-std::shared_ptr<const Material> makeMaterial(const std::string& type, const ParamSet& p, const TextureMap& textures,
-                                             std::vector<std::string>& warnings) {
+std::shared_ptr<const Material> makeMaterial(const std::string& type, const ParamSet& p, const MaterialContext& c) {
+    const Reader r(p, c);
     std::shared_ptr<const Material> m;
     if (type == "matte") {
-        if (constantFloat(p, "sigma", 0) != 0)
-            p.fail("matte \"sigma\" (Oren-Nayar roughness) is not supported; use sigma 0");
-        m = std::make_shared<Matte>(textureParam(p, "Kd", {0.5f, 0.5f, 0.5f}, textures));
+        m = std::make_shared<Matte>(r.color("Kd", grey(0.5f)), r.number("sigma", 0));
     } else if (type == "plastic") {
-        const float roughness = constantFloat(p, "roughness", 0.1f);
-        const float alpha = p.getBool("remaproughness", true) ? roughnessToAlpha(roughness) : roughness;
-        m = std::make_shared<Plastic>(textureParam(p, "Kd", {0.25f, 0.25f, 0.25f}, textures),
-                                      textureParam(p, "Ks", {0.25f, 0.25f, 0.25f}, textures), alpha);
+        m = std::make_shared<Plastic>(r.color("Kd", grey(0.25f)), r.color("Ks", grey(0.25f)), r.isotropicRoughness(0.1f));
+    } else if (type == "metal") {
+        m = makeMetal(r);
     } else if (type == "mirror") {
-        m = std::make_shared<Mirror>(textureParam(p, "Kr", {0.9f, 0.9f, 0.9f}, textures));
+        m = std::make_shared<Mirror>(r.color("Kr", grey(0.9f)));
     } else if (type == "glass") {
-        const float eta = constantFloat(p, "eta", constantFloat(p, "index", 1.5f));
-        if (!(eta > 0)) p.fail("glass \"eta\" must be positive");
-        if (p.has("uroughness") || p.has("vroughness")) {
-            if (constantFloat(p, "uroughness", 0) != 0 || constantFloat(p, "vroughness", 0) != 0)
-                p.fail("rough glass is not supported; uroughness and vroughness must be 0");
-        }
-        m = std::make_shared<Glass>(textureParam(p, "Kr", {1, 1, 1}, textures),
-                                    textureParam(p, "Kt", {1, 1, 1}, textures), eta);
-    } else if (type == "" || type == "none") {
-        p.fail("material type \"" + type + "\" is not supported (matte, plastic, mirror, glass)");
+        m = makeGlass(r);
+    } else if (type == "substrate") {
+        m = std::make_shared<Substrate>(r.color("Kd", grey(0.5f)), r.color("Ks", grey(0.5f)),
+                                        r.roughness(r.number("uroughness", 0.1f), r.number("vroughness", 0.1f)));
+    } else if (type == "uber") {
+        m = makeUber(r);
+    } else if (type == "translucent") {
+        m = std::make_shared<Translucent>(Translucent::Inputs{r.color("Kd", grey(0.25f)), r.color("Ks", grey(0.25f)),
+                                                              r.color("reflect", grey(0.5f)),
+                                                              r.color("transmit", grey(0.5f)),
+                                                              r.isotropicRoughness(0.1f)});
+    } else if (type == "mix") {
+        m = makeMix(r);
+    } else if (type == "measured") {
+        const std::string name = p.getString("filename", "");
+        if (name.empty()) p.fail("measured needs \"string filename\" (a .brdf or MERL file)");
+        m = std::make_shared<Measured>(loadMeasuredBrdf(c.resolve(name, p.where()), name, p));
+    } else if (type == "" || type == "none" || type == "interface") {
+        m = std::make_shared<Passthrough>();
     } else {
-        p.fail("material \"" + type + "\" is not supported (matte, plastic, mirror, glass)");
+        p.fail("material \"" + type + "\" is not supported " + kSupported);
     }
-    p.checkAllUsed(warnings, {"remaproughness"});
+    p.checkAllUsed(c.warnings, {"remaproughness"});
     return m;
 }
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "MetalSpectra.h"
 #include "Spectrum.h"
 
 namespace lenslab {
@@ -57,8 +58,10 @@ Vec3f spectrumFile(const std::string& name, const SourceLocation& at, const Path
 
 Vec3f spectralToRgb(Declared kind, const std::vector<Token>& values, const SourceLocation& at, const std::string& name,
                     const PathResolver& resolve) {
-    if (kind == Declared::Spectrum && values.size() == 1 && values[0].quoted)
+    if (kind == Declared::Spectrum && values.size() == 1 && values[0].quoted) {
+        if (const auto named = namedSpectrumRgb(values[0].text)) return *named;  // "metal-Cu-eta"
         return spectrumFile(values[0].text, at, resolve);
+    }
     std::vector<double> v;
     for (const Token& t : values) v.push_back(tokenNumber(t, at));
     if (kind == Declared::Xyz) {

@@ -417,14 +417,16 @@ private:
     }
 
     // --- the world ----------------------------------------------------------------------------
+    MaterialContext materialContext() { return {*g_.textures, namedMaterials_, resolver(), scene_.warnings}; }
     void material(SourceLocation& where, int) {
         const std::string type = typeName(where, "a material type");
-        g_.material = makeMaterial(type, params(where), *g_.textures, scene_.warnings);
+        g_.material = makeMaterial(type, params(where), materialContext());
     }
     void makeNamedMaterial(SourceLocation& where, int) {
         const std::string n = typeName(where, "a material name");
         const ParamSet p = params(where);
-        namedMaterials_[n] = makeMaterial(p.getString("type", ""), p, *g_.textures, scene_.warnings);
+        if (!p.has("type")) p.fail("MakeNamedMaterial needs \"string type\"");
+        namedMaterials_[n] = makeMaterial(p.getString("type", ""), p, materialContext());
     }
     void namedMaterial(SourceLocation& where, int) {
         const std::string n = quoted(where, "a material name");
@@ -522,7 +524,7 @@ private:
     bool activeStart_ = true, activeEnd_ = true;
     std::vector<StackEntry> stack_;
     std::map<std::string, TransformPair> namedCoordinates_;
-    std::map<std::string, std::shared_ptr<const Material>> namedMaterials_;
+    NamedMaterials namedMaterials_;
     std::map<std::string, std::size_t> objectIndex_;  // the latest definition of each object name
     std::optional<std::size_t> object_;                // the object being defined
     std::size_t objectDepth_ = 0;                      // stack_ size inside its ObjectBegin block
