@@ -29,6 +29,7 @@ export function loadPixels(id) {
 export function forgetPixels(id) { pixelCache.delete(id); }
 
 const stops = () => Number($("exposure").value);
+const differenceGain = () => Number($("difference-gain").value);
 const scaleOf = (entry) => normalisation(entry.fstop) * Math.pow(2, stops());
 
 // ---- drawing -----------------------------------------------------------------------------------
@@ -39,7 +40,7 @@ function drawLayer(layer) {
   if (!image) return;
   const context = canvas.getContext("2d");
   const pixels = context.createImageData(image.width, image.height);
-  if (kind === "difference") rampInto(pixels.data, image, Math.pow(2, stops()));
+  if (kind === "difference") rampInto(pixels.data, image, Math.pow(2, stops()) * differenceGain());
   else exposeInto(pixels.data, image, scaleOf(entry));
   context.putImageData(pixels, 0, 0);
 }
@@ -63,7 +64,7 @@ function showDifferenceScale() {
   const box = $("difference-scale");
   if (!view.diff) { box.hidden = true; return; }
   box.hidden = false;
-  const full = 1 / Math.pow(2, stops());
+  const full = 1 / (Math.pow(2, stops()) * differenceGain());
   $("difference-bar").style.background = `linear-gradient(to right, ${DIFFERENCE_STOPS.map((c) => `rgb(${c})`).join(", ")})`;
   $("difference-max").textContent = `≥ ${full.toPrecision(3)}`;
   const { rmse, worst } = view.diff;
@@ -164,7 +165,7 @@ function layout() {
     box.append(makePane(a.label, [makeCanvas(a, "image")], a));
     if (b) {
       box.append(makePane(b.label, [makeCanvas(b, "image")], b));
-      box.append(makePane("|difference| (colour scale below)", [makeCanvas(a, "difference")], a));
+      box.append(makePane(`|difference| ×${differenceGain()} (colour scale below)`, [makeCanvas(a, "difference")], a));
     }
   } else {
     const lower = makeCanvas(a, "image"), upper = makeCanvas(b, "image");
@@ -283,6 +284,7 @@ export function setUpViewer() {
   $("exposure-fit").addEventListener("click", fit);
   $("exposure-reset").addEventListener("click", () => { $("exposure").value = 0; redraw(); });
   $("compare-mode").addEventListener("change", layout);
+  $("difference-gain").addEventListener("change", layout);
   $("zoom-in").addEventListener("click", () => zoomCentre(2));
   $("zoom-out").addEventListener("click", () => zoomCentre(0.5));
   $("zoom-fit").addEventListener("click", () => { view.zoom = 1; view.x = 0; view.y = 0; applyTransform(); });

@@ -5,12 +5,11 @@
 // at 1280x800 and on a 390-wide phone, the report build, and deleting a render.
 // Screenshots go to tests/browser/artifacts/.
 // usage: node page.test.mjs LENSLAB_BINARY SOURCE_DIR
-import { spawn } from "node:child_process";
 import { mkdtempSync, mkdirSync, rmSync, copyFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, dirname } from "node:path";
 import { fileURLToPath } from "node:url";
-import { chromium } from "playwright-core";
+import { launchBrowser, startServer, stopServer } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -25,24 +24,6 @@ const work = mkdtempSync(join(tmpdir(), "lenslab-browser-"));
 function check(condition, message) {
   if (!condition) throw new Error("check failed: " + message);
   console.log("ok -", message);
-}
-
-// Starts the service and resolves with its base URL once it prints the listening line.
-function startServer() {
-  const server = spawn(binary, ["serve", "--port", "0", "--data", join(work, "data"), "--access-log", join(work, "access.log")],
-    { stdio: ["ignore", "pipe", "pipe"] });
-  return new Promise((resolve, reject) => {
-    let output = "";
-    const timer = setTimeout(() => reject(new Error("server did not start:\n" + output)), 30000);
-    const onData = (chunk) => {
-      output += chunk;
-      const m = output.match(/listening on (http:\/\/[^/\s]+\/)/);
-      if (m) { clearTimeout(timer); resolve({ server, base: m[1] }); }
-    };
-    server.stdout.on("data", onData);
-    server.stderr.on("data", onData);
-    server.on("exit", (code) => reject(new Error(`server exited (${code}):\n${output}`)));
-  });
 }
 
 // Mean sRGB value (0-255) over the colour channels of the canvas matched by `selector`.
@@ -215,6 +196,10 @@ async function checkCompare(page) {
   check(new Set(panned).size === 1 && panned[0] !== transforms[0], `pan is shared: ${panned[0]}`);
   await page.selectOption("#compare-mode", "slider");
   check((await page.$$("#viewer-panes canvas")).length === 2 && (await page.$$("#viewer-panes .pane")).length === 1, "slider mode lays the two over each other");
+  await page.selectOption("#compare-mode", "flicker");
+  const seen = new Set();
+  for (let k = 0; k < 8; k++) { seen.add(await page.textContent("#viewer-panes figcaption")); await page.waitForTimeout(200); }
+  check(seen.has("accurate") && seen.has("approximate"), "flicker mode alternates the two");
   await page.selectOption("#compare-mode", "side");
 }
 
@@ -275,14 +260,8 @@ async function checkDeletion(page, base) {
 }
 
 async function main() {
-  const { server, base } = await startServer();
-  const context = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), "lenslab-chromium-")), {
-    executablePath: "/usr/bin/chromium",
-    headless: true,
-    viewport: { width: 1280, height: 800 },
-    args: ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
-           "--disable-component-update", "--disable-sync"],
-  });
+  const { server, base } = await startServer(binary, work);
+  const context = await launchBrowser({ width: 1280, height: 800 });
   const pageErrors = [];
   const externalRequests = [];
   const renderRequests = [];
@@ -314,9 +293,7 @@ async function main() {
     throw e;
   } finally {
     await context.close();
-    const exited = new Promise((resolve) => server.once("exit", resolve));
-    server.kill("SIGTERM");
-    await Promise.race([exited, new Promise((resolve) => setTimeout(resolve, 10000))]);
+    await stopServer(server);
     rmSync(work, { recursive: true, force: true });
   }
 }
