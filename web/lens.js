@@ -292,9 +292,10 @@ function ownsKeys(target) {
 function onKey(e) {
   if (e.altKey || e.ctrlKey || e.metaKey || !ownsKeys(e.target) || !state.lensId) return;
   const typing = e.target.id === "fstop-input";
+  if (e.target.type === "radio" && e.key.startsWith("Arrow")) return;  // arrows choose among radios
   if (e.key === "ArrowUp" || e.key === "ArrowDown") stepFstop(e.key === "ArrowUp" ? 1 : -1, e.shiftKey);
   else if ((e.key === "m" || e.key === "M") && !typing) cycleMode();
-  else if ((e.key === "ArrowLeft" || e.key === "ArrowRight") && !typing && e.target.type !== "radio") moveFocus(e.key === "ArrowRight" ? 1 : -1);
+  else if ((e.key === "ArrowLeft" || e.key === "ArrowRight") && !typing) moveFocus(e.key === "ArrowRight" ? 1 : -1);
   else return;
   e.preventDefault();
 }

@@ -205,15 +205,13 @@ export function shownIds() { return view.entries.map((e) => e.id); }
 
 function applyTransform() {
   const port = view.stages[0] && view.stages[0].parentElement;
+  const entry = view.entries[0];
   if (port) {
-    const w = port.clientWidth, h = port.clientHeight;
-    view.x = Math.min(0, Math.max(w * (1 - view.zoom), view.x));
-    view.y = Math.min(0, Math.max(h * (1 - view.zoom), view.y));
+    view.x = Math.min(0, Math.max(port.clientWidth * (1 - view.zoom), view.x));
+    view.y = Math.min(0, Math.max(port.clientHeight * (1 - view.zoom), view.y));
   }
   for (const stage of view.stages) stage.style.transform = `translate(${view.x}px, ${view.y}px) scale(${view.zoom})`;
-  const entry = view.entries[0];
-  const port0 = view.stages[0] && view.stages[0].parentElement;
-  const perPixel = entry && port0 ? (port0.clientWidth * view.zoom) / entry.width : 0;
+  const perPixel = entry && port ? (port.clientWidth * view.zoom) / entry.width : 0;
   $("zoom-value").textContent = perPixel ? `${perPixel.toFixed(perPixel < 10 ? 1 : 0)} screen px per pixel` : "";
 }
 
