@@ -41,8 +41,13 @@ export function etaText(etaSeconds) {
   return etaSeconds < 90 ? `about ${Math.ceil(etaSeconds)} s left` : `about ${Math.ceil(etaSeconds / 60)} min left`;
 }
 
-// Follows a job through server-sent events; when the stream breaks before the job is over, polls
-// instead. onUpdate(status) returns true once the job is over.
+// Browsers open at most 6 connections to one HTTP/1.1 host and an event stream holds one for its
+// whole life: beyond this many streams, jobs are polled so that requests are never starved.
+const MAX_STREAMS = 3;
+let openStreams = 0;
+
+// Follows a job through server-sent events; when the stream breaks before the job is over (or too
+// many are open), polls instead. onUpdate(status) returns true once the job is over.
 export function follow(eventsUrl, pollUrl, onUpdate, pollEvery = 500) {
   let over = false;
   const poll = async () => {
@@ -55,19 +60,27 @@ export function follow(eventsUrl, pollUrl, onUpdate, pollEvery = 500) {
       if (!over) await new Promise((r) => setTimeout(r, pollEvery));
     }
   };
-  if (!window.EventSource) { poll(); return; }
+  if (!window.EventSource || openStreams >= MAX_STREAMS) { poll(); return; }
   const source = new EventSource(eventsUrl);
+  openStreams++;
+  let closed = false;
+  const close = () => {
+    if (closed) return;
+    closed = true;
+    source.close();
+    openStreams--;
+  };
   let queue = Promise.resolve();
   source.onmessage = (event) => {
     const status = JSON.parse(event.data);
     queue = queue.then(async () => {
       if (over) return;
       over = await onUpdate(status);
-      if (over) source.close();
+      if (over) close();
     });
   };
   source.onerror = () => {
-    source.close();
+    close();
     queue.then(() => { if (!over) poll(); });
   };
 }

@@ -232,7 +232,9 @@ async function submitRenders(modes) {
       showMessage(`The ${mode} render was refused: ${e.message}`);
     }
   }
-  if (ids.length) openInViewer(ids);
+  if (!ids.length) return;
+  openInViewer(ids);
+  $("viewer").scrollIntoView({ block: "start" });
 }
 
 export async function loadScenes() {

@@ -1,7 +1,8 @@
 // Screenshots of the web page for docs/: the shared telephoto scene through telephoto.250mm at f/5.6,
 // accurate and approximate compared side by side, at 1280x800 (the viewer in view) and on a
-// 390-wide phone.
-// usage: node web-screenshot.mjs LENSLAB_BINARY OUT_DIR   (writes web-page.png, web-page-phone.png)
+// 390-wide phone; and the lens panel at the top of the page.
+// usage: node web-screenshot.mjs LENSLAB_BINARY OUT_DIR
+//        (writes web-page.png, web-page-phone.png, web-page-lens.png)
 import { mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
@@ -26,6 +27,8 @@ async function main() {
     await page.waitForFunction(() => document.querySelector("#lens-title").textContent === "telephoto.250mm");
     await page.fill("#fstop-input", "5.6");
     await page.press("#fstop-input", "Enter");
+    await page.waitForFunction(() => document.querySelector("#diagram-status").textContent.includes("f/5.6"));
+    await page.screenshot({ path: join(outDir, "web-page-lens.png") });
     await page.selectOption("#scene", "shared-telephoto");
     await page.fill("#width", "240");
     await page.fill("#height", "180");
