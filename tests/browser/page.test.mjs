@@ -249,6 +249,28 @@ async function checkReport(page, base) {
   await page.waitForFunction(() => document.querySelector("#report-status").textContent.includes("cancelled"), null, { timeout: 60000 });
 }
 
+// Without server-sent events the page follows a render by polling.
+async function checkPollingFallback(context, base) {
+  const page = await context.newPage();
+  try {
+    await page.addInitScript(() => { delete window.EventSource; });
+    const streams = [];
+    page.on("request", (r) => { if (r.url().includes("/events")) streams.push(r.url()); });
+    await page.goto(base);
+    await page.waitForSelector("body[data-ready]");
+    const before = await page.$$eval(".history-item", (items) => items.length);
+    await smallRenderSettings(page);
+    await page.fill("#width", "32");
+    await page.fill("#height", "24");
+    await page.click("#render-button");
+    await page.waitForFunction((n) => document.querySelectorAll(".history-item").length > n, before);
+    await page.waitForSelector('.history-item:first-child[data-state="done"]', { timeout: 60000 });
+    check(streams.length === 0, "without EventSource a render is followed to the end by polling");
+  } finally {
+    await page.close();
+  }
+}
+
 async function checkDeletion(page, base) {
   const id = await page.$eval('.history-item[data-state="done"]', (i) => i.dataset.id);
   await page.click(`.history-item[data-id="${id}"] button:text("Delete")`);
@@ -284,6 +306,7 @@ async function main() {
     await checkHistoryAfterReload(page);
     await checkAccessibility(page);
     await checkReport(page, base);
+    await checkPollingFallback(context, base);
     check(pageErrors.length === 0, "no script errors" + (pageErrors.length ? ": " + pageErrors.join("; ") : ""));
     check(externalRequests.length === 0, "no request leaves the service" + (externalRequests.length ? ": " + externalRequests.join(", ") : ""));
     await checkDeletion(page, base);
