@@ -1,9 +1,9 @@
 // Renders: submitting them with the lens panel's settings, the history of the user's renders
 // (settings, thumbnail, live progress with ETA, re-opening, deleting) and what the viewer shows.
 import { $, api, clearMessage, etaText, follow, postJson, showMessage } from "./api.js";
-import { exposeInto, exposeSrgbBytes, normalisation } from "./hdr.js";
+import { exposeSrgbBytes, normalisation } from "./hdr.js";
 import { currentFocus, fstopParameter, selectedLens } from "./lens.js";
-import { drawPreviewTiles, forgetPixels, loadPixels, renderFinished, showRenders, shownIds } from "./viewer.js";
+import { drawPreviewTiles, forgetPixels, renderFinished, showRenders, shownIds } from "./viewer.js";
 
 const HISTORY_LENGTH = 24;
 const THUMB_WIDTH = 112;
@@ -102,7 +102,7 @@ function addItem(job, atTop) {
   items.set(id, item);
   update(item, job);
   if (!isOver(job.state)) followRender(item);
-  else if (job.state === "done") drawThumbnail(item);
+  else if (job.state === "done") drawFinalThumbnail(item);
 }
 
 function update(item, job) {
@@ -141,11 +141,9 @@ function loadPicture(url) {
   });
 }
 
-// Finished tiles: into the viewer (if it shows this render) and the thumbnail, at the page's exposure.
-async function drawTiles(item, tiles) {
-  const picture = await loadPicture(`/api/renders/${item.job.id}/preview.png?t=${item.tilesSeen}`);
-  if (!picture) return;
-  drawPreviewTiles(item.job.id, picture, tiles, item.job.request.fstop);
+// The thumbnail from a PNG the service wrote at exposure 1, normalised like the viewer. (The PNG
+// rather than the float pixels: a history of large renders would otherwise load megabytes each.)
+function drawThumbnail(item, picture) {
   const context = item.thumb.getContext("2d", { willReadFrequently: true });
   context.drawImage(picture, 0, 0, item.thumb.width, item.thumb.height);
   const pixels = context.getImageData(0, 0, item.thumb.width, item.thumb.height);
@@ -153,20 +151,18 @@ async function drawTiles(item, tiles) {
   context.putImageData(pixels, 0, 0);
 }
 
-async function drawThumbnail(item) {
-  try {
-    const image = await loadPixels(item.job.id);
-    const full = document.createElement("canvas");
-    full.width = image.width;
-    full.height = image.height;
-    const context = full.getContext("2d");
-    const pixels = context.createImageData(image.width, image.height);
-    exposeInto(pixels.data, image, normalisation(image.fstop));
-    context.putImageData(pixels, 0, 0);
-    item.thumb.getContext("2d").drawImage(full, 0, 0, item.thumb.width, item.thumb.height);
-  } catch (e) {
-    item.status.textContent += " (image unavailable: " + e.message + ")";
-  }
+// Finished tiles: into the viewer (if it shows this render) and the thumbnail, at the page's exposure.
+async function drawTiles(item, tiles) {
+  const picture = await loadPicture(`/api/renders/${item.job.id}/preview.png?t=${item.tilesSeen}`);
+  if (!picture) return;
+  drawPreviewTiles(item.job.id, picture, tiles, item.job.request.fstop);
+  drawThumbnail(item, picture);
+}
+
+async function drawFinalThumbnail(item) {
+  const picture = await loadPicture(item.job.links.png);
+  if (picture) drawThumbnail(item, picture);
+  else item.status.textContent += " (its image is unavailable)";
 }
 
 function followRender(item) {
@@ -181,7 +177,7 @@ function followRender(item) {
     }
     if (!isOver(job.state)) return false;
     if (job.state === "done") {
-      await drawThumbnail(item);
+      await drawFinalThumbnail(item);
       await renderFinished(id);
     }
     return true;

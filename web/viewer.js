@@ -17,7 +17,7 @@ const view = {
 
 const pixelCache = new Map();  // render id -> pixels promise
 
-export function loadPixels(id) {
+function loadPixels(id) {
   if (!pixelCache.has(id)) {
     const loading = fetchPixels(`/api/renders/${id}/pixels`);
     loading.catch(() => pixelCache.delete(id));
