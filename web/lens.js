@@ -89,8 +89,11 @@ function trySetFstop(n) {
   return true;
 }
 
-// 0.1 steps land on tenths; full stops multiply by √2.
+// 0.1 steps land on tenths; full stops multiply by √2. A value typed but not yet entered is the
+// starting point.
 function stepFstop(direction, fullStop) {
+  const typed = $("fstop-input").value;
+  if (typed !== shown(state.fstop) && !trySetFstop(Number(typed.replace(",", ".")))) return;
   const n = fullStop ? state.fstop * Math.pow(Math.SQRT2, direction) : Math.round((state.fstop + 0.1 * direction) * 100) / 100;
   trySetFstop(n);
 }

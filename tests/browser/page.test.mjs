@@ -74,6 +74,11 @@ async function checkLensControls(page, work) {
   await page.press("#fstop-input", "Shift+ArrowDown");
   await page.press("#fstop-input", "ArrowDown");
   check(Math.abs((await fstopShown(page)) - 4) < 0.011, "Shift+ArrowDown and ArrowDown step back to f/4");
+  await page.fill("#fstop-input", "7");
+  await page.press("#fstop-input", "ArrowDown");
+  check(Math.abs((await fstopShown(page)) - 6.9) < 1e-9, "ArrowDown starts from a typed f/7 not yet entered: f/6.9");
+  await page.fill("#fstop-input", "4");
+  await page.press("#fstop-input", "Enter");
   await page.click("#stop-narrower");
   check(Math.abs((await fstopShown(page)) / 4 - Math.SQRT2) < 0.002, "the 'narrower' button is a full stop as well");
   await page.waitForFunction(() => document.querySelector("#lens-data tbody").textContent.includes("5.66"));
