@@ -3,7 +3,7 @@
 import { $, api, clearMessage, etaText, follow, postJson, showMessage } from "./api.js";
 import { exposeSrgbBytes, normalisation } from "./hdr.js";
 import { currentFocus, fstopParameter, selectedLens } from "./lens.js";
-import { drawPreviewTiles, forgetPixels, renderFinished, showRenders, shownIds } from "./viewer.js";
+import { forgetPixels, renderFinished, showPreview, showRenders, shownIds } from "./viewer.js";
 
 const HISTORY_LENGTH = 24;
 const THUMB_WIDTH = 112;
@@ -151,11 +151,11 @@ function drawThumbnail(item, picture) {
   context.putImageData(pixels, 0, 0);
 }
 
-// Finished tiles: into the viewer (if it shows this render) and the thumbnail, at the page's exposure.
-async function drawTiles(item, tiles) {
+// New tiles: the image so far into the viewer (if it shows this render) and the thumbnail.
+async function drawTiles(item) {
   const picture = await loadPicture(`/api/renders/${item.job.id}/preview.png?t=${item.tilesSeen}`);
   if (!picture) return;
-  drawPreviewTiles(item.job.id, picture, tiles, item.job.request.fstop);
+  showPreview(item.job.id, picture);
   drawThumbnail(item, picture);
 }
 
@@ -172,7 +172,7 @@ function followRender(item) {
     if (job.state === "deleted") { removeItem(id); return true; }
     update(item, job);
     if (job.tiles && job.tiles.length) {
-      await drawTiles(item, job.tiles);
+      await drawTiles(item);
       item.tilesSeen += job.tiles.length;
     }
     if (!isOver(job.state)) return false;

@@ -37,11 +37,22 @@ const scaleOf = (entry) => normalisation(entry.fstop) * Math.pow(2, stops());
 function drawLayer(layer) {
   const { canvas, kind, entry } = layer;
   const image = kind === "difference" ? view.diff && view.diff.image : entry.image;
-  if (!image) return;
-  const context = canvas.getContext("2d");
+  const context = canvas.getContext("2d", { willReadFrequently: !image });
+  if (!image) {
+    if (entry.preview) drawPreview(context, entry);
+    return;
+  }
   const pixels = context.createImageData(image.width, image.height);
   if (kind === "difference") rampInto(pixels.data, image, Math.pow(2, stops()) * differenceGain());
   else exposeInto(pixels.data, image, scaleOf(entry));
+  context.putImageData(pixels, 0, 0);
+}
+
+// A render still in progress: its preview PNG (finished tiles, written at exposure 1) re-exposed.
+function drawPreview(context, entry) {
+  context.drawImage(entry.preview, 0, 0);
+  const pixels = context.getImageData(0, 0, entry.width, entry.height);
+  exposeSrgbBytes(pixels.data, scaleOf(entry));
   context.putImageData(pixels, 0, 0);
 }
 
@@ -73,19 +84,12 @@ function showDifferenceScale() {
     `(scene-normalised linear units, 1 = a white diffuse surface under the scene's light at exposure 0)`;
 }
 
-// Draws finished tiles of a render still in progress from its preview PNG (written at exposure 1).
-export function drawPreviewTiles(id, picture, tiles, fstop) {
+// New tiles of a render in progress arrived: `picture` is its preview PNG.
+export function showPreview(id, picture) {
   for (const layer of view.layers) {
     if (layer.kind !== "image" || layer.entry.id !== id || layer.entry.image) continue;
-    const context = layer.canvas.getContext("2d", { willReadFrequently: true });
-    for (const [x0, y0, x1, y1] of tiles) {
-      const w = x1 - x0, h = y1 - y0;
-      if (w <= 0 || h <= 0) continue;
-      context.drawImage(picture, x0, y0, w, h, x0, y0, w, h);
-      const pixels = context.getImageData(x0, y0, w, h);
-      exposeSrgbBytes(pixels.data, normalisation(fstop) * Math.pow(2, stops()));
-      context.putImageData(pixels, x0, y0);
-    }
+    layer.entry.preview = picture;
+    drawLayer(layer);
   }
 }
 
