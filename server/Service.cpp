@@ -43,6 +43,8 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<Renderer> renderer
     addDiagramRoutes(http_.routes(), parts_);
     addRenderRoutes(http_.routes(), parts_);
     addReportRoutes(http_.routes(), parts_);
+    addEventRoutes(http_.routes(), parts_);
+    addImageRoutes(http_.routes(), parts_);
     addStaticRoutes(http_.routes(), parts_);
 }
 

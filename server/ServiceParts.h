@@ -29,6 +29,8 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts);
 void addDiagramRoutes(httplib::Server& server, ServiceParts& parts);
 void addRenderRoutes(httplib::Server& server, ServiceParts& parts);
 void addReportRoutes(httplib::Server& server, ServiceParts& parts);
+void addEventRoutes(httplib::Server& server, ServiceParts& parts);
+void addImageRoutes(httplib::Server& server, ServiceParts& parts);
 void addStaticRoutes(httplib::Server& server, ServiceParts& parts);  // last: it owns "/"
 
 }  // namespace lenslab

@@ -1,0 +1,41 @@
+// Starts `lenslab serve` on a free loopback port with a fresh data folder under `work`, and headless
+// Chromium (Debian's /usr/bin/chromium) with a throw-away profile; shared by the browser scripts.
+import { spawn } from "node:child_process";
+import { mkdtempSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { chromium } from "playwright-core";
+
+// Resolves with { server, base } once the service prints its listening line.
+export function startServer(binary, work) {
+  const server = spawn(binary, ["serve", "--port", "0", "--data", join(work, "data"), "--access-log", join(work, "access.log")],
+    { stdio: ["ignore", "pipe", "pipe"] });
+  return new Promise((resolve, reject) => {
+    let output = "";
+    const timer = setTimeout(() => reject(new Error("server did not start:\n" + output)), 30000);
+    const onData = (chunk) => {
+      output += chunk;
+      const m = output.match(/listening on (http:\/\/[^/\s]+\/)/);
+      if (m) { clearTimeout(timer); resolve({ server, base: m[1] }); }
+    };
+    server.stdout.on("data", onData);
+    server.stderr.on("data", onData);
+    server.on("exit", (code) => reject(new Error(`server exited (${code}):\n${output}`)));
+  });
+}
+
+export async function stopServer(server) {
+  const exited = new Promise((resolve) => server.once("exit", resolve));
+  server.kill("SIGTERM");
+  await Promise.race([exited, new Promise((resolve) => setTimeout(resolve, 10000))]);
+}
+
+export function launchBrowser(viewport) {
+  return chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), "lenslab-chromium-")), {
+    executablePath: "/usr/bin/chromium",
+    headless: true,
+    viewport,
+    args: ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
+           "--disable-component-update", "--disable-sync"],
+  });
+}

@@ -1,0 +1,324 @@
+// The lens panel: the lens list and uploads, the selected lens's data and diagram, and its controls
+// driven like the course's lens viewer (↑/↓ f-number by 0.1, Shift+↑/↓ a full stop, m the diagram
+// mode, ←/→ the focus). Out-of-range f-numbers are refused with the lens's range, never clamped.
+import { $, api, clearMessage, fixed, showMessage } from "./api.js";
+
+const state = {
+  lenses: [],
+  lensId: null,
+  fstop: 2,
+  fstopMin: 1, fstopMax: 32,
+  updateTimer: 0,
+  dataRequest: 0,  // sequence number: answers to older requests are dropped
+};
+
+const SERVICE_MAX_FSTOP = 128;
+const MODES = ["exact", "thick", "overlay"];
+const FOCUS_STEP = 25;  // of the focus slider's 1000 (logarithmic) steps
+
+// ---- lens list and upload --------------------------------------------------------------------
+
+export async function loadLenses(selectId) {
+  const body = await api("/api/lenses");
+  state.lenses = body.lenses;
+  const list = $("lens-list");
+  list.replaceChildren();
+  for (const lens of state.lenses) {
+    const item = document.createElement("li");
+    const button = document.createElement("button");
+    button.type = "button";
+    button.dataset.id = lens.id;
+    // Bundled lenses go by their id; an upload by the name it was uploaded under (its id is random).
+    button.append(lens.bundled ? lens.id : lens.name);
+    const detail = document.createElement("small");
+    detail.textContent = `EFL ${fixed(lens.efl, 1)} mm, f/${fixed(lens.fstop_min, 2)}` + (lens.bundled ? "" : ` · uploaded (${lens.id})`);
+    button.append(detail);
+    button.addEventListener("click", () => selectLens(lens.id));
+    item.append(button);
+    list.append(item);
+  }
+  const wanted = selectId || state.lensId || (state.lenses.find((l) => l.id === "dgauss.50mm") || state.lenses[0] || {}).id;
+  if (wanted) await selectLens(wanted);
+}
+
+async function uploadLens(file) {
+  clearMessage();
+  if (!file) return;
+  if (file.size > 1024 * 1024) {
+    showMessage(`"${file.name}" is ${Math.round(file.size / 1024)} KiB; lens tables are at most 1 MiB.`);
+    return;
+  }
+  const form = new FormData();
+  form.append("file", file, file.name);
+  try {
+    const lens = await api("/api/lenses", { method: "POST", body: form });
+    await loadLenses(lens.id);
+    showMessage(`Uploaded "${lens.name}" as ${lens.id}.`, "info");
+  } catch (e) {
+    showMessage(`The lens table "${file.name}" was not accepted: ${e.message}`);
+  }
+}
+
+function setUpUpload() {
+  const input = $("lens-file");
+  input.addEventListener("change", () => { uploadLens(input.files[0]); input.value = ""; });
+  const zone = $("drop-zone");
+  for (const name of ["dragenter", "dragover"]) zone.addEventListener(name, (e) => { e.preventDefault(); zone.classList.add("dragging"); });
+  for (const name of ["dragleave", "drop"]) zone.addEventListener(name, (e) => { e.preventDefault(); zone.classList.remove("dragging"); });
+  zone.addEventListener("drop", (e) => uploadLens(e.dataTransfer.files[0]));
+}
+
+// ---- the f-number ------------------------------------------------------------------------------
+
+const shown = (n) => String(Math.round(n * 100) / 100);
+
+function rangeText() { return `f/${shown(Math.ceil(state.fstopMin * 100) / 100)} to f/${shown(state.fstopMax)}`; }
+
+// Takes n when the lens can be set to it; otherwise says the lens's range and keeps the f-number.
+// A value within display rounding of the widest aperture means the widest aperture.
+function trySetFstop(n) {
+  const input = $("fstop-input");
+  const ok = isFinite(n) && n >= state.fstopMin - 0.005 && n <= state.fstopMax + 1e-9;
+  input.setAttribute("aria-invalid", String(!ok));
+  $("fstop-range").textContent = ok ? `range ${rangeText()}` : `f/${isFinite(n) ? shown(n) : input.value} is outside this lens's range, ${rangeText()}`;
+  $("fstop-range").classList.toggle("bad", !ok);
+  if (!ok) return false;
+  state.fstop = Math.max(n, state.fstopMin);
+  input.value = shown(state.fstop);
+  scheduleUpdate();
+  return true;
+}
+
+// 0.1 steps land on tenths; full stops multiply by √2. A value typed but not yet entered is the
+// starting point.
+function stepFstop(direction, fullStop) {
+  const typed = $("fstop-input").value;
+  if (typed !== shown(state.fstop) && !trySetFstop(Number(typed.replace(",", ".")))) return;
+  const n = fullStop ? state.fstop * Math.pow(Math.SQRT2, direction) : Math.round((state.fstop + 0.1 * direction) * 100) / 100;
+  trySetFstop(n);
+}
+
+// The f-number as sent to the service: rounded up, so the widest setting stays inside the range.
+export function fstopParameter() { return Math.ceil(state.fstop * 1e4) / 1e4; }
+
+// ---- focus and mode ------------------------------------------------------------------------------
+
+// Focus slider 0..1000 maps logarithmically onto [4 EFL, 100 m]; its top end is infinity.
+function focusRange() {
+  const lens = state.lenses.find((l) => l.id === state.lensId);
+  const efl = lens ? Math.abs(lens.efl) : 50;
+  return [Math.max(4 * efl, 10), 100000];
+}
+
+export function currentFocus() {
+  if ($("focus-infinity").checked) return "inf";
+  const v = Number($("focus-mm").value);
+  return isFinite(v) && v > 0 ? v : "inf";
+}
+
+function syncFocusFromSlider() {
+  const v = Number($("focus-slider").value);
+  const infinity = v >= 1000;
+  $("focus-infinity").checked = infinity;
+  $("focus-mm").disabled = infinity;
+  if (!infinity) {
+    const [lo, hi] = focusRange();
+    $("focus-mm").value = Math.round(lo * Math.pow(hi / lo, v / 1000));
+  }
+}
+
+function syncSliderFromFocus() {
+  const focus = currentFocus();
+  $("focus-mm").disabled = $("focus-infinity").checked;
+  if (focus === "inf") { $("focus-slider").value = 1000; return; }
+  const [lo, hi] = focusRange();
+  $("focus-slider").value = Math.max(0, Math.min(999, 1000 * Math.log(focus / lo) / Math.log(hi / lo)));
+}
+
+function moveFocus(direction) {
+  const slider = $("focus-slider");
+  slider.value = Math.max(0, Math.min(1000, Number(slider.value) + direction * FOCUS_STEP));
+  syncFocusFromSlider();
+  scheduleUpdate();
+}
+
+function currentMode() { return document.querySelector('input[name="mode"]:checked').value; }
+
+function cycleMode() {
+  const next = MODES[(MODES.indexOf(currentMode()) + 1) % MODES.length];
+  document.querySelector(`input[name="mode"][value="${next}"]`).checked = true;
+  scheduleUpdate();
+}
+
+// ---- the selected lens ----------------------------------------------------------------------------
+
+export function selectedLens() { return state.lensId; }
+
+async function selectLens(id) {
+  clearMessage();
+  state.lensId = id;
+  for (const b of document.querySelectorAll("#lens-list button")) b.setAttribute("aria-current", String(b.dataset.id === id));
+  const summary = state.lenses.find((l) => l.id === id);
+  if (!summary) return;
+  state.fstopMin = summary.fstop_min;
+  state.fstopMax = Math.min(summary.fstop_max, SERVICE_MAX_FSTOP);
+  $("lens-title").textContent = summary.id;
+  $("lens-description").textContent = summary.description || summary.name;
+  $("delete-lens").hidden = summary.bundled;
+  trySetFstop(state.fstopMin);
+  await updateLensView();
+}
+
+function scheduleUpdate() {
+  clearTimeout(state.updateTimer);
+  state.updateTimer = setTimeout(updateLensView, 150);
+}
+
+const lensQuery = () => `fstop=${fstopParameter()}&focus=${currentFocus()}`;
+
+async function updateLensView() {
+  if (!state.lensId) return;
+  const id = encodeURIComponent(state.lensId);
+  const request = ++state.dataRequest;
+  $("diagram-status").textContent = "Drawing the diagram…";
+  loadDiagram(`/api/lenses/${id}/diagram.png?mode=${currentMode()}&${lensQuery()}&size=1000x500`, request);
+  try {
+    const lens = await api(`/api/lenses/${id}?${lensQuery()}`);
+    if (request !== state.dataRequest) return;
+    showLensData(lens);
+    showFullStops(lens.full_stops || []);
+  } catch (e) {
+    if (request !== state.dataRequest) return;
+    showMessage(`Lens ${state.lensId} cannot be set that way: ${e.message}`);
+  }
+}
+
+async function loadDiagram(url, request) {
+  try {
+    const response = await fetch(url);
+    if (!response.ok) {
+      const body = await response.json().catch(() => ({}));
+      throw new Error(body.error || response.status + " " + response.statusText);
+    }
+    const blob = await response.blob();
+    if (request !== state.dataRequest) return;
+    const img = $("diagram");
+    const old = img.src;
+    img.src = URL.createObjectURL(blob);
+    if (old.startsWith("blob:")) URL.revokeObjectURL(old);
+    const focus = currentFocus();
+    $("diagram-status").textContent = `${currentMode()} diagram at f/${shown(state.fstop)}, focus ${focus === "inf" ? "at infinity" : focus + " mm"}`;
+  } catch (e) {
+    if (request !== state.dataRequest) return;
+    $("diagram-status").textContent = "The diagram could not be drawn: " + e.message;
+  }
+}
+
+// The engraved name of a full stop (f/22 rather than f/22.6).
+function nominalFstop(n) {
+  const names = [1, 1.4, 2, 2.8, 4, 5.6, 8, 11, 16, 22, 32, 45, 64];
+  const near = names.find((name) => Math.abs(name / n - 1) < 0.06);
+  return near !== undefined ? String(near) : n.toFixed(1);
+}
+
+function showFullStops(stops) {
+  const box = $("full-stops");
+  box.replaceChildren();
+  for (const n of stops) {
+    if (n > state.fstopMax * 1.0001) continue;
+    const b = document.createElement("button");
+    b.type = "button";
+    b.textContent = "f/" + nominalFstop(n);
+    b.setAttribute("aria-label", `set f/${nominalFstop(n)}`);
+    b.addEventListener("click", () => trySetFstop(n));
+    box.append(b);
+  }
+}
+
+function showLensData(lens) {
+  const rows = [
+    ["Effective focal length", fixed(lens.efl)],
+    ["Back focal distance", fixed(lens.back_focal_distance)],
+    ["Front focal distance", fixed(lens.front_focal_distance)],
+    ["F (front focal point) z", fixed(lens.F.z)],
+    ["F′ (rear focal point) z", fixed(lens.F_prime.z)],
+    ["P (front principal plane) z", fixed(lens.P.z)],
+    ["P′ (rear principal plane) z", fixed(lens.P_prime.z)],
+    ["f-number", fixed(lens.fstop, 2) + `  (range f/${fixed(lens.fstop_min, 2)} – f/${fixed(lens.fstop_max, 1)})`],
+    ["Stop diameter", fixed(lens.stop.diameter) + ` at z ${fixed(lens.stop.z)}`],
+    ["Entrance pupil", `⌀ ${fixed(lens.entrance_pupil.diameter)} at z ${fixed(lens.entrance_pupil.z)}`],
+    ["Exit pupil", `⌀ ${fixed(lens.exit_pupil.diameter)} at z ${fixed(lens.exit_pupil.z)}`],
+    ["Focus", lens.focus.infinity ? "infinity" : fixed(lens.focus.distance, 1) + " mm"],
+    ["Film (image plane) z, exact", fixed(lens.focus.image_z)],
+    ["Film z, thick-lens model", fixed(lens.focus.image_z_thick)],
+    ["Exact − thick", fixed(lens.focus.image_z_difference, 4)],
+  ];
+  const body = $("lens-data").tBodies[0];
+  body.replaceChildren();
+  for (const [name, value] of rows) {
+    const tr = body.insertRow();
+    const th = document.createElement("th");
+    th.textContent = name;
+    tr.append(th);
+    tr.insertCell().textContent = value;
+  }
+  const surfaces = $("lens-surfaces").tBodies[0];
+  surfaces.replaceChildren();
+  lens.surfaces.forEach((s, i) => {
+    const tr = surfaces.insertRow();
+    for (const v of [i + (s.is_stop ? " (stop)" : ""), fixed(s.z), s.radius === 0 ? "flat" : fixed(s.radius), fixed(s.n, 4), fixed(s.diameter, 2)])
+      tr.insertCell().textContent = v;
+  });
+}
+
+async function deleteLens() {
+  const id = state.lensId;
+  if (!id || !confirm(`Delete the uploaded lens ${id}?`)) return;
+  try {
+    await api(`/api/lenses/${encodeURIComponent(id)}`, { method: "DELETE" });
+    state.lensId = null;
+    await loadLenses();
+  } catch (e) {
+    showMessage(`Lens ${id} could not be deleted: ${e.message}`);
+  }
+}
+
+// ---- keys ------------------------------------------------------------------------------------------
+
+// Keys act on the lens unless the user is typing elsewhere (text fields, lists, sliders keep theirs).
+function ownsKeys(target) {
+  if (target.id === "fstop-input") return true;
+  if (target.isContentEditable || ["SELECT", "TEXTAREA"].includes(target.tagName)) return false;
+  return !(target.tagName === "INPUT" && !["checkbox", "radio", "button", "submit"].includes(target.type));
+}
+
+function onKey(e) {
+  if (e.altKey || e.ctrlKey || e.metaKey || !ownsKeys(e.target) || !state.lensId) return;
+  const typing = e.target.id === "fstop-input";
+  if (e.target.type === "radio" && e.key.startsWith("Arrow")) return;  // arrows choose among radios
+  if (e.key === "ArrowUp" || e.key === "ArrowDown") stepFstop(e.key === "ArrowUp" ? 1 : -1, e.shiftKey);
+  else if ((e.key === "m" || e.key === "M") && !typing) cycleMode();
+  else if ((e.key === "ArrowLeft" || e.key === "ArrowRight") && !typing) moveFocus(e.key === "ArrowRight" ? 1 : -1);
+  else return;
+  e.preventDefault();
+}
+
+export function setUpLensPanel() {
+  setUpUpload();
+  const input = $("fstop-input");
+  input.addEventListener("change", () => trySetFstop(Number(input.value.replace(",", "."))));
+  input.addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); input.dispatchEvent(new Event("change")); } });
+  $("stop-wider").addEventListener("click", () => stepFstop(-1, true));
+  $("stop-narrower").addEventListener("click", () => stepFstop(1, true));
+  $("focus-slider").addEventListener("input", () => { syncFocusFromSlider(); scheduleUpdate(); });
+  $("focus-mm").addEventListener("input", () => { syncSliderFromFocus(); scheduleUpdate(); });
+  $("focus-infinity").addEventListener("change", () => {
+    if (!$("focus-infinity").checked) { $("focus-slider").value = 700; syncFocusFromSlider(); }
+    syncSliderFromFocus();
+    scheduleUpdate();
+  });
+  for (const radio of document.querySelectorAll('input[name="mode"]')) radio.addEventListener("change", scheduleUpdate);
+  $("lens-controls").addEventListener("submit", (e) => e.preventDefault());
+  $("delete-lens").addEventListener("click", deleteLens);
+  document.addEventListener("keydown", onKey);
+}
