@@ -12,7 +12,6 @@ const state = {
   dataRequest: 0,  // sequence number: answers to older requests are dropped
 };
 
-const SERVICE_MAX_FSTOP = 128;
 const MODES = ["exact", "thick", "overlay"];
 const FOCUS_STEP = 25;  // of the focus slider's 1000 (logarithmic) steps
 
@@ -161,7 +160,7 @@ async function selectLens(id) {
   const summary = state.lenses.find((l) => l.id === id);
   if (!summary) return;
   state.fstopMin = summary.fstop_min;
-  state.fstopMax = Math.min(summary.fstop_max, SERVICE_MAX_FSTOP);
+  state.fstopMax = summary.fstop_max;  // the service's range: the lens's widest to f/64
   $("lens-title").textContent = summary.id;
   $("lens-description").textContent = summary.description || summary.name;
   $("delete-lens").hidden = summary.bundled;
