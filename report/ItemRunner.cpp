@@ -1,5 +1,11 @@
 #include "ItemRunner.h"
 
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+#include "SourceDigests.h"
+
 #include "Render.h"
 
 #ifndef LENSLAB_VERSION
@@ -72,13 +78,28 @@ void ItemRunner::report(const std::string& label, bool reused) {
     if (onProgress_) onProgress_({label, reused, done_, total_});
 }
 
-// Raised whenever what an item holds or how it is made changes within one lenslab version.
-constexpr int kCacheRevision = 2;
-
-InputsHash itemInputs(const char* kind) {
+InputsHash itemInputs(const std::string& kind, const CodeDigests& code) {
+    // The parts whose code makes each kind of item (and the report's own, which lays them out).
+    static const std::map<std::string, std::vector<CodePart>> kMadeBy = {
+        {"lens", {CodePart::Optics, CodePart::Formats}},
+        {"diagram", {CodePart::Optics, CodePart::Image, CodePart::Diagram}},
+        {"render", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}},
+        {"difference", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}},
+        {"speed", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}}};
     InputsHash h;
-    h.add(std::string("lenslab ") + LENSLAB_VERSION).add(double(kCacheRevision)).add(kind);
+    h.add(std::string("lenslab ") + LENSLAB_VERSION).add(kind).add(code.digests[int(CodePart::Report)]);
+    const auto it = kMadeBy.find(kind);
+    if (it == kMadeBy.end()) throw std::logic_error("report item kind '" + kind + "' has no code listed");
+    for (CodePart part : it->second) h.add(code.digests[int(part)]);
     return h;
 }
+
+CodeDigests builtCode() {
+    CodeDigests c;
+    for (int i = 0; i < kCodeParts; ++i) c.digests[i] = kSourceDigests[i];
+    return c;
+}
+
+InputsHash itemInputs(const char* kind) { return itemInputs(kind, builtCode()); }
 
 }  // namespace lenslab

@@ -52,8 +52,18 @@ private:
     ReportSummary& summary_;
 };
 
-// A hash already holding the lenslab version, the cache revision and the item kind: a new version
-// rebuilds everything.
-InputsHash itemInputs(const char* kind);
+// The code that makes report items, part by part: a SHA-256 of each part's sources, taken at build
+// time (report/SourceDigests.cmake).
+enum class CodePart { Optics, Formats, Image, Diagram, Raytracer, Report };
+constexpr int kCodeParts = 6;
+struct CodeDigests {
+    std::string digests[kCodeParts];
+};
+CodeDigests builtCode();  // this build's
+
+// A hash already holding the lenslab version, the item kind and the digests of the code that makes
+// that kind (lens data, diagram, render, difference, speed): an item made by other code is rebuilt.
+InputsHash itemInputs(const std::string& kind, const CodeDigests& code);
+InputsHash itemInputs(const char* kind);  // with builtCode()
 
 }  // namespace lenslab
