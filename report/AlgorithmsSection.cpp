@@ -86,8 +86,9 @@ rectilinear f tan&theta; (<code>optics/Distortion.cpp</code>).</p>
 
 <h3>This page</h3>
 <p><code>report/</code> builds it: <code>BuildReport.cpp</code> runs every item through a cache keyed by a hash
-of its inputs (lens and scene files, parameters, lenslab version), so an unchanged diagram or render is
-not made again; the plots are inline SVG written by <code>SvgPlot.cpp</code>.</p>
+of its inputs (lens and scene files, parameters, lenslab version, and a digest of the source code that
+makes that kind of item), so an unchanged diagram or render is not made again and one made by older
+code never reused; the plots are inline SVG written by <code>SvgPlot.cpp</code>.</p>
 </section>
 )html";
 }

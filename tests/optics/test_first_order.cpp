@@ -24,12 +24,8 @@ const double kInf = std::numeric_limits<double>::infinity();
 
 std::vector<std::string> publishedTables() {
     std::vector<std::string> paths;
-    const std::filesystem::path dir = LENSLAB_SHARED_LENSES;
-    const std::filesystem::path ours = std::string(LENSLAB_SOURCE_DIR) + "/lenses";
-    for (const auto& d : {dir, ours})
-        if (std::filesystem::exists(d))
-            for (const auto& e : std::filesystem::directory_iterator(d))
-                if (e.path().extension() == ".dat") paths.push_back(e.path().string());
+    for (const auto& e : std::filesystem::directory_iterator(std::string(LENSLAB_SOURCE_DIR) + "/lenses"))
+        if (e.path().extension() == ".dat") paths.push_back(e.path().string());
     return paths;
 }
 
