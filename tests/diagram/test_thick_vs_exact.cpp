@@ -7,6 +7,7 @@
 
 #include "DiagramStyle.h"
 #include "DiagramTestSupport.h"
+#include "RayFans.h"
 
 namespace lenslab::test {
 namespace {
@@ -103,6 +104,42 @@ TEST(ThickVsExact, FisheyePartsFarMoreThanWideAngle) {
     };
     EXPECT_GT(rimSeparation("fisheye.10mm"), 100.0);
     EXPECT_GT(rimSeparation("fisheye.10mm"), 5 * rimSeparation("wide.22mm"));
+}
+
+}  // namespace
+}  // namespace lenslab::test
+
+namespace lenslab::test {
+namespace {
+
+// The thick lens's rays run to the rear principal plane P' and leave the front one P at the same
+// height (the planes of unit magnification), then converge on the focused object: drawn to P on both
+// sides, or with the heights changed, the fan would be another lens's.
+TEST(ThickLensFan, ReachesPPrimeAndLeavesPAtTheSameHeight) {
+    for (const char* name : {"dgauss.50mm", "telephoto.250mm", "wide.22mm"}) {
+        const LensSystem lens = loadBundledLens(name);
+        const double focus = 3000;
+        const LensAnalysis a = analyzeLens(lens, std::nullopt, focus);
+        FanSetup setup;
+        setup.filmZ = a.focus.imageZThick;
+        setup.fieldHeight = 0;
+        setup.rays = 7;
+        setup.endZ = lens.frontZ() + 2 * focus;
+        int checked = 0;
+        for (const FanRay& r : traceRayFans(a, RayModel::Thick, setup)) {
+            if (r.blocked) continue;
+            ASSERT_GE(r.points.size(), 4u) << name;
+            EXPECT_NEAR(r.points[1].z, a.thick.zPPrime, 1e-9) << name;
+            EXPECT_NEAR(r.points[2].z, a.thick.zP, 1e-9) << name;
+            EXPECT_NEAR(r.points[2].y, r.points[1].y, 1e-9) << name;
+            // Beyond P the ray heads for the axial object point at the plane of focus.
+            const ZY p = r.points[2], q = r.points[3];
+            const double yAtObject = p.y + (q.y - p.y) * (lens.frontZ() + focus - p.z) / (q.z - p.z);
+            EXPECT_NEAR(yAtObject, 0, 1e-6 * focus) << name;
+            ++checked;
+        }
+        EXPECT_GE(checked, 5) << name;
+    }
 }
 
 }  // namespace
