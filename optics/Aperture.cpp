@@ -1,5 +1,7 @@
 #include "Aperture.h"
 
+#include "NumberText.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -31,12 +33,6 @@ double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta,
     return std::fabs(heightAtZ(r.ray, lens.stop().z));
 }
 
-// Three significant digits as lenses are marked (f/2.02, f/5.6), whole numbers from 1000 on.
-std::string fmt(double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, std::fabs(v) >= 1000 ? "%.0f" : "%.3g", v);
-    return b;
-}
 
 }  // namespace
 
@@ -73,17 +69,17 @@ double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const 
                             double fstop) {
     // A relative tolerance lets the f-number printed for fstopMin be asked for again.
     if (!(fstop >= range.fstopMin * (1 - 1e-9)) || !(fstop <= range.fstopMax))
-        throw OpticsError("f-number " + fmt(fstop) + " is outside this lens's range f/" +
-                          fmt(range.fstopMin) + " to f/" + fmt(range.fstopMax));
+        throw OpticsError("f-number " + formatFNumber(fstop) + " is outside this lens's range f/" +
+                          formatFNumber(range.fstopMin) + " to f/" + formatFNumber(range.fstopMax));
     const double sinTheta = std::min(1.0 / (2.0 * fstop), 1.0 / (2.0 * range.fstopMin));
     bool blocked = false;
     const double h = stopHeight(lens, fo, sinTheta, &blocked);
-    if (blocked) throw OpticsError("f/" + fmt(fstop) + ": the marginal ray is blocked behind the stop");
+    if (blocked) throw OpticsError("f/" + formatFNumber(fstop) + ": the marginal ray is blocked behind the stop");
     return std::min(2.0 * h, 2.0 * lens.stop().apertureRadius);
 }
 
 double fstopForStopDiameter(const LensSystem& lens, const FirstOrder& fo, const ApertureRange& range, double diameter) {
-    if (!(diameter > 0)) throw OpticsError("the stop diameter must be positive, got " + fmt(diameter) + " mm");
+    if (!(diameter > 0)) throw OpticsError("the stop diameter must be positive, got " + formatFNumber(diameter) + " mm");
     if (diameter >= range.stopDiameterMax) return range.fstopMin;
     // The opening shrinks as the cone narrows: bisect sin theta between the widest cone and none.
     double lo = 0, hi = 1.0 / (2.0 * range.fstopMin);
@@ -110,8 +106,8 @@ std::vector<double> fineStops(double fstopMin, double fstopMax, double step) {
     constexpr double kMaxCount = 1e5;
     const double first = std::ceil(fstopMin / step - 1e-9);
     if (!(step > 0) || !(std::fabs(first) < 1e15) || !((fstopMax + 1e-12) / step - first < kMaxCount))
-        throw OpticsError("f-number steps of " + fmt(step) + " from f/" + fmt(fstopMin) + " to f/" +
-                          fmt(fstopMax) + " are not a finite list of at most 100000");
+        throw OpticsError("f-number steps of " + formatFNumber(step) + " from f/" + formatFNumber(fstopMin) + " to f/" +
+                          formatFNumber(fstopMax) + " are not a finite list of at most 100000");
     std::vector<double> stops;
     for (long k = static_cast<long>(first); k * step <= fstopMax + 1e-12; ++k) stops.push_back(k * step);
     return stops;

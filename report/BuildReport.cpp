@@ -8,6 +8,7 @@
 
 #include "ItemRunner.h"
 #include "LensItems.h"
+#include "NumberText.h"
 #include "RenderItems.h"
 #include "ReportPage.h"
 #include "SiteFiles.h"
@@ -70,9 +71,7 @@ const LensEntry* findLens(const std::vector<LensEntry>& lenses, const std::strin
 
 std::string fstopText(std::optional<double> fstop) {
     if (!fstop) return "each lens at its widest";
-    char b[32];
-    std::snprintf(b, sizeof b, "f/%g", *fstop);
-    return b;
+    return "f/" + formatFNumber(*fstop);
 }
 
 // The settings shown in the page's header.

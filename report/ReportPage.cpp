@@ -94,13 +94,13 @@ void lensTable(std::ostringstream& out, const LensFacts& f) {
         const bool infiniteFocus = std::string(r.key) == "focus.distance" && a["focus"].value("infinity", false);
         out << "<tr><th scope=\"row\">" << r.quantity << "</th>";
         if (infiniteFocus) out << "<td>infinity</td>";
-        else out << "<td data-key=\"" << r.key << "\">" << fixedNumber(v, r.decimals) << "</td>";
+        else out << "<td data-key=\"" << r.key << "\">" << formatFixed(v, r.decimals) << "</td>";
         out << "<td>" << r.unit << "</td><td>" << r.meaning << "</td></tr>\n";
     }
     std::string stops;
     for (const auto& s : a["full_stops"]) stops += (stops.empty() ? "f/" : ", f/") + formatNumber(s.get<double>(), 3);
     out << "<tr><th scope=\"row\">Full stops</th><td colspan=\"3\">" << stops << "</td></tr>\n";
-    out << "<tr><th scope=\"row\">Image circle radius</th><td>" << fixedNumber(f.imageCircleRadius, 2)
+    out << "<tr><th scope=\"row\">Image circle radius</th><td>" << formatFixed(f.imageCircleRadius, 2)
         << "</td><td>mm</td><td>largest film radius any ray reaches</td></tr>\n";
     out << "</tbody>\n</table>\n";
 }
@@ -195,8 +195,8 @@ void statsTable(std::ostringstream& out, const RenderPair& pair) {
            "<th scope=\"col\">Rays/s</th></tr></thead>\n<tbody>\n";
     for (const RenderRecord* r : {&pair.accurate, &pair.approximate}) {
         const double blocked = r->cameraRays ? 100.0 * r->blockedCameraRays / r->cameraRays : 0;
-        out << "<tr><th scope=\"row\">" << r->mode << "</th><td>" << fixedNumber(r->setupSeconds, 2) << "</td><td>"
-            << fixedNumber(r->renderSeconds, 2) << "</td><td>" << r->cameraRays << "</td><td>" << fixedNumber(blocked, 1)
+        out << "<tr><th scope=\"row\">" << r->mode << "</th><td>" << formatFixed(r->setupSeconds, 2) << "</td><td>"
+            << formatFixed(r->renderSeconds, 2) << "</td><td>" << r->cameraRays << "</td><td>" << formatFixed(blocked, 1)
             << " %</td><td>" << rate(r->renderSeconds > 0 ? r->raysTraced / r->renderSeconds : 0) << "</td></tr>\n";
     }
     out << "</tbody>\n</table>\n";
@@ -226,7 +226,7 @@ void sceneArticle(std::ostringstream& out, const ReportScene& s) {
             << figure(img(p.approximate.image, s.scene.id + " through " + p.lensId + ", thick-lens camera", w, h),
                       "Approximate: thick lens")
             << figure(img(p.differenceImage, "difference between the two renders", w, h),
-                      "|difference| \u00d7 " + formatNumber(p.differenceGain, 3) + ", RMS " + fixedNumber(p.rmsDifference, 2) +
+                      "|difference| \u00d7 " + formatNumber(p.differenceGain, 3) + ", RMS " + formatFixed(p.rmsDifference, 2) +
                           " of 255")
             << "</div>\n";
         statsTable(out, p);

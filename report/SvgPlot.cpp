@@ -19,11 +19,7 @@ constexpr int kPaletteSize = sizeof kPalette / sizeof kPalette[0];
 constexpr double kFontSize = 12, kCharWidth = 7.2;  // average glyph advance of a sans-serif at 12 px
 constexpr double kTop = 30, kLeft = 62, kRight = 16, kAxisBand = 42, kLegendRow = 18;
 
-std::string num(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.2f", v);
-    return b;
-}
+std::string num(double v) { return formatFixed(v, 2); }
 
 struct Scale {
     bool log = false;
@@ -38,7 +34,7 @@ struct Scale {
     }
     bool shows(double v) const { return std::isfinite(v) && (!log || v > 0); }
     std::string label(double v) const {
-        return log ? formatNumber(v) : fixedNumber(v, decimals);
+        return log ? formatNumber(v) : formatFixed(v, decimals);
     }
 };
 

@@ -1,5 +1,7 @@
 #include "DiagramPicture.h"
 
+#include "NumberText.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,13 +15,7 @@ namespace {
 
 using namespace diagram_style;
 
-std::string format(const char* pattern, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, pattern, value);
-    return text;
-}
-
-std::string millimetres(double value) { return format(std::abs(value) >= 100 ? "%.0f mm" : "%.1f mm", value); }
+std::string millimetres(double value) { return formatFixed(value, std::abs(value) >= 100 ? 0 : 1) + " mm"; }
 
 const char* modeName(DiagramMode mode) {
     switch (mode) {
@@ -113,7 +109,7 @@ struct Composer {
     void stop(const StopBlades& s) {
         for (double sign : {1.0, -1.0})
             addLine(pic.shapes, at({s.z, sign * s.openingRadius}), at({s.z, sign * s.outerRadius}), 3.5 * lw, kStop);
-        rowLabel(true, at({s.z, s.outerRadius}), "stop f/" + format("%.3g", a.fstop), kStop);
+        rowLabel(true, at({s.z, s.outerRadius}), "stop f/" + formatFNumber(a.fstop), kStop);
     }
 
     void axis() {
@@ -179,7 +175,7 @@ struct Composer {
     void caption(const std::string& lensName, double filmZ) {
         const FocusResult& f = a.focus;
         const std::string focus = f.infinity ? "\u221E" : millimetres(f.objectZ);
-        const std::string lens = lensName + "   EFL " + format("%.2f mm", a.firstOrder.efl) + "   f/" + format("%.3g", a.fstop);
+        const std::string lens = lensName + "   EFL " + formatFixed(a.firstOrder.efl, 2) + " mm   f/" + formatFNumber(a.fstop);
         const double room = pic.width - pic.content.left;
         label({pic.content.left, 1.35 * em},
               firstFitting({lens + "   focus " + focus + "   " + modeCaption(options.mode),
@@ -233,7 +229,7 @@ struct Composer {
         const double right = pic.content.right, left = right - length * pic.view.scale;
         addLine(pic.shapes, {left, mid}, {right, mid}, 2 * lw, kText);
         for (double end : {left, right}) addLine(pic.shapes, {end, mid - 4 * lw}, {end, mid + 4 * lw}, 1.5 * lw, kText);
-        const std::string text = format(length >= 1 ? "%.0f mm" : "%.1f mm", length);
+        const std::string text = formatFixed(length, length >= 1 ? 0 : 1) + " mm";
         label({left - 0.5 * small, baseline}, text, small, kText, TextAnchor::Right);
         return left - 0.5 * small - textWidth(text, small);
     }
