@@ -87,6 +87,69 @@ private:
     int shown_ = -1;
 };
 
+// -o may repeat: every occurrence is taken out before the parser (which keeps one value per
+// option); the rest are returned.
+std::vector<std::string> takeOutputs(const std::vector<std::string>& argsIn, std::vector<std::string>& outputs) {
+    std::vector<std::string> args;
+    for (std::size_t i = 0; i < argsIn.size(); ++i) {
+        const std::string& a = argsIn[i];
+        if (a == "-o" || a == "--output") {
+            if (i + 1 >= argsIn.size()) throw UsageError("render: -o needs a file name");
+            outputs.push_back(argsIn[++i]);
+        } else if (a.rfind("-o=", 0) == 0) {
+            outputs.push_back(a.substr(3));
+        } else {
+            args.push_back(a);
+        }
+    }
+    for (const auto& o : outputs) {
+        const auto dot = o.rfind('.');
+        const std::string ext = dot == std::string::npos ? "" : o.substr(dot);
+        if (ext != ".exr" && ext != ".png" && ext != ".EXR" && ext != ".PNG")
+            throw UsageError("render: output '" + o + "' must end in .exr or .png");
+    }
+    return args;
+}
+
+RenderSettings renderSettings(const ArgParser& p) {
+    RenderSettings s;
+    s.scenePath = p.arg(0);
+    if (auto v = p.integer("--spp")) s.spp = int(*v);
+    if (auto v = p.integer("--threads")) s.threads = int(*v);
+    if (auto v = p.integer("--tile")) s.tileSize = int(*v);
+    if (auto v = p.integer("--width")) s.width = int(*v);
+    if (auto v = p.integer("--height")) s.height = int(*v);
+    if (auto v = p.integer("--seed")) s.seed = std::uint64_t(*v);
+    if (p.has("--crop")) s.crop = parseCrop(p.get("--crop"));
+    if (p.has("--lens")) s.camera.lensFile = p.get("--lens");
+    if (p.has("--layout")) {
+        s.camera.lensLayout = parseLayoutName(p.get("--layout"));
+        if (!s.camera.lensLayout) throw UsageError("render: --layout must be gap-before or gap-after, got '" + p.get("--layout") + "'");
+    }
+    const LensSettings flags = lensFlags(p);
+    s.camera.fstop = flags.fstop;
+    s.camera.focusDistance = flags.focusDistance;
+    if (auto v = p.number("--filmdiag")) s.camera.filmDiagonal = *v;
+    if (p.has("--mode")) s.camera.mode = p.get("--mode");
+    return s;
+}
+
+// The closing lines: the JSON statistics for --progress-json, the human summary otherwise.
+void printStatistics(const RenderStats& st, bool json, bool quiet, const std::vector<std::string>& outputs) {
+    if (json) {
+        std::printf("{\"finished\":true,\"setupSeconds\":%.6f,\"renderSeconds\":%.6f,\"cameraRays\":%llu,"
+                    "\"blockedCameraRays\":%llu,\"raysTraced\":%llu}\n",
+                    st.setupSeconds, st.renderSeconds, (unsigned long long)st.cameraRays,
+                    (unsigned long long)st.blockedCameraRays, (unsigned long long)st.raysTraced);
+        std::fflush(stdout);
+    }
+    if (quiet) return;
+    const double blocked = st.cameraRays ? double(st.blockedCameraRays) / st.cameraRays : 0.0;
+    std::fprintf(stderr, "setup %.3f s, render %.3f s, %.2f Mrays/s, %.2f%% of camera rays blocked by the lens\n",
+                 st.setupSeconds, st.renderSeconds, st.raysTraced / std::max(st.renderSeconds, 1e-9) * 1e-6, 100.0 * blocked);
+    for (const auto& o : outputs) std::fprintf(stderr, "wrote %s\n", o.c_str());
+}
+
 }  // namespace
 
 int runRenderCommand(const std::vector<std::string>& argsIn) {
@@ -114,50 +177,14 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.flag("--mpi", "spread the tiles over the processes of an MPI job: mpirun -np N lenslab render ... --mpi");
     p.option("--mpi-timeout", "S", "with --mpi: a worker silent this long is taken as dead and its tile re-queued (default 10)");
 
-    // -o may repeat: collect every occurrence before the parser (which keeps one value per option).
-    std::vector<std::string> outputs, args;
-    for (std::size_t i = 0; i < argsIn.size(); ++i) {
-        const std::string& a = argsIn[i];
-        if (a == "-o" || a == "--output") {
-            if (i + 1 >= argsIn.size()) throw UsageError("render: -o needs a file name");
-            outputs.push_back(argsIn[++i]);
-        } else if (a.rfind("-o=", 0) == 0) {
-            outputs.push_back(a.substr(3));
-        } else {
-            args.push_back(a);
-        }
-    }
-    if (!p.parse(args)) {
+    std::vector<std::string> outputs;
+    if (!p.parse(takeOutputs(argsIn, outputs))) {
         std::cout << p.help();
         return 0;
     }
-    RenderSettings s;
-    s.scenePath = p.arg(0);
-    if (auto v = p.integer("--spp")) s.spp = int(*v);
-    if (auto v = p.integer("--threads")) s.threads = int(*v);
-    if (auto v = p.integer("--tile")) s.tileSize = int(*v);
-    if (auto v = p.integer("--width")) s.width = int(*v);
-    if (auto v = p.integer("--height")) s.height = int(*v);
-    if (auto v = p.integer("--seed")) s.seed = std::uint64_t(*v);
-    if (p.has("--crop")) s.crop = parseCrop(p.get("--crop"));
-    if (p.has("--lens")) s.camera.lensFile = p.get("--lens");
-    if (p.has("--layout")) {
-        s.camera.lensLayout = parseLayoutName(p.get("--layout"));
-        if (!s.camera.lensLayout) throw UsageError("render: --layout must be gap-before or gap-after, got '" + p.get("--layout") + "'");
-    }
-    const LensSettings flags = lensFlags(p);
-    s.camera.fstop = flags.fstop;
-    s.camera.focusDistance = flags.focusDistance;
-    if (auto v = p.number("--filmdiag")) s.camera.filmDiagonal = *v;
-    if (p.has("--mode")) s.camera.mode = p.get("--mode");
+    RenderSettings s = renderSettings(p);
     const double exposure = p.number("--exposure").value_or(1.0);
     if (!(exposure > 0)) throw UsageError("render: --exposure must be positive");
-    for (const auto& o : outputs) {
-        const auto dot = o.rfind('.');
-        const std::string ext = dot == std::string::npos ? "" : o.substr(dot);
-        if (ext != ".exr" && ext != ".png" && ext != ".EXR" && ext != ".PNG")
-            throw UsageError("render: output '" + o + "' must end in .exr or .png");
-    }
     const bool quiet = p.has("--quiet");
 
     if (!quiet) s.loadProgress = SceneLoadProgress(::isatty(STDERR_FILENO));
@@ -184,22 +211,7 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     }
     for (const auto& o : outputs) writeImageFile(out, o, exposure);
     if (auto it = out.metadata.find("warnings"); it != out.metadata.end()) std::cerr << "warnings:\n" << it->second << "\n";
-    if (progressJson) {
-        const RenderStats& st = out.stats;
-        std::printf("{\"finished\":true,\"setupSeconds\":%.6f,\"renderSeconds\":%.6f,\"cameraRays\":%llu,"
-                    "\"blockedCameraRays\":%llu,\"raysTraced\":%llu}\n",
-                    st.setupSeconds, st.renderSeconds, (unsigned long long)st.cameraRays,
-                    (unsigned long long)st.blockedCameraRays, (unsigned long long)st.raysTraced);
-        std::fflush(stdout);
-    }
-    if (!quiet) {
-        const RenderStats& st = out.stats;
-        const double blocked = st.cameraRays ? double(st.blockedCameraRays) / st.cameraRays : 0.0;
-        std::fprintf(stderr, "setup %.3f s, render %.3f s, %.2f Mrays/s, %.2f%% of camera rays blocked by the lens\n",
-                     st.setupSeconds, st.renderSeconds, st.raysTraced / std::max(st.renderSeconds, 1e-9) * 1e-6,
-                     100.0 * blocked);
-        for (const auto& o : outputs) std::fprintf(stderr, "wrote %s\n", o.c_str());
-    }
+    printStatistics(out.stats, progressJson, quiet, outputs);
     return 0;
 }
 
