@@ -93,12 +93,12 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
         float* row = dst + std::size_t(py - rect.y0) * rowStride;
         for (int px = rect.x0; px < rect.x1; ++px) {
             const std::uint64_t pixelSeed = hashCombine(settings_.seed, (std::uint64_t(py) << 32) | std::uint32_t(px));
-            std::uint32_t scramble[4];
-            for (int k = 0; k < 4; ++k) scramble[k] = std::uint32_t(mix64(pixelSeed + k));
+            const PixelSampler sampler(pixelSeed);
             for (int s = 0; s < spp_; ++s) {
+                const PixelSample u = sampler(std::uint32_t(s));
                 float dx, dy;
-                filterWeights[s] = filter_.sample(sobolSample(s, 0, scramble[0]), sobolSample(s, 1, scramble[1]), dx, dy);
-                samples[s] = {px + 0.5 + dx, py + 0.5 + dy, sobolSample(s, 2, scramble[2]), sobolSample(s, 3, scramble[3])};
+                filterWeights[s] = filter_.sample(u.filmX, u.filmY, dx, dy);
+                samples[s] = {px + 0.5 + dx, py + 0.5 + dy, u.lensU, u.lensV};
             }
             camera_->generateRays(samples.data(), samples.size(), rays.data());
             FilteredPixel pixel;

@@ -38,10 +38,25 @@ private:
     std::uint64_t state_ = 0, inc_;
 };
 
-// The first four dimensions of the Sobol' sequence, digitally shifted by `scramble` (a random
-// shift keeps the (t, m, s)-net stratification): dimensions 0-1 place the sample in the pixel,
-// 2-3 on the lens.
-float sobolSample(std::uint32_t index, int dimension, std::uint32_t scramble);
+// The four camera dimensions of one pixel sample: where it falls in the pixel and on the lens.
+struct PixelSample {
+    float filmX, filmY, lensU, lensV;  // [0, 1)
+};
+
+// A pixel's camera samples: the Faure (0, 4)-sequence in base 4 (generalised, over GF(4)), each
+// dimension Owen-scrambled with its own seed drawn from the pixel's. Every 4^k consecutive samples
+// (16, 256, ...) fill every base-4 box of volume 4^-k once in 4D, so each pair of dimensions is
+// stratified on a 4^(k/2) grid when k is even (16 samples: 4 x 4 cells, 256: 16 x 16), and the lens
+// samples are spread over the pupil independently of where the film samples fall. Scrambles
+// differ per pixel, so no pattern repeats across the image.
+class PixelSampler {
+public:
+    explicit PixelSampler(std::uint64_t pixelSeed);
+    PixelSample operator()(std::uint32_t index) const;
+
+private:
+    std::uint32_t seeds_[4];
+};
 
 inline Vec3f cosineHemisphere(float u1, float u2) {
     const float r = std::sqrt(u1), phi = 2.0f * float(M_PI) * u2;
