@@ -35,6 +35,12 @@ struct ExitPupilBounds {
     std::vector<double> centreX;  // per film radius: region centre on the aiming plane (y = 0)
     std::vector<double> rho;      // per film radius, per vertex: distance from the centre; all 0 when
                                   // no ray passes
+    // For sampling without rebuilding a polygon per ray: per pair of neighbouring radii (i, i + 1)
+    // and vertex k <= vertices, the fan's area up to vertex k as three sums (A, B, C) so that at
+    // the weight f between the two radii it is (1-f)^2 A + f(1-f) B + f^2 C; and the unit vector of
+    // each vertex's direction (vertices + 1 of them, the last repeating the first).
+    std::vector<double> fanAreas;
+    std::vector<double> vertexX, vertexY;
     int radiusCount() const { return static_cast<int>(centreX.size()); }
     double minFilmRadius() const { return firstRadius * radiusStep; }
     double maxFilmRadius() const { return (firstRadius + radiusCount() - 1) * radiusStep; }
