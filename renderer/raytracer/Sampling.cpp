@@ -12,36 +12,46 @@ constexpr int kDigits = 16;  // base-4 digits in 32 bits
 // GF(4) = {0, 1, a, a + 1} with a^2 = a + 1, elements as 2-bit numbers (addition is xor).
 constexpr std::uint8_t kMul[4][4] = {{0, 0, 0, 0}, {0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}};
 
-// Faure's generator of dimension j is the Pascal matrix at the field element j: entry (r, c) is
-// C(c, r) j^(c - r). kTerms[j][c][d] is what index digit c = d adds (xor) to dimension j's bits,
-// output digit r sitting at bits 31-2r and 30-2r.
-using Terms = std::array<std::array<std::array<std::uint32_t, 4>, kDigits>, 4>;
+// The lens's two dimensions are Faure's over GF(4) at the elements a and a + 1: the Pascal matrix
+// with entries C(c, r) e^(c - r). kLensTerms[l][c][d] is what index digit c = d adds (xor) to lens
+// dimension l's bits, output digit r sitting at bits 31-2r and 30-2r. Elements 0 and 1 would
+// give the base-2 van der Corput and Sobol' dimensions the film uses, which is why the four
+// dimensions are stratified pairwise.
+using Terms = std::array<std::array<std::array<std::uint32_t, 4>, kDigits>, 2>;
 
-Terms makeTerms() {
+Terms makeLensTerms() {
+    std::array<std::array<std::uint8_t, kDigits>, kDigits> pascal{};  // C(c, r) mod 2
+    for (int c = 0; c < kDigits; ++c)
+        for (int r = 0; r <= c; ++r) pascal[c][r] = r == 0 || r == c || (pascal[c - 1][r - 1] ^ pascal[c - 1][r]);
     Terms t{};
-    for (int j = 0; j < 4; ++j) {
-        std::array<std::array<std::uint8_t, kDigits>, kDigits> pascal{};  // C(c, r) mod 2 times j^(c-r)
-        for (int c = 0; c < kDigits; ++c)
-            for (int r = 0; r <= c; ++r) pascal[c][r] = r == 0 || r == c || (pascal[c - 1][r - 1] ^ pascal[c - 1][r]);
+    for (int l = 0; l < 2; ++l) {
+        const std::uint8_t e = std::uint8_t(2 + l);
         for (int c = 0; c < kDigits; ++c)
             for (int d = 0; d < 4; ++d) {
                 std::uint32_t bits = 0;
-                std::uint8_t power = 1;  // j^(c - r), r running down from c
-                for (int r = c; r >= 0; --r, power = kMul[power][j]) {
-                    const std::uint8_t g = pascal[c][r] ? power : 0;
-                    bits ^= std::uint32_t(kMul[g][d]) << (30 - 2 * r);
-                }
-                t[j][c][d] = bits;
+                std::uint8_t power = 1;  // e^(c - r), r running down from c
+                for (int r = c; r >= 0; --r, power = kMul[power][e])
+                    bits ^= std::uint32_t(kMul[pascal[c][r] ? power : 0][d]) << (30 - 2 * r);
+                t[l][c][d] = bits;
             }
     }
     return t;
 }
 
-const Terms kTerms = makeTerms();
+// Sobol's second dimension (primitive polynomial x + 1): the Pascal matrix over GF(2).
+std::array<std::uint32_t, 32> makeFilmYDirections() {
+    std::array<std::uint32_t, 32> v{};
+    v[0] = 1u << 31;
+    for (int k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1);
+    return v;
+}
 
-// Index digits relabelled so that samples 0 and 1 (and 2 and 3) of each group of four fall in
-// opposite halves of every dimension: 2 spp is stratified too. A permutation within the groups
-// keeps every net property.
+const Terms kLensTerms = makeLensTerms();
+const auto kFilmYDirections = makeFilmYDirections();
+
+// The lens's index digits are relabelled so that samples 0 and 1 (and 2 and 3) of each group of
+// four fall in opposite halves of both lens dimensions, as the film's do: 2 spp is stratified too.
+// A permutation within the groups keeps every net property.
 constexpr std::uint8_t kRelabel[4] = {0, 2, 1, 3};
 
 std::uint32_t reverseBits(std::uint32_t x) {
@@ -75,13 +85,16 @@ PixelSampler::PixelSampler(std::uint64_t pixelSeed) {
 }
 
 PixelSample PixelSampler::operator()(std::uint32_t index) const {
-    std::uint32_t bits[4] = {0, 0, 0, 0};
-    for (int c = 0; index != 0; ++c, index >>= 2) {
-        const std::uint8_t d = kRelabel[index & 3u];
-        for (int j = 0; j < 4; ++j) bits[j] ^= kTerms[j][c][d];
+    std::uint32_t filmY = 0, lensU = 0, lensV = 0;
+    for (int k = 0; k < 32 && (index >> k) != 0; ++k)
+        if ((index >> k) & 1u) filmY ^= kFilmYDirections[k];
+    for (int c = 0; (index >> (2 * c)) != 0; ++c) {
+        const std::uint8_t d = kRelabel[(index >> (2 * c)) & 3u];
+        lensU ^= kLensTerms[0][c][d];
+        lensV ^= kLensTerms[1][c][d];
     }
-    return {unitFloat(owenScramble(bits[0], seeds_[0])), unitFloat(owenScramble(bits[1], seeds_[1])),
-            unitFloat(owenScramble(bits[2], seeds_[2])), unitFloat(owenScramble(bits[3], seeds_[3]))};
+    return {unitFloat(owenScramble(reverseBits(index), seeds_[0])), unitFloat(owenScramble(filmY, seeds_[1])),
+            unitFloat(owenScramble(lensU, seeds_[2])), unitFloat(owenScramble(lensV, seeds_[3]))};
 }
 
 }  // namespace lenslab

@@ -43,12 +43,13 @@ struct PixelSample {
     float filmX, filmY, lensU, lensV;  // [0, 1)
 };
 
-// A pixel's camera samples: the Faure (0, 4)-sequence in base 4 (generalised, over GF(4)), each
-// dimension Owen-scrambled with its own seed drawn from the pixel's. Every 4^k consecutive samples
-// (16, 256, ...) fill every base-4 box of volume 4^-k once in 4D, so each pair of dimensions is
-// stratified on a 4^(k/2) grid when k is even (16 samples: 4 x 4 cells, 256: 16 x 16), and the lens
-// samples are spread over the pupil independently of where the film samples fall. Scrambles
-// differ per pixel, so no pattern repeats across the image.
+// A pixel's camera samples, each dimension Owen-scrambled with its own seed drawn from the pixel's
+// (scrambles differ per pixel, so no pattern repeats across the image). The film takes Sobol's
+// first two dimensions, a (0, 2)-sequence: any 2^k samples fill every 2^a x 2^b cell of the pixel
+// with a + b = k. The lens takes the generalised Faure dimensions of base 4 that complete them to
+// a 4D sequence stratified pair by pair: every pair of dimensions (film x/y, lens u/v, film against
+// lens) fills each cell of a 4 x 4 grid with 16 samples, of a 16 x 16 grid with 256. The lens
+// samples are thus spread over the pupil independently of where the film samples fall.
 class PixelSampler {
 public:
     explicit PixelSampler(std::uint64_t pixelSeed);
