@@ -222,7 +222,7 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
 }
 
 PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY, double u1, double u2) {
-    const double r = std::hypot(filmX, filmY);
+    const double r = std::sqrt(filmX * filmX + filmY * filmY);  // mm: no overflow, cheaper than hypot
     const auto [i, j, f] = radiusWeight(b, r);
     const int n = b.vertices;
     // The fan's area up to vertex k at this radius, from the tabulated sums.
@@ -233,10 +233,13 @@ PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY
     s.area = areaTo(n);
     if (!(s.area > 0)) return s;
     const double target = u1 * s.area;
-    int k = 0, hi = n;  // the fan triangle holding target: areaTo(k) <= target < areaTo(k + 1)
-    while (hi - k > 1) {
-        const int mid = (k + hi) / 2;
-        (areaTo(mid) <= target ? k : hi) = mid;
+    // The fan triangle holding target, areaTo(k) <= target < areaTo(k + 1), by a search whose steps
+    // depend on n alone: selects, no branch for random u1 to mispredict.
+    int k = 0;
+    for (int len = n; len > 1;) {
+        const int half = len / 2;
+        k = areaTo(k + half) <= target ? k + half : k;
+        len -= half;
     }
     const double tri = areaTo(k + 1) - areaTo(k);
     const double v = tri > 0 ? std::clamp((target - areaTo(k)) / tri, 0.0, 1.0) : 0.5;
@@ -254,7 +257,7 @@ PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY
 }
 
 bool insideExitPupilBounds(const ExitPupilBounds& b, double filmX, double filmY, double x, double y) {
-    const double r = std::hypot(filmX, filmY);
+    const double r = std::sqrt(filmX * filmX + filmY * filmY);  // mm: no overflow, cheaper than hypot
     const Polygon p = polygonAt(b, r);
     const double c = r > 0 ? filmX / r : 1.0, sn = r > 0 ? filmY / r : 0.0;
     const double lx = x * c + y * sn - p.centreX, ly = -x * sn + y * c;
