@@ -201,6 +201,8 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
     PassTest passes(lens, filmZ, b.aimZ);
     const double rearRadius = lens.surfaces.back().apertureRadius;
     for (int i = 0; i < count; ++i) {
+        if (options.progress && i > 0) options.progress(double(i) / count);
+        if (options.cancel && options.cancel->load(std::memory_order_relaxed)) throw SetupCancelled();
         const double r = (firstRadius + i) * radiusStep;
         double extent = 1.5 * rearRadius;
         GridScan g = scanGrid(passes, r, extent, 64);
@@ -218,6 +220,7 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
         }
     }
     tabulateFans(b);
+    if (options.progress) options.progress(1.0);
     return b;
 }
 

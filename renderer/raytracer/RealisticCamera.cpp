@@ -55,7 +55,8 @@ double thickLensFocusForFilm(const LensSystem& lens, const FirstOrder& fo, doubl
 }
 
 RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform& cameraToWorld, int width, int height,
-                                 double filmMarginPixels)
+                                 double filmMarginPixels, const std::atomic<bool>* cancel,
+                                 const std::function<void(double)>& progress)
     : params_(params), cameraToWorld_(cameraToWorld), width_(width), height_(height) {
     if (!(params.filmDiagonalMm > 0 && params.filmDiagonalMm < 1e4))
         throw OpticsError("film diagonal must lie in (0, 10000) mm, got " + formatNumber(params.filmDiagonalMm));
@@ -123,7 +124,10 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         const double slack = 1e-9;  // a radius on a measured one must not pull in the next
         const int first = int(std::floor(modes_.exactMinRadius() / step + slack));
         const int last = std::max(first + 1, int(std::ceil(modes_.exactMaxRadius() / step - slack)));
-        bounds_ = computeExitPupilBounds(analysis_.lens, filmZExact_, step, first, last);
+        ExitPupilBoundsOptions measure;
+        measure.cancel = cancel;
+        measure.progress = progress;
+        bounds_ = computeExitPupilBounds(analysis_.lens, filmZExact_, step, first, last, measure);
         const double centreWeight = params.simpleWeighting ? exactCentreWeight() : 0;
         weightScaleExact_ = params.simpleWeighting ? (centreWeight > 0 ? 1.0 / centreWeight : 0.0) : params.exposureTime;
     }
