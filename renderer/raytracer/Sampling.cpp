@@ -14,9 +14,9 @@ constexpr std::uint8_t kMul[4][4] = {{0, 0, 0, 0}, {0, 1, 2, 3}, {0, 2, 3, 1}, {
 
 // The lens's two dimensions are Faure's over GF(4) at the elements a and a + 1: the Pascal matrix
 // with entries C(c, r) e^(c - r). kLensTerms[l][c][d] is what index digit c = d adds (xor) to lens
-// dimension l's bits, output digit r sitting at bits 31-2r and 30-2r. Elements 0 and 1 would
-// give the base-2 van der Corput and Sobol' dimensions the film uses, which is why the four
-// dimensions are stratified pairwise.
+// dimension l's bits, output digit r sitting at bits 31-2r and 30-2r. With the film's two Sobol'
+// dimensions these fill every 4^k x 4^k grid cell pair by pair at 16^k samples (the Faure pairs as
+// parts of a (0, 4)-sequence in base 4; film against lens checked in tests/renderer/test_sampler.cpp).
 using Terms = std::array<std::array<std::array<std::uint32_t, 4>, kDigits>, 2>;
 
 Terms makeLensTerms() {
@@ -88,7 +88,7 @@ PixelSample PixelSampler::operator()(std::uint32_t index) const {
     std::uint32_t filmY = 0, lensU = 0, lensV = 0;
     for (int k = 0; k < 32 && (index >> k) != 0; ++k)
         if ((index >> k) & 1u) filmY ^= kFilmYDirections[k];
-    for (int c = 0; (index >> (2 * c)) != 0; ++c) {
+    for (int c = 0; c < kDigits && (index >> (2 * c)) != 0; ++c) {
         const std::uint8_t d = kRelabel[(index >> (2 * c)) & 3u];
         lensU ^= kLensTerms[0][c][d];
         lensV ^= kLensTerms[1][c][d];
