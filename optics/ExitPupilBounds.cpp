@@ -121,18 +121,55 @@ struct Polygon {
     std::array<double, kMaxVertices> rho{};
 };
 
+// Where film radius r falls between the measured radii: rows i and j = i + 1 (or i at the ends),
+// weight f of row j.
+struct RadiusWeight {
+    int i = 0, j = 0;
+    double f = 0;
+};
+
+RadiusWeight radiusWeight(const ExitPupilBounds& b, double r) {
+    const int last = b.radiusCount() - 1;
+    const double t = b.radiusStep > 0 ? std::clamp(r / b.radiusStep - b.firstRadius, 0.0, double(last)) : 0.0;
+    RadiusWeight w;
+    w.i = std::min(static_cast<int>(t), std::max(last - 1, 0));
+    w.f = last > 0 ? t - w.i : 0.0;
+    w.j = std::min(w.i + 1, last);
+    return w;
+}
+
 Polygon polygonAt(const ExitPupilBounds& b, double r) {
     Polygon p;
     p.n = b.vertices;
-    const int last = b.radiusCount() - 1;
-    const double t = b.radiusStep > 0 ? std::clamp(r / b.radiusStep - b.firstRadius, 0.0, double(last)) : 0.0;
-    const int i = std::min(static_cast<int>(t), std::max(last - 1, 0));
-    const double f = last > 0 ? t - i : 0.0;
-    const int j = std::min(i + 1, last);
+    const auto [i, j, f] = radiusWeight(b, r);
     p.centreX = (1 - f) * b.centreX[i] + f * b.centreX[j];
     for (int k = 0; k < p.n; ++k)
         p.rho[k] = (1 - f) * b.rho[i * p.n + k] + f * b.rho[j * p.n + k];
     return p;
+}
+
+// Fills fanAreas, vertexX and vertexY (ExitPupilBounds.h).
+void tabulateFans(ExitPupilBounds& b) {
+    const int n = b.vertices, last = b.radiusCount() - 1, pairs = std::max(last, 1);
+    const double halfSin = 0.5 * std::sin(2.0 * kPi / n);
+    b.fanAreas.assign(static_cast<std::size_t>(pairs) * (n + 1) * 3, 0.0);
+    for (int i = 0; i < pairs; ++i) {
+        const double* a = &b.rho[static_cast<std::size_t>(i) * n];
+        const double* c = &b.rho[static_cast<std::size_t>(std::min(i + 1, last)) * n];
+        double* cum = &b.fanAreas[static_cast<std::size_t>(i) * (n + 1) * 3];
+        for (int k = 0; k < n; ++k) {
+            const int k1 = (k + 1) % n;
+            cum[3 * (k + 1)] = cum[3 * k] + halfSin * a[k] * a[k1];
+            cum[3 * (k + 1) + 1] = cum[3 * k + 1] + halfSin * (a[k] * c[k1] + c[k] * a[k1]);
+            cum[3 * (k + 1) + 2] = cum[3 * k + 2] + halfSin * c[k] * c[k1];
+        }
+    }
+    b.vertexX.resize(n + 1);
+    b.vertexY.resize(n + 1);
+    for (int k = 0; k <= n; ++k) {
+        b.vertexX[k] = std::cos(2.0 * kPi * k / n);
+        b.vertexY[k] = std::sin(2.0 * kPi * k / n);
+    }
 }
 
 }  // namespace
@@ -164,6 +201,8 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
     PassTest passes(lens, filmZ, b.aimZ);
     const double rearRadius = lens.surfaces.back().apertureRadius;
     for (int i = 0; i < count; ++i) {
+        if (options.progress && i > 0) options.progress(double(i) / count);
+        if (options.cancel && options.cancel->load(std::memory_order_relaxed)) throw SetupCancelled();
         const double r = (firstRadius + i) * radiusStep;
         double extent = 1.5 * rearRadius;
         GridScan g = scanGrid(passes, r, extent, 64);
@@ -180,38 +219,48 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
             b.rho[static_cast<std::size_t>(i) * n + k] = half[m] * (1.0 + options.margin);
         }
     }
+    tabulateFans(b);
+    if (options.progress) options.progress(1.0);
     return b;
 }
 
 PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY, double u1, double u2) {
-    const double r = std::hypot(filmX, filmY);
-    const Polygon p = polygonAt(b, r);
-    const double sinStep = std::sin(2.0 * kPi / p.n);
-    std::array<double, kMaxVertices + 1> cdf;
-    cdf[0] = 0;
-    for (int k = 0; k < p.n; ++k) cdf[k + 1] = cdf[k] + 0.5 * p.rho[k] * p.rho[(k + 1) % p.n] * sinStep;
+    const double r = std::sqrt(filmX * filmX + filmY * filmY);  // mm: no overflow, cheaper than hypot
+    const auto [i, j, f] = radiusWeight(b, r);
+    const int n = b.vertices;
+    // The fan's area up to vertex k at this radius, from the tabulated sums.
+    const double g0 = (1 - f) * (1 - f), g1 = f * (1 - f), g2 = f * f;
+    const double* cum = &b.fanAreas[static_cast<std::size_t>(i) * (n + 1) * 3];
+    const auto areaTo = [&](int k) { return g0 * cum[3 * k] + g1 * cum[3 * k + 1] + g2 * cum[3 * k + 2]; };
     PupilSample s;
-    s.area = cdf[p.n];
+    s.area = areaTo(n);
     if (!(s.area > 0)) return s;
     const double target = u1 * s.area;
-    const int k = std::clamp(static_cast<int>(std::upper_bound(cdf.begin() + 1, cdf.begin() + p.n + 1, target) -
-                                              cdf.begin()) - 1,
-                             0, p.n - 1);
-    const double tri = cdf[k + 1] - cdf[k];
-    const double v = tri > 0 ? std::clamp((target - cdf[k]) / tri, 0.0, 1.0) : 0.5;
+    // The fan triangle holding target, areaTo(k) <= target < areaTo(k + 1), by a search whose steps
+    // depend on n alone: selects, no branch for random u1 to mispredict.
+    int k = 0;
+    for (int len = n; len > 1;) {
+        const int half = len / 2;
+        k = areaTo(k + half) <= target ? k + half : k;
+        len -= half;
+    }
+    const double tri = areaTo(k + 1) - areaTo(k);
+    const double v = tri > 0 ? std::clamp((target - areaTo(k)) / tri, 0.0, 1.0) : 0.5;
+    const int k1 = (k + 1) % n;
+    const double rho0 = (1 - f) * b.rho[static_cast<std::size_t>(i) * n + k] + f * b.rho[static_cast<std::size_t>(j) * n + k];
+    const double rho1 = (1 - f) * b.rho[static_cast<std::size_t>(i) * n + k1] + f * b.rho[static_cast<std::size_t>(j) * n + k1];
     // Uniform over the fan triangle (centre, vertex k, vertex k+1).
     const double s1 = std::sqrt(v);
-    const double a0 = 2.0 * kPi * k / p.n, a1 = 2.0 * kPi * (k + 1) / p.n;
-    const double lx = s1 * ((1 - u2) * p.rho[k] * std::cos(a0) + u2 * p.rho[(k + 1) % p.n] * std::cos(a1));
-    const double ly = s1 * ((1 - u2) * p.rho[k] * std::sin(a0) + u2 * p.rho[(k + 1) % p.n] * std::sin(a1));
-    const double x = p.centreX + lx;
+    const double lx = s1 * ((1 - u2) * rho0 * b.vertexX[k] + u2 * rho1 * b.vertexX[k + 1]);
+    const double ly = s1 * ((1 - u2) * rho0 * b.vertexY[k] + u2 * rho1 * b.vertexY[k + 1]);
+    const double x = (1 - f) * b.centreX[i] + f * b.centreX[j] + lx;
     const double c = r > 0 ? filmX / r : 1.0, sn = r > 0 ? filmY / r : 0.0;
     s.point = {x * c - ly * sn, x * sn + ly * c, b.aimZ};
     return s;
 }
 
 bool insideExitPupilBounds(const ExitPupilBounds& b, double filmX, double filmY, double x, double y) {
-    const double r = std::hypot(filmX, filmY);
+    const double r = std::sqrt(filmX * filmX + filmY * filmY);  // mm: no overflow, cheaper than hypot
     const Polygon p = polygonAt(b, r);
     const double c = r > 0 ? filmX / r : 1.0, sn = r > 0 ? filmY / r : 0.0;
     const double lx = x * c + y * sn - p.centreX, ly = -x * sn + y * c;

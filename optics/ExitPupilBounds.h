@@ -11,9 +11,12 @@
 // mirror-symmetric about y = 0.
 //
 // Millimetres, lens space (origin at the front vertex, +z toward the scene, film at negative z).
+#include <atomic>
+#include <functional>
 #include <vector>
 
 #include "LensSystem.h"
+#include "OpticsError.h"
 #include "Vec3.h"
 
 namespace lenslab {
@@ -22,6 +25,16 @@ struct ExitPupilBoundsOptions {
     int filmRadii = 64;      // film radii sampled from 0 to the maximum (whole-disc form)
     int vertices = 64;       // polygon vertices (even), at equal angles around the centre
     double margin = 0.01;    // relative widening of every polygon
+    // Checked before each film radius (a radius costs ~1/64 of the whole, milliseconds even for a
+    // lens at the surface limit): once set, the measurement stops by throwing SetupCancelled.
+    const std::atomic<bool>* cancel = nullptr;
+    std::function<void(double)> progress;  // after each radius: the fraction of radii measured
+};
+
+// The camera's setup was cancelled by the caller.
+class SetupCancelled : public OpticsError {
+public:
+    SetupCancelled() : OpticsError("lens setup cancelled") {}
 };
 
 struct ExitPupilBounds {
@@ -35,6 +48,12 @@ struct ExitPupilBounds {
     std::vector<double> centreX;  // per film radius: region centre on the aiming plane (y = 0)
     std::vector<double> rho;      // per film radius, per vertex: distance from the centre; all 0 when
                                   // no ray passes
+    // For sampling without rebuilding a polygon per ray: per pair of neighbouring radii (i, i + 1)
+    // and vertex k <= vertices, the fan's area up to vertex k as three sums (A, B, C) so that at
+    // the weight f between the two radii it is (1-f)^2 A + f(1-f) B + f^2 C; and the unit vector of
+    // each vertex's direction (vertices + 1 of them, the last repeating the first).
+    std::vector<double> fanAreas;
+    std::vector<double> vertexX, vertexY;
     int radiusCount() const { return static_cast<int>(centreX.size()); }
     double minFilmRadius() const { return firstRadius * radiusStep; }
     double maxFilmRadius() const { return (firstRadius + radiusCount() - 1) * radiusStep; }

@@ -114,6 +114,9 @@ LensTable parseLensTable(const std::string& text, const std::string& name,
             }
         }
         if (content.find_first_not_of(" \t\f\v") == std::string::npos) continue;
+        if (int(table.rows.size()) == kMaxLensSurfaces)
+            throw LensTableError(name, lineNo, "too many surfaces: a lens table may have at most " +
+                                                   std::to_string(kMaxLensSurfaces) + " rows");
         table.rows.push_back(parseRow(content, name, lineNo));
     }
     if (table.rows.empty())

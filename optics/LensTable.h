@@ -14,6 +14,11 @@ enum class TableLayout { GapBefore, GapAfter };
 const char* layoutName(TableLayout layout);                    // "gap-before" / "gap-after"
 std::optional<TableLayout> parseLayoutName(const std::string& name);
 
+// The most surfaces a table may have. Real designs have well under 50; a bound keeps every
+// per-surface structure (exit-pupil search, traces, the blocking surface's int16 index) small and
+// the camera's setup short, and refuses generated or fuzzed tables of thousands of rows at once.
+constexpr int kMaxLensSurfaces = 256;
+
 struct LensTableRow {
     double radius = 0;    // mm, 0 = flat; positive: centre of curvature on the film side
     double gap = 0;       // mm, as written (meaning depends on the layout)

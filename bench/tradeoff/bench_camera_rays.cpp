@@ -1,8 +1,10 @@
 // Time per camera ray of each lens model, for every lens, stop and field position of the study
 // (TradeoffCases.h), one thread:
-//   camera/accurate     RealisticCamera::generateRays, exact trace (the renderer's batched path)
+//   camera/accurate     RealisticCamera::generateRays, exact trace, in the renderer's batches of 256
+//   camera/accurate16   the same in batches of one pixel's 16 samples
 //   camera/approximate  the same through the thick lens
 //   lens/double         the exact lens trace alone (traceRay), rays aimed by the exit-pupil bounds
+//   lens/batched        the same trace as structure-of-arrays batches of 16 and of 256 (traceBatch)
 //   lens/float          the same trace carried out in float (traceRayT<float>)
 //   lens/thick          the thick-lens trace alone (traceThick)
 // Items/s are camera rays per second; blocked rays count (they cost the trace up to the block).
@@ -12,6 +14,7 @@
 
 #include "ExactTrace.h"
 #include "FieldSamples.h"
+#include "RayBatch.h"
 #include "RealisticCamera.h"
 #include "Sampling.h"
 
@@ -22,6 +25,7 @@ namespace {
 
 constexpr int kRays = 4096;
 constexpr int kPixelBatch = 16;  // samples per generateRays call, as a pixel's at 16 spp
+constexpr int kRunBatch = 256;   // as the renderer calls it: a run of 16 pixels at 16 spp
 
 struct Workload {
     std::shared_ptr<RealisticCamera> accurate, approximate;
@@ -52,13 +56,26 @@ Workload makeWorkload(const LensCase& lens, const StopCase& stop, const FieldCas
     return w;
 }
 
-void cameraRays(benchmark::State& state, std::shared_ptr<const Workload> w, bool approximate) {
+void cameraRays(benchmark::State& state, std::shared_ptr<const Workload> w, bool approximate, int batch) {
     const RealisticCamera& camera = approximate ? *w->approximate : *w->accurate;
-    std::vector<CameraRay> out(kPixelBatch);
+    std::vector<CameraRay> out(batch);
     for (auto _ : state) {
-        for (int i = 0; i < kRays; i += kPixelBatch) camera.generateRays(&w->samples[i], kPixelBatch, out.data());
+        for (int i = 0; i < kRays; i += batch) camera.generateRays(&w->samples[i], batch, out.data());
         benchmark::DoNotOptimize(out.data());
     }
+    state.SetItemsProcessed(state.iterations() * kRays);
+}
+
+void batchedTrace(benchmark::State& state, std::shared_ptr<const Workload> w, int size) {
+    const LensSystem& lens = w->accurate->analysis().lens;
+    RayBatch batch;
+    batch.resize(size);
+    for (auto _ : state)
+        for (int i = 0; i < kRays; i += size) {
+            for (int k = 0; k < size; ++k) batch.set(k, w->exactRays[i + k]);
+            traceBatch(lens, batch, TraceDirection::FilmToScene);
+            benchmark::DoNotOptimize(batch.ox.data());
+        }
     state.SetItemsProcessed(state.iterations() * kRays);
 }
 
@@ -86,9 +103,12 @@ int main(int argc, char** argv) {
                 const auto w = std::make_shared<const Workload>(makeWorkload(lens, stop, field));
                 const std::string name = lens.name + "/" + stop.label + "/" + field.label;
                 const double minTime = 0.05;
-                benchmark::RegisterBenchmark(("camera/accurate/" + name).c_str(), cameraRays, w, false)->MinTime(minTime);
-                benchmark::RegisterBenchmark(("camera/approximate/" + name).c_str(), cameraRays, w, true)->MinTime(minTime);
+                benchmark::RegisterBenchmark(("camera/accurate/" + name).c_str(), cameraRays, w, false, kRunBatch)->MinTime(minTime);
+                benchmark::RegisterBenchmark(("camera/accurate16/" + name).c_str(), cameraRays, w, false, kPixelBatch)->MinTime(minTime);
+                benchmark::RegisterBenchmark(("camera/approximate/" + name).c_str(), cameraRays, w, true, kRunBatch)->MinTime(minTime);
                 benchmark::RegisterBenchmark(("lens/double/" + name).c_str(), exactTrace<double>, w)->MinTime(minTime);
+                benchmark::RegisterBenchmark(("lens/batched16/" + name).c_str(), batchedTrace, w, kPixelBatch)->MinTime(minTime);
+                benchmark::RegisterBenchmark(("lens/batched/" + name).c_str(), batchedTrace, w, kRunBatch)->MinTime(minTime);
                 benchmark::RegisterBenchmark(("lens/float/" + name).c_str(), exactTrace<float>, w)->MinTime(minTime);
                 benchmark::RegisterBenchmark(("lens/thick/" + name).c_str(), thickTrace, w)->MinTime(minTime);
             }

@@ -1,5 +1,7 @@
 #include "CameraFactory.h"
 
+#include "ExitPupilBounds.h"
+
 #include "LensTable.h"
 #include "NumberText.h"
 #include "OpticsError.h"
@@ -47,6 +49,8 @@ template <class Build>
 auto atCamera(const ParamSet& p, Build build) -> decltype(build()) {
     try {
         return build();
+    } catch (const SetupCancelled&) {
+        throw RenderCancelled();
     } catch (const SettingError& e) {
         throw SceneError(e.what());
     } catch (const OpticsError& e) {
@@ -68,7 +72,7 @@ ApertureShape apertureShape(const SceneDescription& scene, const ParamSet& p) {
 }
 
 std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverrides& o, int width, int height,
-                                      double margin) {
+                                      double margin, const std::atomic<bool>* cancel) {
     const ParamSet& p = scene.camera.params;
     refuseSynonyms(p, {"specfile", "lensfile"}, "the lens table");
     refuseSynonyms(p, {"fstop", "aperture_diameter", "aperturediameter"}, "the aperture");
@@ -141,7 +145,7 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     r.aperture = apertureShape(scene, p);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
     return atCamera(p, [&]() -> std::unique_ptr<Camera> {
-        return std::make_unique<RealisticCamera>(r, scene.camera.cameraToWorld, width, height, margin);
+        return std::make_unique<RealisticCamera>(r, scene.camera.cameraToWorld, width, height, margin, cancel);
     });
 }
 
@@ -163,9 +167,9 @@ std::unique_ptr<Camera> makeOrthographic(const SceneDescription& scene, int widt
 }  // namespace
 
 std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverrides& o, int width, int height,
-                                   double filmMarginPixels) {
+                                   double filmMarginPixels, const std::atomic<bool>* cancel) {
     const ParamSet& p = scene.camera.params;
-    if (scene.camera.type == "realistic") return makeRealistic(scene, o, width, height, filmMarginPixels);
+    if (scene.camera.type == "realistic") return makeRealistic(scene, o, width, height, filmMarginPixels, cancel);
     if (o.lensFile || o.fstop || o.focusDistance || o.filmDiagonal || o.mode)
         throw SceneError(scene.file + ": the lens overrides need a Camera \"realistic\"; this scene has a " +
                          scene.camera.type + " camera");

@@ -38,7 +38,8 @@ class PreparedFrame {
 public:
     // Throws SceneError, OpticsError. Uses settings.threads threads (0 = all cores) here and in
     // arena(); the camera setup runs inside it.
-    explicit PreparedFrame(const RenderSettings& settings);
+    // A set *cancel stops the camera's setup too (RenderCancelled).
+    explicit PreparedFrame(const RenderSettings& settings, const std::atomic<bool>* cancel = nullptr);
     PreparedFrame(const PreparedFrame&) = delete;
     PreparedFrame& operator=(const PreparedFrame&) = delete;
 

@@ -11,6 +11,8 @@
 // conjugate of the plane of focus), so an auto picture equals the accurate one where the exact
 // trace is used and the approximate one elsewhere, sample for sample.
 #include <array>
+#include <atomic>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,9 +51,11 @@ RealisticParams realisticParams(const std::string& lensPath, std::optional<doubl
 class RealisticCamera : public Camera {
 public:
     // Throws OpticsError (range violations name the range) and LensTableError.
-    // filmMarginPixels: how far beyond the image the pixel filter reaches.
+    // filmMarginPixels: how far beyond the image the pixel filter reaches. cancel and progress
+    // reach the exit-pupil measurement, the bulk of the setup: a set cancel throws SetupCancelled.
     RealisticCamera(const RealisticParams& params, const Transform& cameraToWorld, int width, int height,
-                    double filmMarginPixels);
+                    double filmMarginPixels, const std::atomic<bool>* cancel = nullptr,
+                    const std::function<void(double)>& progress = {});
     bool generateRay(double rasterX, double rasterY, float u1, float u2, CameraRay& out) const override;
     void generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const override;
     std::map<std::string, std::string> describe() const override;

@@ -14,7 +14,7 @@ namespace lenslab {
 
 RenderOutput renderScene(const RenderSettings& settings, const std::function<void(const TileUpdate&, const Image&)>& onTile,
                          const std::atomic<bool>* cancel) {
-    PreparedFrame frame(settings);
+    PreparedFrame frame(settings, cancel);
     RenderOutput out;
     out.stats.setupSeconds = frame.setupSeconds();
     Image& image = out.image;

@@ -38,10 +38,26 @@ private:
     std::uint64_t state_ = 0, inc_;
 };
 
-// The first four dimensions of the Sobol' sequence, digitally shifted by `scramble` (a random
-// shift keeps the (t, m, s)-net stratification): dimensions 0-1 place the sample in the pixel,
-// 2-3 on the lens.
-float sobolSample(std::uint32_t index, int dimension, std::uint32_t scramble);
+// The four camera dimensions of one pixel sample: where it falls in the pixel and on the lens.
+struct PixelSample {
+    float filmX, filmY, lensU, lensV;  // [0, 1)
+};
+
+// A pixel's camera samples, each dimension Owen-scrambled with its own seed drawn from the pixel's
+// (scrambles differ per pixel, so no pattern repeats across the image). The film takes Sobol's
+// first two dimensions, a (0, 2)-sequence: any 2^k samples fill every 2^a x 2^b cell of the pixel
+// with a + b = k. The lens takes the generalised Faure dimensions of base 4 that complete them to
+// a 4D sequence stratified pair by pair: every pair of dimensions (film x/y, lens u/v, film against
+// lens) fills each cell of a 4 x 4 grid with 16 samples, of a 16 x 16 grid with 256. The lens
+// samples are thus spread over the pupil independently of where the film samples fall.
+class PixelSampler {
+public:
+    explicit PixelSampler(std::uint64_t pixelSeed);
+    PixelSample operator()(std::uint32_t index) const;
+
+private:
+    std::uint32_t seeds_[4];
+};
 
 inline Vec3f cosineHemisphere(float u1, float u2) {
     const float r = std::sqrt(u1), phi = 2.0f * float(M_PI) * u2;

@@ -148,3 +148,20 @@ TEST(LensTable, BundledTablesMatchThePublishedFigures) {
     for (const auto& e : std::filesystem::directory_iterator(dir))
         if (e.path().extension() == ".dat") EXPECT_TRUE(lenses.count(e.path().stem().string())) << e.path() << " has no published figure";
 }
+
+namespace {
+
+// n rows of alternating thin air gaps and glass, gap-before (first gap 0).
+std::string manySurfaces(int n) {
+    std::string t;
+    for (int i = 0; i < n; ++i) t += std::string(i % 2 ? "-500" : "500") + (i ? " 0.5 " : " 0 ") + (i % 2 ? "1" : "1.5") + " 20\n";
+    return t;
+}
+
+}  // namespace
+
+TEST(LensTable, RefusesTablesBeyondTheSurfaceLimitAtTheFirstRowTooMany) {
+    EXPECT_EQ(parseLensTable(manySurfaces(kMaxLensSurfaces), "big.dat").rows.size(), std::size_t(kMaxLensSurfaces));
+    // Row 257 is the first one refused: the message names its line and the limit.
+    expectError(manySurfaces(10000), kMaxLensSurfaces + 1, "too many surfaces: a lens table may have at most 256 rows");
+}

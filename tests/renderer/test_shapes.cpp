@@ -277,7 +277,9 @@ TEST(QuadricImages, CylinderSilhouetteWidth) {
             lit += test::lum(im, x, row) > 0.5f;
             sum += test::lum(im, x, row);
         }
-        EXPECT_NEAR(sum, width, 0.3) << row;  // partial pixels at the edges add up
+        // Partial pixels at the edges add up; each of the two edge pixels' 4 samples can be off by a
+        // quarter (0.17 or 0.33 in total over seeds 0-9, with either camera sampler).
+        EXPECT_NEAR(sum, width, 0.5) << row;
         EXPECT_NEAR(lit, width, 1.01) << row;
     }
 }

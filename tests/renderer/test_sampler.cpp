@@ -1,0 +1,92 @@
+// The pixel sampler: every pair of camera dimensions used together (film x/y, lens u/v, film against
+// lens) is stratified, and no dimension repeats another.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <set>
+#include <vector>
+
+#include "Sampling.h"
+
+namespace lenslab {
+namespace {
+
+using Points = std::vector<std::array<float, 4>>;  // film x, film y, lens u, lens v
+
+Points pixelSamples(std::uint64_t pixelSeed, int count) {
+    const PixelSampler sampler(pixelSeed);
+    Points p;
+    for (int i = 0; i < count; ++i) {
+        const PixelSample s = sampler(std::uint32_t(i));
+        p.push_back({s.filmX, s.filmY, s.lensU, s.lensV});
+    }
+    return p;
+}
+
+// The pairs of dimensions whose points leave a cell of the side x side grid empty.
+std::vector<std::pair<int, int>> unstratifiedPairs(const Points& points, int side) {
+    std::vector<std::pair<int, int>> bad;
+    for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b) {
+            std::set<std::pair<int, int>> cells;
+            for (const auto& p : points) cells.insert({int(p[a] * side), int(p[b] * side)});
+            if (int(cells.size()) != side * side) bad.push_back({a, b});
+        }
+    return bad;
+}
+
+TEST(PixelSampler, EveryPairOfDimensionsFillsEveryCell) {
+    for (std::uint64_t seed : {0ull, 1ull, 0x5eedull, 123456789ull}) {
+        EXPECT_TRUE(unstratifiedPairs(pixelSamples(seed, 256), 16).empty()) << "seed " << seed << ", 256 samples";
+        EXPECT_TRUE(unstratifiedPairs(pixelSamples(seed, 16), 4).empty()) << "seed " << seed << ", 16 samples";
+    }
+}
+
+TEST(PixelSampler, ALensDimensionCopiedFromAnotherFailsTheCheck) {
+    // The check itself must see a repeated dimension: lens v a copy of lens u fills 16 of 256 cells.
+    Points copied = pixelSamples(7, 256);
+    for (auto& p : copied) p[3] = p[2];
+    const auto bad = unstratifiedPairs(copied, 16);
+    ASSERT_EQ(bad.size(), 1u);
+    EXPECT_EQ(bad[0], std::make_pair(2, 3));
+    std::set<std::pair<int, int>> cells;
+    for (const auto& p : copied) cells.insert({int(p[2] * 16), int(p[3] * 16)});
+    EXPECT_EQ(cells.size(), 16u);
+}
+
+TEST(PixelSampler, TwoSamplesFallInOppositeHalvesOfEveryDimension) {
+    for (std::uint64_t seed : {0ull, 9ull, 77ull}) {
+        const Points p = pixelSamples(seed, 2);
+        for (int d = 0; d < 4; ++d) EXPECT_NE(p[0][d] < 0.5f, p[1][d] < 0.5f) << "dimension " << d;
+    }
+}
+
+TEST(PixelSampler, PixelsDrawDifferentPointsAndEachIsAPureFunctionOfItsSeed) {
+    const Points a = pixelSamples(1, 16), again = pixelSamples(1, 16), b = pixelSamples(2, 16);
+    EXPECT_EQ(a, again);
+    int same = 0;
+    for (int i = 0; i < 16; ++i)
+        for (int d = 0; d < 4; ++d) same += a[i][d] == b[i][d];
+    EXPECT_LT(same, 4);
+    for (const auto& p : a)
+        for (float v : p) {
+            EXPECT_GE(v, 0.0f);
+            EXPECT_LT(v, 1.0f);
+        }
+}
+
+TEST(PixelSampler, SampleMeansConvergeToOneHalf) {
+    // An unbiased scramble: over many pixels every dimension averages 1/2 and pairs are uncorrelated.
+    double mean[4] = {0, 0, 0, 0}, cross = 0;
+    const int pixels = 2000, spp = 16;
+    for (int px = 0; px < pixels; ++px)
+        for (const auto& p : pixelSamples(mix64(px), spp)) {
+            for (int d = 0; d < 4; ++d) mean[d] += p[d];
+            cross += (p[0] - 0.5) * (p[2] - 0.5);
+        }
+    for (double m : mean) EXPECT_NEAR(m / (pixels * spp), 0.5, 0.005);
+    EXPECT_NEAR(cross / (pixels * spp), 0.0, 0.002);
+}
+
+}  // namespace
+}  // namespace lenslab
