@@ -341,7 +341,7 @@ private:
         else scene_.pixelSamples = p.getInt("pixelsamples", 16);
         p.checkAllUsed(scene_.warnings, {"jitter", "dimensions", "seed"});
         if (type != "sobol" && type != "zerotwosequence" && type != "02sequence" && type != "lowdiscrepancy")
-            warn(where, "lenslab uses its own scrambled Sobol' sampler (noise differs, not the image)");
+            warn(where, "lenslab uses its own Owen-scrambled Sobol'/Faure sampler (noise differs, not the image)");
     }
 
     void integrator(SourceLocation& where, int) {
