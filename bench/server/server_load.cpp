@@ -5,9 +5,6 @@
 //   3. a full render queue: submissions past --max-queue get 429 while the API stays responsive.
 // usage: server_load [LENSLAB_BINARY]   (prints a Markdown summary)
 #include <httplib.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -23,69 +20,18 @@
 #include <thread>
 #include <vector>
 
+#include "ServerUnderTest.h"
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
 using nlohmann::json;
-
-struct Server {
-    pid_t pid = -1;
-    int port = 0;
-    std::string folder;
-};
-
-Server startServer(const std::string& binary, const std::vector<std::string>& extra) {
-    Server s;
-    char pattern[] = "/tmp/lenslab-load-XXXXXX";
-    s.folder = mkdtemp(pattern);
-    const std::string log = s.folder + "/server.out";
-    std::vector<std::string> args = {binary, "serve", "--port", "0", "--data", s.folder + "/data",
-                                     "--access-log", s.folder + "/access.log"};
-    args.insert(args.end(), extra.begin(), extra.end());
-    std::cout.flush();
-    s.pid = fork();
-    if (s.pid == 0) {
-        freopen(log.c_str(), "w", stdout);
-        freopen(log.c_str(), "a", stderr);
-        std::vector<char*> argv;
-        for (auto& a : args) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        execv(binary.c_str(), argv.data());
-        _exit(127);
-    }
-    const std::regex listening(R"(listening on http://[^:]+:(\d+)/)");
-    for (int i = 0; i < 400; ++i) {
-        std::ifstream in(log);
-        std::stringstream text;
-        text << in.rdbuf();
-        std::smatch m;
-        const std::string t = text.str();
-        if (std::regex_search(t, m, listening)) {
-            s.port = std::stoi(m[1]);
-            return s;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    throw std::runtime_error("server did not start");
-}
-
-void stopServer(const Server& s) {
-    kill(s.pid, SIGTERM);
-    int status = 0;
-    waitpid(s.pid, &status, 0);
-    std::filesystem::remove_all(s.folder);
-}
+using namespace lenslab::bench;
 
 struct Sample {
     double ms;
     bool ok;
 };
-
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5))];
-}
 
 // `clients` threads, each `perClient` GETs of urlFor(client, i); returns the summary row.
 std::string loadRow(const std::string& label, int port, int clients, int perClient,
@@ -126,7 +72,7 @@ std::string loadRow(const std::string& label, int port, int clients, int perClie
 
 std::string fullQueueReport(const std::string& binary) {
     const int maxQueue = 4;
-    const Server s = startServer(binary, {"--max-queue", std::to_string(maxQueue), "--renders", "1", "--max-spp", "4096"});
+    const ServerUnderTest s = startServer(binary, {"--max-queue", std::to_string(maxQueue), "--renders", "1", "--max-spp", "4096"});
     httplib::Client c("127.0.0.1", s.port);
     c.set_read_timeout(30);
     const std::string body = json{{"lens", "dgauss.50mm"}, {"spp", 4096}, {"width", 320}, {"height", 240}}.dump();
@@ -187,7 +133,7 @@ int main(int argc, char** argv) {
               << "| workload | clients | requests | requests/s | p50 ms | p99 ms | max ms | errors |\n"
               << "|---|---|---|---|---|---|---|---|\n";
     {
-        const Server s = startServer(binary, {});
+        const ServerUnderTest s = startServer(binary, {});
         const std::vector<std::string> lenses = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
         const std::vector<std::string> modes = {"exact", "thick", "overlay"};
         const std::vector<std::string> fstops = {"", "&fstop=5.6"};
