@@ -16,17 +16,47 @@ void exclusiveSocketOptions(socket_t socket) {
     ::setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);  // restart while old connections linger
 }
 
+// Runs each task at once on the listening thread: the task only hands the new connection to the
+// HeadWaiter, so accepting never waits for a worker.
+class HandOver : public httplib::TaskQueue {
+public:
+    void enqueue(std::function<void()> task) override { task(); }
+    void shutdown() override {}
+};
+
+HeadWaiter::Limits waiterLimits(const ConnectionLimits& limits) {
+    return {limits.stream.maxHeaderBytes, limits.stream.headerTimeout, limits.idleTimeout};
+}
+
+void closeSocket(int socket) {
+    ::shutdown(socket, SHUT_RDWR);
+    ::close(socket);
+}
+
 }  // namespace
 
-GuardedServer::GuardedServer(const ConnectionLimits& limits) : limits_(limits) {
+GuardedServer::GuardedServer(const ConnectionLimits& limits)
+    : limits_(limits),
+      workers_(limits.workers),
+      waiter_(waiterLimits(limits), [this](WaitingConnection connection) {
+          workers_.enqueue([this, c = std::make_shared<WaitingConnection>(std::move(connection))] { answer(std::move(*c)); });
+      }) {
     set_socket_options(exclusiveSocketOptions);
+    new_task_queue = [] { return new HandOver; };
 }
+
+GuardedServer::~GuardedServer() { closeConnections(); }
 
 int GuardedServer::bindTo(const std::string& host, int port) {
     const int bound = port == 0 ? bind_to_any_port(host) : (bind_to_port(host, port) ? port : -1);
     if (bound <= 0) return -1;
     ::listen(svr_sock_, limits_.listenBacklog);  // on a listening socket this only changes the backlog
     return bound;
+}
+
+void GuardedServer::closeConnections() {
+    waiter_.stop();
+    workers_.shutdown();
 }
 
 StreamViolation GuardedServer::violationOnThisThread() {
@@ -36,20 +66,30 @@ StreamViolation GuardedServer::violationOnThisThread() {
 bool GuardedServer::process_and_close_socket(socket_t socket) {
     const int yes = 1;
     ::setsockopt(socket, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
-    GuardedStream stream(socket, limits_.stream);
+    WaitingConnection connection;
+    connection.socket = socket;
+    waiter_.add(std::move(connection));
+    return true;
+}
+
+void GuardedServer::answer(WaitingConnection connection) {
+    GuardedStream stream(connection.socket, limits_.stream, std::move(connection.pending), connection.headDeadline);
     streamOnThisThread = &stream;
-    bool answered = false;
-    for (std::size_t left = limits_.requestsPerConnection; left > 0 && is_running(); --left) {
-        if (!stream.waitForRequest(limits_.idleTimeout)) break;
-        stream.beginRequest();
-        bool closed = false;
-        answered = process_request(stream, left == 1 || !is_running(), closed, nullptr);
-        if (!answered || closed || stream.violation() != StreamViolation::None) break;
-    }
+    const bool last = connection.served + 1 >= limits_.requestsPerConnection || !is_running();
+    bool closed = false;
+    const bool answered = process_request(stream, last, closed, [this](httplib::Request& req) {
+        // Too many ranges: the request is refused (416) before routing, and the refusal itself must
+        // not be cut into those ranges (cpp-httplib applies them to every answer, errors too).
+        if (req.ranges.size() > limits_.maxRanges) req.ranges.clear();
+    });
     streamOnThisThread = nullptr;
-    ::shutdown(socket, SHUT_RDWR);
-    ::close(socket);
-    return answered;
+    if (!answered || closed || last || stream.violation() != StreamViolation::None) {
+        closeSocket(connection.socket);
+        return;
+    }
+    connection.pending = stream.leftover();
+    ++connection.served;
+    waiter_.add(std::move(connection));
 }
 
 }  // namespace lenslab

@@ -48,22 +48,11 @@ bool isFramingHeader(const std::string& lowerCaseStart) {
 
 }  // namespace
 
-GuardedStream::GuardedStream(int socket, const StreamLimits& limits) : socket_(socket), limits_(limits) { beginRequest(); }
+GuardedStream::GuardedStream(int socket, const StreamLimits& limits, std::string pending,
+                             std::chrono::steady_clock::time_point headDeadline)
+    : socket_(socket), limits_(limits), buffer_(std::move(pending)), headDeadline_(headDeadline) {}
 
-bool GuardedStream::waitForRequest(std::chrono::milliseconds idle) {
-    return begin_ < end_ || waitFor(socket_, POLLIN, idle);
-}
-
-void GuardedStream::beginRequest() {
-    inHead_ = atLineStart_ = firstLine_ = true;
-    bodyFramed_ = false;
-    lineStart_.clear();
-    headBytes_ = lineBytes_ = bodyBytes_ = 0;
-    headDeadline_ = Clock::now() + limits_.headerTimeout;
-    violation_ = StreamViolation::None;
-}
-
-bool GuardedStream::is_readable() const { return begin_ < end_ || waitFor(socket_, POLLIN, limits_.readTimeout); }
+bool GuardedStream::is_readable() const { return begin_ < buffer_.size() || waitFor(socket_, POLLIN, limits_.readTimeout); }
 
 bool GuardedStream::is_writable() const { return waitFor(socket_, POLLOUT, limits_.writeTimeout); }
 
@@ -74,15 +63,16 @@ bool GuardedStream::fail(StreamViolation violation) {
 
 bool GuardedStream::fill() {
     if (violation_ != StreamViolation::None) return false;
-    const auto wait = inHead_ ? std::chrono::duration_cast<std::chrono::milliseconds>(headDeadline_ - Clock::now())
-                              : limits_.readTimeout;
+    const auto deadline = inHead_ ? headDeadline_ : bodyDeadline_;
+    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
     if (!waitFor(socket_, POLLIN, wait)) return inHead_ ? fail(StreamViolation::HeaderTimeout) : false;
+    char chunk[16384];
     ssize_t got;
-    do got = ::recv(socket_, buffer_, sizeof buffer_, 0);
+    do got = ::recv(socket_, chunk, sizeof chunk, 0);
     while (got < 0 && errno == EINTR);
     if (got <= 0) return false;
+    buffer_.assign(chunk, static_cast<std::size_t>(got));
     begin_ = 0;
-    end_ = static_cast<std::size_t>(got);
     return true;
 }
 
@@ -99,6 +89,7 @@ bool GuardedStream::account(const char* bytes, std::size_t count) {
         if (headBytes_ > limits_.maxHeaderBytes || lineBytes_ > lineLimit) return fail(StreamViolation::HeaderTooLarge);
         if (bytes[i] == '\n') {
             inHead_ = !atLineStart_;  // an empty line ends the head
+            if (!inHead_) bodyDeadline_ = Clock::now() + limits_.readTimeout;
             bodyFramed_ = bodyFramed_ || isFramingHeader(lineStart_);
             atLineStart_ = true;
             firstLine_ = false;
@@ -114,10 +105,10 @@ bool GuardedStream::account(const char* bytes, std::size_t count) {
 
 ssize_t GuardedStream::read(char* ptr, size_t size) {
     if (!inHead_ && !bodyFramed_) return 0;
-    if (begin_ == end_ && !fill()) return -1;
-    const std::size_t count = std::min(size, end_ - begin_);
-    if (!account(buffer_ + begin_, count)) return -1;
-    std::memcpy(ptr, buffer_ + begin_, count);
+    if (begin_ == buffer_.size() && !fill()) return -1;
+    const std::size_t count = std::min(size, buffer_.size() - begin_);
+    if (!account(buffer_.data() + begin_, count)) return -1;
+    std::memcpy(ptr, buffer_.data() + begin_, count);
     begin_ += count;
     return static_cast<ssize_t>(count);
 }

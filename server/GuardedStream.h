@@ -20,7 +20,7 @@ struct StreamLimits {
     std::size_t maxHeaderLine = 8 << 10;    // one line of them
     std::size_t maxBodyWireBytes = 1 << 20;  // body bytes as sent, chunk framing included
     std::chrono::milliseconds headerTimeout{10000};  // the whole head, from its first wait
-    std::chrono::milliseconds readTimeout{10000};    // the body: longest wait for the next byte
+    std::chrono::milliseconds readTimeout{10000};    // the body, in all
     std::chrono::milliseconds writeTimeout{10000};
 };
 
@@ -28,13 +28,14 @@ enum class StreamViolation { None, HeaderTimeout, HeaderTooLarge, BodyTooLarge }
 
 class GuardedStream : public httplib::Stream {
 public:
-    GuardedStream(int socket, const StreamLimits& limits);
+    // One request on `socket`, whose first bytes (`pending`) have been read already; its head must
+    // be complete by `headDeadline`.
+    GuardedStream(int socket, const StreamLimits& limits, std::string pending,
+                  std::chrono::steady_clock::time_point headDeadline);
 
-    // Waits up to `idle` for the next request's first byte; false when none came or the peer left.
-    bool waitForRequest(std::chrono::milliseconds idle);
-    // Starts the budgets of a new request: its head must be complete within the header timeout.
-    void beginRequest();
     StreamViolation violation() const { return violation_; }
+    // Bytes received but not read (the start of a pipelined next request).
+    std::string leftover() const { return buffer_.substr(begin_); }
 
     bool is_readable() const override;
     bool is_writable() const override;
@@ -51,12 +52,12 @@ private:
 
     int socket_;
     StreamLimits limits_;
-    char buffer_[4096];
-    std::size_t begin_ = 0, end_ = 0;
+    std::string buffer_;
+    std::size_t begin_ = 0;
     bool inHead_ = true, atLineStart_ = true, firstLine_ = true, bodyFramed_ = false;
     std::string lineStart_;  // the current head line's first characters, to spot the framing headers
     std::size_t headBytes_ = 0, lineBytes_ = 0, bodyBytes_ = 0;
-    std::chrono::steady_clock::time_point headDeadline_;
+    std::chrono::steady_clock::time_point headDeadline_, bodyDeadline_;
     StreamViolation violation_ = StreamViolation::None;
 };
 

@@ -45,7 +45,7 @@ void replyForException(httplib::Response& res, std::exception_ptr error) {
     }
 }
 
-ConnectionLimits connectionLimits(const HttpLimits& http) {
+ConnectionLimits connectionLimits(const HttpLimits& http, int threads) {
     ConnectionLimits limits;
     limits.stream.maxHeaderBytes = http.maxHeaderBytes;
     limits.stream.maxHeaderLine = std::min<std::size_t>(http.maxHeaderBytes, CPPHTTPLIB_HEADER_MAX_LENGTH);
@@ -58,6 +58,8 @@ ConnectionLimits connectionLimits(const HttpLimits& http) {
     limits.idleTimeout = std::chrono::seconds(http.idleTimeoutSeconds);
     limits.requestsPerConnection = static_cast<std::size_t>(http.requestsPerConnection);
     limits.listenBacklog = http.listenBacklog;
+    limits.workers = static_cast<std::size_t>(threads);
+    limits.maxRanges = static_cast<std::size_t>(http.maxRanges);
     return limits;
 }
 
@@ -89,11 +91,10 @@ const char* defaultMessage(int status) {
 
 }  // namespace
 
-HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log) : server_(connectionLimits(config.http)) {
-    const int threads = config.httpThreads;
+HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log)
+    : server_(connectionLimits(config.http, config.httpThreads)) {
     const HttpLimits http = config.http;
     const AccessPolicy access = config.access;
-    server_.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<std::size_t>(threads)); };
     server_.set_payload_max_length(http.maxBodyBytes);
     server_.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Cache-Control", "no-cache"}});
     server_.set_pre_routing_handler([&log, http, access](const httplib::Request& req, httplib::Response& res) {
@@ -107,6 +108,10 @@ HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log) : server_(co
             return httplib::Server::HandlerResponse::Handled;
         }
         return httplib::Server::HandlerResponse::Unhandled;
+    });
+    // cpp-httplib cuts a 200 answer to the requested range but leaves its status at 200.
+    server_.set_post_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+        if (res.status == 200 && req.ranges.size() == 1) res.status = 206;
     });
     server_.set_logger([&log](const httplib::Request& req, const httplib::Response& res) { log.requestFinished(req, res); });
     server_.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr error) {
@@ -140,6 +145,7 @@ void HttpServer::stop() {
     if (!listener_.joinable()) return;
     server_.stop();
     listener_.join();
+    server_.closeConnections();
 }
 
 }  // namespace lenslab

@@ -21,7 +21,7 @@ struct HttpLimits {
     std::size_t maxBodyBytes = 1 << 20;     // any transfer encoding: 413 past it
     int maxRanges = 1;                      // byte ranges in one Range header: 416 past it
     int headerTimeoutSeconds = 10;          // the whole request head must arrive within this: 408
-    int readTimeoutSeconds = 10;            // longest silence inside a body
+    int readTimeoutSeconds = 10;            // a body must arrive within this, in all
     int idleTimeoutSeconds = 2;             // keep-alive wait for the next request
     int requestsPerConnection = 100;        // then the connection is closed
     int listenBacklog = 128;

@@ -3,6 +3,7 @@
 //      parameter combinations (first drawings, then cache hits); requests/s, p50/p99, errors;
 //   2. the same with every request distinct (every one drawn);
 //   3. a full render queue: submissions past --max-queue get 429 while the API stays responsive.
+//   Each diagram and submission run is made twice: alone, and with 40 slowloris connections open.
 // usage: server_load [LENSLAB_BINARY]   (prints a Markdown summary)
 #include <httplib.h>
 
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -21,6 +23,7 @@
 #include <vector>
 
 #include "ServerUnderTest.h"
+#include "SlowClients.h"
 
 namespace {
 
@@ -33,9 +36,18 @@ struct Sample {
     bool ok;
 };
 
-// `clients` threads, each `perClient` GETs of urlFor(client, i); returns the summary row.
-std::string loadRow(const std::string& label, int port, int clients, int perClient,
-                    const std::function<std::string(int, int)>& urlFor) {
+using Send = std::function<httplib::Result(httplib::Client&, int, int)>;
+using Accept = std::function<bool(const httplib::Response&)>;
+
+bool isPngReply(const httplib::Response& r) { return r.status == 200 && r.body.size() > 8 && r.body.compare(1, 3, "PNG") == 0; }
+
+Send getOf(const std::function<std::string(int, int)>& urlFor) {
+    return [urlFor](httplib::Client& client, int c, int i) { return client.Get(urlFor(c, i)); };
+}
+
+// `clients` threads, each `perClient` requests send(client, c, i); returns the summary row.
+std::string loadRow(const std::string& label, int port, int clients, int perClient, const Send& send,
+                    const Accept& accept = isPngReply) {
     std::vector<std::vector<Sample>> samples(clients);
     const auto start = Clock::now();
     std::vector<std::thread> threads;
@@ -47,9 +59,9 @@ std::string loadRow(const std::string& label, int port, int clients, int perClie
             client.set_read_timeout(30);
             for (int i = 0; i < perClient; ++i) {
                 const auto t0 = Clock::now();
-                auto r = client.Get(urlFor(c, i));
+                auto r = send(client, c, i);
                 const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-                const bool ok = r && r->status == 200 && r->body.size() > 8 && r->body.compare(1, 3, "PNG") == 0;
+                const bool ok = r && accept(*r);
                 samples[c].push_back({ms, ok});
             }
         });
@@ -132,21 +144,48 @@ int main(int argc, char** argv) {
     std::cout << "## Diagrams (GET /api/lenses/{id}/diagram.png, 800x400)\n\n"
               << "| workload | clients | requests | requests/s | p50 ms | p99 ms | max ms | errors |\n"
               << "|---|---|---|---|---|---|---|---|\n";
-    {
-        const ServerUnderTest s = startServer(binary, {});
-        const std::vector<std::string> lenses = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
-        const std::vector<std::string> modes = {"exact", "thick", "overlay"};
-        const std::vector<std::string> fstops = {"", "&fstop=5.6"};
-        const auto mixed = [&](int c, int i) {
-            const int k = (c * 7 + i) % 24;
-            return "/api/lenses/" + lenses[k % 4] + "/diagram.png?size=800x400&mode=" + modes[(k / 4) % 3] + fstops[k / 12];
+    const std::vector<std::string> lenses = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
+    const std::vector<std::string> modes = {"exact", "thick", "overlay"};
+    const std::vector<std::string> fstops = {"", "&fstop=5.6"};
+    const auto mixed = [&](int c, int i) {
+        const int k = (c * 7 + i) % 24;
+        return "/api/lenses/" + lenses[k % 4] + "/diagram.png?size=800x400&mode=" + modes[(k / 4) % 3] + fstops[k / 12];
+    };
+    // Each run its own focus range, so that every request of it is drawn.
+    const auto distinct = [](int run) {
+        return [run](int c, int i) {
+            return "/api/lenses/dgauss.50mm/diagram.png?size=800x400&mode=overlay&focus=" +
+                   std::to_string(1000 + run * 10000 + c * 100 + i);
         };
-        std::cout << loadRow("24 parameter sets, repeated (cache hits after the first drawing)", s.port, 16, 250, mixed) << "\n";
-        const auto distinct = [&](int c, int i) {
-            return "/api/lenses/dgauss.50mm/diagram.png?size=800x400&mode=overlay&focus=" + std::to_string(1000 + c * 100 + i);
-        };
-        std::cout << loadRow("every request distinct (each one drawn)", s.port, 16, 10, distinct) << "\n";
-        std::cout << "\nServer after the runs: `" << httplib::Client("127.0.0.1", s.port).Get("/api/health")->body << "`\n";
+    };
+    const Send submitRender = [](httplib::Client& client, int, int) {
+        return client.Post("/api/renders", json{{"lens", "dgauss.50mm"}, {"spp", 4}, {"width", 64}, {"height", 48}}.dump(),
+                           "application/json");
+    };
+    const Accept acceptedOrQueueFull = [](const httplib::Response& r) { return r.status == 202 || r.status == 429; };
+    for (const int slow : {0, 40}) {
+        const ServerUnderTest s = startServer(binary, {"--max-queue", "8"});
+        std::unique_ptr<SlowClients> slowClients;
+        if (slow > 0) {
+            slowClients = std::make_unique<SlowClients>(s.port, slow);
+            std::this_thread::sleep_for(std::chrono::seconds(2));
+        }
+        const std::string with = slow > 0 ? ", " + std::to_string(slow) + " slowloris connections present" : "";
+        std::cout << loadRow("24 parameter sets, repeated (cache hits after the first drawing)" + with, s.port, 16, 250,
+                             getOf(mixed)) << "\n";
+        std::cout << loadRow("every request distinct (each one drawn)" + with, s.port, 16, 10, getOf(distinct(slow)))
+                  << "\n";
+        std::cout << loadRow("render submissions, 64x48 (202 accepted or 429 queue full)" + with, s.port, 16, 20,
+                             submitRender, acceptedOrQueueFull) << "\n";
+        if (slowClients)
+            std::cout << "\nSlow connections cut off by the header deadline during the runs: " << slowClients->reconnects()
+                      << "\n\n";
+        slowClients.reset();
+        std::cout << "Server after the runs" << with << ": `" << httplib::Client("127.0.0.1", s.port).Get("/api/health")->body
+                  << "`, RSS " << residentMiB(s.pid) << " MiB\n\n";
+        if (slow == 0)
+            std::cout << "| workload | clients | requests | requests/s | p50 ms | p99 ms | max ms | errors |\n"
+                      << "|---|---|---|---|---|---|---|---|\n";
         stopServer(s);
     }
     std::cout << "\n## Full render queue\n\n" << fullQueueReport(binary);

@@ -26,9 +26,9 @@ DiagramOptions missOptions(int thread, int i) {
     DiagramOptions options;
     options.backend = DiagramBackendKind::OSMesa;
     options.width = 320 + 16 * thread;
-    options.height = 160 + 8 * i;
+    options.height = 200 + 8 * i;
     options.mode = modes[(thread + i) % 3];
-    options.fstop = 2.0 + thread + 0.5 * i;
+    options.fstop = 2.8 + thread + 0.5 * i;
     options.focusDistance = 1000.0 + 250.0 * (thread * kEach + i);
     return options;
 }
