@@ -164,11 +164,12 @@ int main(int argc, char** argv) {
     };
     const Accept acceptedOrQueueFull = [](const httplib::Response& r) { return r.status == 202 || r.status == 429; };
     for (const int slow : {0, 40}) {
-        const ServerUnderTest s = startServer(binary, {"--max-queue", "8"});
+        // A 2 s header deadline with slow clients, so that they are cut off (and come back) during the runs.
+        const ServerUnderTest s = startServer(binary, {"--max-queue", "8", "--header-timeout", slow > 0 ? "2" : "10"});
         std::unique_ptr<SlowClients> slowClients;
         if (slow > 0) {
             slowClients = std::make_unique<SlowClients>(s.port, slow);
-            std::this_thread::sleep_for(std::chrono::seconds(2));
+            std::this_thread::sleep_for(std::chrono::seconds(3));
         }
         const std::string with = slow > 0 ? ", " + std::to_string(slow) + " slowloris connections present" : "";
         std::cout << loadRow("24 parameter sets, repeated (cache hits after the first drawing)" + with, s.port, 16, 250,
