@@ -46,8 +46,8 @@ TEST(DiagramConcurrency, ContextsDoNotMultiplyWithThreads) {
     for (int t = 0; t < 12; ++t)
         threads.emplace_back([&, t] {
             DiagramOptions options;
-            options.width = 200 + 8 * t;
-            options.height = 100;
+            options.width = 320 + 8 * t;
+            options.height = 200;
             options.backend = DiagramBackendKind::OSMesa;
             options.focusDistance = 1000.0 + 100.0 * t;
             drawLensDiagramPng(lens, options);
