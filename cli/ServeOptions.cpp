@@ -68,7 +68,7 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     p.option("--read-timeout", "S", "longest silence inside a request body, seconds (default 10)");
     p.option("--idle-timeout", "S", "keep-alive wait for the next request, seconds (default 2)");
     p.option("--keep-alive-requests", "N", "requests per connection before it is closed (default 100)");
-    p.option("--http-threads", "N", "threads answering requests (default 32)");
+    p.option("--http-threads", "N", "requests answered at once (default 32)");
     p.option("--keep-days", "D", "finished renders are deleted after D days (default 30; 0: no age limit)");
     p.option("--keep-gb", "GB", "finished renders' files kept at most, oldest deleted first (default 2; 0: no limit)");
     p.option("--token-file", "FILE", "API token for requests that write or spend CPU; made on first start "

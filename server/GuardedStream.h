@@ -1,12 +1,13 @@
 #pragma once
-// The connection cpp-httplib reads requests from, with the limits its own socket stream lacks
-// (0.11.4): a deadline for the whole request head (a client sending one header line every few
-// seconds would otherwise hold a worker thread for ever: slowloris), a cap on the head's total
-// size (it only caps single lines), and a cap on the body bytes that also holds for chunked
-// bodies (it only checks Content-Length). A read past a limit fails, and violation() says which
-// limit it was, so the answer can be 408, 413 or 431 rather than a plain 400. A request with
-// neither Content-Length nor Transfer-Encoding has an empty body (RFC 9112 6.3): reading it ends at
-// once instead of waiting for the client to close (an empty POST used to wait the read timeout).
+// The connection cpp-httplib reads one request from, with the limits its own socket stream lacks
+// (0.11.4): a deadline for the whole request head (GuardedServer hands a connection to a worker
+// once its head is complete or late, so a late head is cut off here with 408), a cap on the
+// head's total size (cpp-httplib only caps single lines), a cap on the body bytes that also holds
+// for chunked bodies (it only checks Content-Length) and a deadline for the whole body. A read past
+// a limit fails, and violation() says which limit it was, so the answer can be 408, 413 or 431
+// rather than a plain 400. A request with neither Content-Length nor Transfer-Encoding has an
+// empty body (RFC 9112 6.3): reading it ends at once instead of waiting for the client to close
+// (an empty POST used to wait the read timeout).
 #include <httplib.h>
 
 #include <chrono>

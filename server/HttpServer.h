@@ -1,7 +1,7 @@
 #pragma once
-// The HTTP front: cpp-httplib behind GuardedServer with the service's limits (threads, header and
-// body budgets, timeouts, ranges), every failure answered as JSON {"error": ...}, the access log,
-// and a listening thread.
+// The HTTP front: cpp-httplib behind GuardedServer with the service's limits (workers, header and
+// body budgets, timeouts, ranges), the checks on each request's head (framing, encodings, ranges,
+// access), every failure answered as JSON {"error": ...}, the access log, and a listening thread.
 #include <httplib.h>
 
 #include <string>
