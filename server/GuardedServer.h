@@ -26,6 +26,7 @@ struct ConnectionLimits {
     std::size_t workers = 32;                     // requests answered at once
     std::size_t maxRanges = 1;                    // byte ranges one request may ask for
     int listenBacklog = 128;
+    std::chrono::seconds trimAfterIdle{10};       // no new connection this long: free memory is returned
 };
 
 class GuardedServer : public httplib::Server {
