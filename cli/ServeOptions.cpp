@@ -68,6 +68,7 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     p.option("--read-timeout", "S", "longest silence inside a request body, seconds (default 10)");
     p.option("--idle-timeout", "S", "keep-alive wait for the next request, seconds (default 2)");
     p.option("--keep-alive-requests", "N", "requests per connection before it is closed (default 100)");
+    p.option("--max-connections", "N", "connections waiting for a request at most; the longest waiting are dropped (default 512)");
     p.option("--http-threads", "N", "requests answered at once (default 32)");
     p.option("--keep-days", "D", "finished renders are deleted after D days (default 30; 0: no age limit)");
     p.option("--keep-gb", "GB", "finished renders' files kept at most, oldest deleted first (default 2; 0: no limit)");
@@ -104,6 +105,7 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     c.http.readTimeoutSeconds = boundedInteger(p, "--read-timeout", c.http.readTimeoutSeconds, 1, 600);
     c.http.idleTimeoutSeconds = boundedInteger(p, "--idle-timeout", c.http.idleTimeoutSeconds, 1, 600);
     c.http.requestsPerConnection = boundedInteger(p, "--keep-alive-requests", c.http.requestsPerConnection, 1, 100000);
+    c.http.maxConnections = boundedInteger(p, "--max-connections", c.http.maxConnections, 4, 100000);
     c.httpThreads = boundedInteger(p, "--http-threads", c.httpThreads, 2, 256);
     c.retention.keepDays = boundedNumber(p, "--keep-days", c.retention.keepDays, 0, 36500);
     c.retention.keepBytes = static_cast<std::uintmax_t>(

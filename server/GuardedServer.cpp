@@ -29,7 +29,7 @@ public:
 };
 
 HeadWaiter::Limits waiterLimits(const ConnectionLimits& limits) {
-    return {limits.stream.maxHeaderBytes, limits.stream.headerTimeout, limits.idleTimeout};
+    return {limits.stream.maxHeaderBytes, limits.stream.headerTimeout, limits.idleTimeout, limits.maxWaiting};
 }
 
 void closeSocket(int socket) {

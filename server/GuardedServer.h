@@ -25,6 +25,7 @@ struct ConnectionLimits {
     std::size_t requestsPerConnection = 100;
     std::size_t workers = 32;                     // requests answered at once
     std::size_t maxRanges = 1;                    // byte ranges one request may ask for
+    std::size_t maxWaiting = 512;                 // connections between requests or in their head
     int listenBacklog = 128;
     std::chrono::seconds trimAfterIdle{10};       // no new connection this long: free memory is returned
 };

@@ -40,7 +40,8 @@ HeadWaiter::~HeadWaiter() {
 }
 
 void HeadWaiter::add(WaitingConnection connection) {
-    Entry entry{std::move(connection), Clock::now() + limits_.idleTimeout, false};
+    const auto now = Clock::now();
+    Entry entry{std::move(connection), now, now + limits_.idleTimeout, false};
     {
         std::lock_guard<std::mutex> lock(mutex_);
         if (stopping_) {
@@ -87,6 +88,14 @@ bool HeadWaiter::receive(Entry& entry) {
     return true;
 }
 
+void HeadWaiter::dropLongestWaiting(std::vector<Entry>& waiting) const {
+    if (waiting.size() <= limits_.maxWaiting) return;
+    std::sort(waiting.begin(), waiting.end(), [](const Entry& a, const Entry& b) { return a.since < b.since; });
+    const std::size_t excess = waiting.size() - limits_.maxWaiting;
+    for (std::size_t i = 0; i < excess; ++i) closeConnection(waiting[i].connection.socket);
+    waiting.erase(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(excess));
+}
+
 void HeadWaiter::run() {
     std::vector<Entry> waiting;
     for (;;) {
@@ -107,6 +116,7 @@ void HeadWaiter::run() {
             }
             incoming_.clear();
         }
+        dropLongestWaiting(waiting);
         const auto now = Clock::now();
         auto wait = std::chrono::milliseconds(1000);
         std::vector<pollfd> polled{{wakeRead_, POLLIN, 0}};

@@ -3,6 +3,8 @@
 // thread is tied up by a client that has not finished sending one: a worker gets a connection
 // only once its head is complete (or too large, or late: the worker then answers 431 or 408).
 // Kept-alive connections come back here between requests and are closed after the idle timeout.
+// Past maxWaiting connections the ones waiting longest are dropped first: slow clients go before
+// a new client whose head is on its way.
 #include <chrono>
 #include <cstddef>
 #include <functional>
@@ -26,6 +28,7 @@ public:
     struct Limits {
         std::size_t maxHeaderBytes;
         std::chrono::milliseconds headerTimeout, idleTimeout;
+        std::size_t maxWaiting;
     };
     HeadWaiter(const Limits& limits, Ready ready);
     ~HeadWaiter();  // stop()
@@ -38,12 +41,14 @@ public:
 private:
     struct Entry {
         WaitingConnection connection;
+        std::chrono::steady_clock::time_point since;  // when it began waiting
         std::chrono::steady_clock::time_point idleDeadline;
         bool started = false;  // its first byte has come: the head deadline runs
     };
     void run();
     // Reads what arrived; true when the entry is done waiting (handed on or closed).
     bool receive(Entry& entry);
+    void dropLongestWaiting(std::vector<Entry>& waiting) const;
 
     Limits limits_;
     Ready ready_;

@@ -60,6 +60,7 @@ ConnectionLimits connectionLimits(const HttpLimits& http, int threads) {
     limits.listenBacklog = http.listenBacklog;
     limits.workers = static_cast<std::size_t>(threads);
     limits.maxRanges = static_cast<std::size_t>(http.maxRanges);
+    limits.maxWaiting = static_cast<std::size_t>(http.maxConnections);
     return limits;
 }
 

@@ -24,6 +24,7 @@ struct HttpLimits {
     int readTimeoutSeconds = 10;            // a body must arrive within this, in all
     int idleTimeoutSeconds = 2;             // keep-alive wait for the next request
     int requestsPerConnection = 100;        // then the connection is closed
+    int maxConnections = 512;               // open connections not being answered; the longest waiting go first
     int listenBacklog = 128;
 };
 
