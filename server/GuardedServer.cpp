@@ -11,6 +11,7 @@ namespace lenslab {
 namespace {
 
 thread_local const GuardedStream* streamOnThisThread = nullptr;
+thread_local bool closeOnThisThread = false;
 
 void exclusiveSocketOptions(socket_t socket) {
     const int yes = 1;
@@ -64,6 +65,8 @@ void GuardedServer::closeConnections() {
     workers_.shutdown();
 }
 
+void GuardedServer::closeAfterThisRequest() { closeOnThisThread = true; }
+
 StreamViolation GuardedServer::violationOnThisThread() {
     return streamOnThisThread ? streamOnThisThread->violation() : StreamViolation::None;
 }
@@ -80,6 +83,7 @@ bool GuardedServer::process_and_close_socket(socket_t socket) {
 void GuardedServer::answer(WaitingConnection connection) {
     GuardedStream stream(connection.socket, limits_.stream, std::move(connection.pending), connection.headDeadline);
     streamOnThisThread = &stream;
+    closeOnThisThread = false;
     const bool last = connection.served + 1 >= limits_.requestsPerConnection || !is_running();
     bool closed = false;
     const bool answered = process_request(stream, last, closed, [this](httplib::Request& req) {
@@ -88,7 +92,7 @@ void GuardedServer::answer(WaitingConnection connection) {
         if (req.ranges.size() > limits_.maxRanges) req.ranges.clear();
     });
     streamOnThisThread = nullptr;
-    if (!answered || closed || last || stream.violation() != StreamViolation::None) {
+    if (!answered || closed || last || closeOnThisThread || stream.violation() != StreamViolation::None) {
         closeSocket(connection.socket);
         return;
     }

@@ -44,6 +44,8 @@ public:
 
     // The limit the request being answered on this thread broke, if any (for its error answer).
     static StreamViolation violationOnThisThread();
+    // Closes the connection once the request being answered on this thread has its answer.
+    static void closeAfterThisRequest();
 
 private:
     bool process_and_close_socket(socket_t socket) override;  // on the listening thread: hands it on

@@ -64,14 +64,17 @@ ConnectionLimits connectionLimits(const HttpLimits& http, int threads) {
     return limits;
 }
 
+void replyBodyTooLarge(httplib::Response& res, const HttpLimits& http) {
+    replyError(res, 413, "request body too large (at most " + std::to_string(http.maxBodyBytes) + " bytes)");
+}
+
 // The answer for a request the connection's stream cut off, by the limit it broke.
 void replyForViolation(httplib::Response& res, StreamViolation violation, const HttpLimits& http) {
     switch (violation) {
         case StreamViolation::HeaderTooLarge:
             return replyError(res, 431, "request headers too large (at most " + std::to_string(http.maxHeaderBytes) +
                                             " bytes in all, " + std::to_string(CPPHTTPLIB_HEADER_MAX_LENGTH) + " per line)");
-        case StreamViolation::BodyTooLarge:
-            return replyError(res, 413, "request body too large (at most " + std::to_string(http.maxBodyBytes) + " bytes)");
+        case StreamViolation::BodyTooLarge: return replyBodyTooLarge(res, http);
         case StreamViolation::HeaderTimeout:
             return replyError(res, 408, "the request head did not arrive within " +
                                             std::to_string(http.headerTimeoutSeconds) + " s");
@@ -106,6 +109,7 @@ HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log)
             if (refusal->status() == 401) res.set_header("WWW-Authenticate", "Bearer");
             replyError(res, refusal->status(), refusal->what());
             res.set_header("Connection", "close");
+            GuardedServer::closeAfterThisRequest();  // its body, if any, was not read
             return httplib::Server::HandlerResponse::Handled;
         }
         return httplib::Server::HandlerResponse::Unhandled;
@@ -121,7 +125,7 @@ HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log)
     server_.set_error_handler([http](const httplib::Request&, httplib::Response& res) {
         const StreamViolation violation = GuardedServer::violationOnThisThread();
         if (violation != StreamViolation::None) return replyForViolation(res, violation, http);
-        if (res.status == 413) return replyError(res, 413, "request body too large (at most " + std::to_string(http.maxBodyBytes) + " bytes)");
+        if (res.status == 413) return replyBodyTooLarge(res, http);
         if (res.body.empty()) replyError(res, res.status, defaultMessage(res.status));
     });
 }

@@ -204,3 +204,15 @@ TEST_F(ServerLimits, PastTheConnectionLimitTheLongestWaitingAreDropped) {
     EXPECT_EQ(slow.back()->readReply(0.5), "");
     EXPECT_GE(secondsSince(stillOpen), 0.45);
 }
+
+TEST_F(ServerLimits, ARequestRefusedBeforeItsBodyClosesTheConnection) {
+    start();
+    RawConnection connection(server_->port());
+    // Were the connection kept, the unread body would be taken for the next request.
+    connection.send("POST /api/lenses HTTP/1.1\r\nHost: x\r\nContent-Type: application/x-www-form-urlencoded\r\n"
+                    "Content-Length: 31\r\n\r\nGET /api/health HTTP/1.1\r\n\r\n\r\n");
+    EXPECT_EQ(statusOf(connection.readReply(3)), 415);
+    const auto asked = Clock::now();
+    EXPECT_EQ(connection.readReply(3), "");
+    EXPECT_LT(secondsSince(asked), 1.0);
+}
