@@ -17,7 +17,9 @@ DataFolderLock::DataFolderLock(const std::string& dataDir) {
     const std::string path = (std::filesystem::path(dataDir) / "lenslab.lock").string();
     fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ < 0)
-        throw std::runtime_error("cannot open the lock file in the data folder " + dataDir + ": " + std::strerror(errno));
+        throw std::runtime_error("cannot write in the data folder " + dataDir + " (" + std::strerror(errno) +
+                                 "); lenslab serve keeps its database and files there: make it writable or "
+                                 "choose another with --data");
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
         const int reason = errno;
         ::close(fd_);
