@@ -182,7 +182,7 @@ int main(int argc, char** argv) {
             std::cout << "\nSlow connections cut off by the header deadline during the runs: " << slowClients->reconnects()
                       << "\n\n";
         slowClients.reset();
-        std::cout << "Server after the runs" << with << ": `" << httplib::Client("127.0.0.1", s.port).Get("/api/health")->body
+        std::cout << "\nServer after the runs" << with << ": `" << httplib::Client("127.0.0.1", s.port).Get("/api/health")->body
                   << "`, RSS " << residentMiB(s.pid) << " MiB\n\n";
         if (slow == 0)
             std::cout << "| workload | clients | requests | requests/s | p50 ms | p99 ms | max ms | errors |\n"
