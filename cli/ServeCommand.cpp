@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "AccessControl.h"
 #include "Commands.h"
 #include "EngineRenderer.h"
 #include "MpiRenderer.h"
@@ -13,7 +14,23 @@
 
 namespace lenslab {
 
-int serveUntilStopped(const ServiceConfig& config, std::unique_ptr<Renderer> renderer) {
+namespace {
+
+// The token from --token-file, made and printed (this once only) when the file is new.
+std::string loadToken(const std::string& tokenFile) {
+    if (tokenFile.empty()) return "";
+    bool created = false;
+    const std::string token = loadOrCreateToken(tokenFile, created);
+    if (created)
+        std::cout << "lenslab serve: new API token (kept in " << tokenFile
+                  << "; send it as 'Authorization: Bearer TOKEN'): " << token << std::endl;
+    return token;
+}
+
+}  // namespace
+
+int serveUntilStopped(ServiceConfig config, std::unique_ptr<Renderer> renderer) {
+    config.access.token = loadToken(config.access.tokenFile);
     // A client that hangs up mid-response must not end the process.
     ::signal(SIGPIPE, SIG_IGN);
     // SIGINT and SIGTERM are taken by sigwait below; blocked before any thread starts so that no

@@ -8,7 +8,8 @@
 
 namespace lenslab {
 
-// Prints "lenslab serve: listening on http://HOST:PORT/" once it accepts requests.
-int serveUntilStopped(const ServiceConfig& config, std::unique_ptr<Renderer> renderer);
+// Loads (or makes and prints) the API token of config.access.tokenFile, then prints
+// "lenslab serve: listening on http://HOST:PORT/" once it accepts requests.
+int serveUntilStopped(ServiceConfig config, std::unique_ptr<Renderer> renderer);
 
 }  // namespace lenslab

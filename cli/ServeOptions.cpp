@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "AccessControl.h"
 #include "ArgParser.h"
 
 #ifndef LENSLAB_SOURCE_DIR
@@ -31,6 +32,14 @@ int boundedInteger(const ArgParser& p, const std::string& name, int fallback, lo
     return static_cast<int>(*value);
 }
 
+double boundedNumber(const ArgParser& p, const std::string& name, double fallback, double min, double max) {
+    const auto value = p.number(name);
+    if (!value) return fallback;
+    if (!(*value >= min && *value <= max))
+        throw UsageError("serve: " + name + " must lie between " + std::to_string(min) + " and " + std::to_string(max));
+    return *value;
+}
+
 }  // namespace
 
 std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& args) {
@@ -52,8 +61,22 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     p.option("--max-height", "PX", "largest render height (default 1920)");
     p.option("--max-spp", "N", "most samples per pixel (default 1024)");
     p.option("--render-threads", "N", "threads per render (default 0: all cores)");
-    p.option("--max-body", "BYTES", "largest request body (default 1048576)");
-    p.option("--http-threads", "N", "threads answering requests (default 32)");
+    p.option("--max-body", "BYTES", "largest request body, any transfer encoding (default 1048576)");
+    p.option("--max-header-bytes", "BYTES", "request line and headers together at most (default 16384)");
+    p.option("--max-ranges", "N", "byte ranges in one Range header at most (default 1)");
+    p.option("--header-timeout", "S", "seconds a request's whole head may take to arrive (default 10)");
+    p.option("--read-timeout", "S", "longest silence inside a request body, seconds (default 10)");
+    p.option("--idle-timeout", "S", "keep-alive wait for the next request, seconds (default 2)");
+    p.option("--keep-alive-requests", "N", "requests per connection before it is closed (default 100)");
+    p.option("--max-connections", "N", "connections waiting for a request at most; the longest waiting are dropped (default 512)");
+    p.option("--http-threads", "N", "requests answered at once (default 32)");
+    p.option("--keep-days", "D", "finished renders are deleted after D days (default 30; 0: no age limit)");
+    p.option("--keep-gb", "GB", "finished renders' files kept at most, oldest deleted first (default 2; 0: no limit)");
+    p.option("--token-file", "FILE", "API token for requests that write or spend CPU; made on first start "
+             "(needed beyond loopback)");
+    p.flag("--no-auth", "serve beyond loopback without a token (anyone reaching the port may write)");
+    p.flag("--private-reads", "with a token: reads need it too");
+    p.option("--allow-origin", "ORIGINS", "comma-separated origins whose pages may call the API (default: none)");
     p.option("--mpi-hostfile", "FILE", "run each render through mpirun over these hosts (docs/scaling.md)");
     p.option("--mpi-np", "N", "with --mpi-hostfile: MPI processes per render (default 2)");
     if (!p.parse(args)) {
@@ -75,8 +98,28 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     c.limits.maxHeight = boundedInteger(p, "--max-height", c.limits.maxHeight, 8, 16384);
     c.limits.maxSpp = boundedInteger(p, "--max-spp", c.limits.maxSpp, 1, 1 << 16);
     c.limits.threadsPerRender = boundedInteger(p, "--render-threads", c.limits.threadsPerRender, 0, 256);
-    c.maxBodyBytes = static_cast<std::size_t>(boundedInteger(p, "--max-body", static_cast<int>(c.maxBodyBytes), 1024, 64 << 20));
+    c.http.maxBodyBytes = static_cast<std::size_t>(boundedInteger(p, "--max-body", static_cast<int>(c.http.maxBodyBytes), 1024, 64 << 20));
+    c.http.maxHeaderBytes = static_cast<std::size_t>(boundedInteger(p, "--max-header-bytes", static_cast<int>(c.http.maxHeaderBytes), 1024, 1 << 20));
+    c.http.maxRanges = boundedInteger(p, "--max-ranges", c.http.maxRanges, 1, 16);
+    c.http.headerTimeoutSeconds = boundedInteger(p, "--header-timeout", c.http.headerTimeoutSeconds, 1, 600);
+    c.http.readTimeoutSeconds = boundedInteger(p, "--read-timeout", c.http.readTimeoutSeconds, 1, 600);
+    c.http.idleTimeoutSeconds = boundedInteger(p, "--idle-timeout", c.http.idleTimeoutSeconds, 1, 600);
+    c.http.requestsPerConnection = boundedInteger(p, "--keep-alive-requests", c.http.requestsPerConnection, 1, 100000);
+    c.http.maxConnections = boundedInteger(p, "--max-connections", c.http.maxConnections, 4, 100000);
     c.httpThreads = boundedInteger(p, "--http-threads", c.httpThreads, 2, 256);
+    c.retention.keepDays = boundedNumber(p, "--keep-days", c.retention.keepDays, 0, 36500);
+    c.retention.keepBytes = static_cast<std::uintmax_t>(
+        boundedNumber(p, "--keep-gb", static_cast<double>(c.retention.keepBytes) / (1 << 30), 0, 1e6) * (1 << 30));
+    c.access.tokenFile = p.get("--token-file");
+    c.access.privateReads = p.has("--private-reads");
+    c.access.allowedOrigins = p.get("--allow-origin");
+    if (p.has("--no-auth") && !c.access.tokenFile.empty())
+        throw UsageError("serve: --no-auth and --token-file contradict each other");
+    if (c.access.privateReads && c.access.tokenFile.empty())
+        throw UsageError("serve: --private-reads needs --token-file");
+    if (!isLoopbackHost(c.host) && c.access.tokenFile.empty() && !p.has("--no-auth"))
+        throw UsageError("serve: listening on " + c.host + " lets other hosts reach the service; give "
+                         "--token-file FILE (a token is made there on first start) or, to allow anyone, --no-auth");
     c.mpiHostfile = p.get("--mpi-hostfile");
     c.mpiProcesses = boundedInteger(p, "--mpi-np", c.mpiProcesses, 1, 100000);
     if (!c.mpiHostfile.empty() && !fs::is_regular_file(c.mpiHostfile))

@@ -29,6 +29,9 @@ LensTableError::LensTableError(const std::string& file, int line, const std::str
 
 namespace {
 
+const std::string kUtf8ByteOrderMark = "\xef\xbb\xbf";
+constexpr std::size_t kMaxCommentBytes = 4096;
+
 const char* const kColumnNames[4] = {"radius", "gap", "N", "diameter"};
 
 std::vector<std::string> splitFields(const std::string& s) {
@@ -100,8 +103,11 @@ LensTable parseLensTable(const std::string& text, const std::string& name,
     std::istringstream in(text);
     std::string raw;
     int lineNo = 0;
+    std::size_t commentBytes = 0;
     while (std::getline(in, raw)) {
         ++lineNo;
+        // Editors on Windows start UTF-8 files with a byte order mark; it is not part of the table.
+        if (lineNo == 1 && raw.rfind(kUtf8ByteOrderMark, 0) == 0) raw.erase(0, kUtf8ByteOrderMark.size());
         if (!raw.empty() && raw.back() == '\r') raw.pop_back();
         std::string content = raw;
         if (auto hash = raw.find('#'); hash != std::string::npos) {
@@ -111,6 +117,11 @@ LensTable parseLensTable(const std::string& text, const std::string& name,
                 auto b = comment.find_first_not_of(" \t");
                 auto e = comment.find_last_not_of(" \t\"");
                 table.comments.push_back(b == std::string::npos ? "" : comment.substr(b, e - b + 1));
+                // The description travels with every lens listing: bounded, so one table cannot bloat them all.
+                commentBytes += table.comments.back().size();
+                if (commentBytes > kMaxCommentBytes)
+                    throw LensTableError(name, lineNo, "the comment lines before the table are longer than " +
+                                                           std::to_string(kMaxCommentBytes) + " bytes");
             }
         }
         if (content.find_first_not_of(" \t\f\v") == std::string::npos) continue;

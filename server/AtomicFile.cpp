@@ -1,5 +1,7 @@
 #include "AtomicFile.h"
 
+#include "StorageError.h"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -17,8 +19,8 @@ namespace {
 
 const char* kTemporaryMarker = ".partial-";
 
-std::runtime_error fileError(const std::string& what, const std::string& path) {
-    return std::runtime_error(what + " " + path + ": " + std::strerror(errno));
+StorageError fileError(const std::string& what, const std::string& path) {
+    return StorageError(storageErrorKind(errno), what + " " + path + ": " + std::strerror(errno));
 }
 
 void writeAll(int fd, const char* data, std::size_t size, const std::string& path) {
@@ -43,7 +45,11 @@ void syncFolder(const std::filesystem::path& folder) {
 void writeBytesAtomically(const std::string& path, const char* data, std::size_t size) {
     static std::atomic<unsigned> counter{0};
     const std::filesystem::path target(path);
-    std::filesystem::create_directories(target.parent_path());
+    std::error_code folderError;
+    std::filesystem::create_directories(target.parent_path(), folderError);
+    if (folderError)
+        throw StorageError(storageErrorKind(folderError.value()),
+                           "cannot create " + target.parent_path().string() + ": " + folderError.message());
     const std::string temporary = path + kTemporaryMarker + std::to_string(::getpid()) + "-" + std::to_string(counter++);
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) throw fileError("cannot create", temporary);
@@ -57,7 +63,7 @@ void writeBytesAtomically(const std::string& path, const char* data, std::size_t
     }
     ::close(fd);
     if (::rename(temporary.c_str(), path.c_str()) != 0) {
-        const std::runtime_error error = fileError("cannot rename onto", path);
+        const StorageError error = fileError("cannot rename onto", path);
         ::unlink(temporary.c_str());
         throw error;
     }

@@ -7,6 +7,7 @@
 
 namespace lenslab {
 
+// StorageError when the folder is full, read-only or fails.
 void writeFileAtomically(const std::string& path, const std::string& bytes);
 void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes);
 

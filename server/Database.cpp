@@ -2,6 +2,8 @@
 
 #include <memory>
 
+#include "StorageError.h"
+
 namespace lenslab {
 
 namespace {
@@ -17,6 +19,20 @@ void bind(sqlite3_stmt* statement, int index, const SqlValue& value) {
     else {
         const std::string& s = std::get<std::string>(value);
         sqlite3_bind_text(statement, index, s.data(), static_cast<int>(s.size()), SQLITE_TRANSIENT);
+    }
+}
+
+// A step that failed because of the disk is the operator's to fix (StorageError: 507/503 with a
+// message for the user); anything else is a DatabaseError.
+[[noreturn]] void throwStepError(sqlite3* connection) {
+    const std::string detail = "database: " + std::string(sqlite3_errmsg(connection));
+    switch (sqlite3_errcode(connection) & 0xff) {
+        case SQLITE_FULL: throw StorageError(StorageError::Kind::Full, detail);
+        case SQLITE_READONLY:
+        case SQLITE_PERM:
+        case SQLITE_CANTOPEN: throw StorageError(StorageError::Kind::ReadOnly, detail);
+        case SQLITE_IOERR: throw StorageError(StorageError::Kind::Failed, detail);
+        default: throw DatabaseError(detail);
     }
 }
 
@@ -49,6 +65,9 @@ Database::Database(const std::string& path) {
     sqlite3_busy_timeout(connection_, 5000);
     run("PRAGMA journal_mode=WAL", {}, [](const SqlRow&) {});
     run("PRAGMA synchronous=FULL");
+    // Without a limit the write-ahead log keeps its largest size after each checkpoint (4 MB after
+    // a few hundred renders); with one it is truncated back.
+    run("PRAGMA journal_size_limit=1048576", {}, [](const SqlRow&) {});
 }
 
 Database::~Database() { sqlite3_close(connection_); }
@@ -64,7 +83,7 @@ int Database::run(const std::string& sql, const std::vector<SqlValue>& parameter
     for (;;) {
         const int step = sqlite3_step(raw);
         if (step == SQLITE_DONE) break;
-        if (step != SQLITE_ROW) throw DatabaseError("database: " + std::string(sqlite3_errmsg(connection_)));
+        if (step != SQLITE_ROW) throwStepError(connection_);
         if (onRow) onRow(SqlRow(raw));
     }
     return sqlite3_changes(connection_);

@@ -1,6 +1,8 @@
 #include "HttpServer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <iostream>
 #include <stdexcept>
 
 #include "HttpError.h"
@@ -9,6 +11,9 @@
 #include "LensTable.h"
 #include "OpticsError.h"
 #include "Render.h"
+#include "AccessControl.h"
+#include "RequestChecks.h"
+#include "StorageError.h"
 
 namespace lenslab {
 
@@ -20,6 +25,9 @@ void replyForException(httplib::Response& res, std::exception_ptr error) {
         std::rethrow_exception(error);
     } catch (const HttpError& e) {
         replyError(res, e.status(), e.what());
+    } catch (const StorageError& e) {
+        std::cerr << "lenslab serve: " << e.detail() << "\n";
+        replyError(res, e.httpStatus(), e.what());
     } catch (const LensTableError& e) {
         replyError(res, 400, e.what());
     } catch (const OpticsError& e) {
@@ -29,9 +37,48 @@ void replyForException(httplib::Response& res, std::exception_ptr error) {
     } catch (const DiagramError& e) {
         replyError(res, 503, std::string("the diagram could not be drawn: ") + e.what());
     } catch (const std::exception& e) {
-        replyError(res, 500, std::string("internal error: ") + e.what());
+        // The text may name the server's files: it goes to the log, not to the client.
+        std::cerr << "lenslab serve: internal error: " << e.what() << "\n";
+        replyError(res, 500, "internal error (the server's log has the details)");
     } catch (...) {
         replyError(res, 500, "internal error");
+    }
+}
+
+ConnectionLimits connectionLimits(const HttpLimits& http, int threads) {
+    ConnectionLimits limits;
+    limits.stream.maxHeaderBytes = http.maxHeaderBytes;
+    limits.stream.maxHeaderLine = std::min<std::size_t>(http.maxHeaderBytes, CPPHTTPLIB_HEADER_MAX_LENGTH);
+    // Chunk framing (size lines, CRLFs) travels with the data: a margin over the body limit for it,
+    // and cpp-httplib's own Content-Length check still holds plain bodies to the exact limit.
+    limits.stream.maxBodyWireBytes = http.maxBodyBytes + http.maxBodyBytes / 16 + 4096;
+    limits.stream.headerTimeout = std::chrono::seconds(http.headerTimeoutSeconds);
+    limits.stream.readTimeout = std::chrono::seconds(http.readTimeoutSeconds);
+    limits.stream.writeTimeout = std::chrono::seconds(http.readTimeoutSeconds);
+    limits.idleTimeout = std::chrono::seconds(http.idleTimeoutSeconds);
+    limits.requestsPerConnection = static_cast<std::size_t>(http.requestsPerConnection);
+    limits.listenBacklog = http.listenBacklog;
+    limits.workers = static_cast<std::size_t>(threads);
+    limits.maxRanges = static_cast<std::size_t>(http.maxRanges);
+    limits.maxWaiting = static_cast<std::size_t>(http.maxConnections);
+    return limits;
+}
+
+void replyBodyTooLarge(httplib::Response& res, const HttpLimits& http) {
+    replyError(res, 413, "request body too large (at most " + std::to_string(http.maxBodyBytes) + " bytes)");
+}
+
+// The answer for a request the connection's stream cut off, by the limit it broke.
+void replyForViolation(httplib::Response& res, StreamViolation violation, const HttpLimits& http) {
+    switch (violation) {
+        case StreamViolation::HeaderTooLarge:
+            return replyError(res, 431, "request headers too large (at most " + std::to_string(http.maxHeaderBytes) +
+                                            " bytes in all, " + std::to_string(CPPHTTPLIB_HEADER_MAX_LENGTH) + " per line)");
+        case StreamViolation::BodyTooLarge: return replyBodyTooLarge(res, http);
+        case StreamViolation::HeaderTimeout:
+            return replyError(res, 408, "the request head did not arrive within " +
+                                            std::to_string(http.headerTimeoutSeconds) + " s");
+        case StreamViolation::None: break;
     }
 }
 
@@ -40,7 +87,6 @@ const char* defaultMessage(int status) {
         case 400: return "bad request";
         case 404: return "not found";
         case 405: return "method not allowed";
-        case 413: return "request body too large";
         case 414: return "request URI too long";
         case 416: return "range not satisfiable";
         default: return status >= 500 ? "internal error" : "request refused";
@@ -49,27 +95,37 @@ const char* defaultMessage(int status) {
 
 }  // namespace
 
-HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log) {
-    const int threads = config.httpThreads;
-    server_.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<std::size_t>(threads)); };
-    server_.set_payload_max_length(config.maxBodyBytes);
-    // Headers and body go out in separate writes: without this, Nagle's algorithm holds the body
-    // back until the client's delayed ACK (about 40 ms per response).
-    server_.set_tcp_nodelay(true);
-    server_.set_read_timeout(10, 0);
-    server_.set_write_timeout(10, 0);
-    server_.set_keep_alive_timeout(2);
-    server_.set_keep_alive_max_count(1000);
+HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log)
+    : server_(connectionLimits(config.http, config.httpThreads)) {
+    const HttpLimits http = config.http;
+    const AccessPolicy access = config.access;
+    server_.set_payload_max_length(http.maxBodyBytes);
     server_.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Cache-Control", "no-cache"}});
-    server_.set_pre_routing_handler([&log](const httplib::Request&, httplib::Response&) {
+    server_.set_pre_routing_handler([&log, http, access](const httplib::Request& req, httplib::Response& res) {
         log.requestStarted();
+        auto refusal = refuseRequestHead(req, http);
+        if (!refusal) refusal = refuseAccess(req, access);
+        if (refusal) {
+            if (refusal->status() == 401) res.set_header("WWW-Authenticate", "Bearer");
+            replyError(res, refusal->status(), refusal->what());
+            res.set_header("Connection", "close");
+            GuardedServer::closeAfterThisRequest();  // its body, if any, was not read
+            return httplib::Server::HandlerResponse::Handled;
+        }
         return httplib::Server::HandlerResponse::Unhandled;
+    });
+    // cpp-httplib cuts a 200 answer to the requested range but leaves its status at 200.
+    server_.set_post_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+        if (res.status == 200 && req.ranges.size() == 1) res.status = 206;
     });
     server_.set_logger([&log](const httplib::Request& req, const httplib::Response& res) { log.requestFinished(req, res); });
     server_.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr error) {
         replyForException(res, error);
     });
-    server_.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+    server_.set_error_handler([http](const httplib::Request&, httplib::Response& res) {
+        const StreamViolation violation = GuardedServer::violationOnThisThread();
+        if (violation != StreamViolation::None) return replyForViolation(res, violation, http);
+        if (res.status == 413) return replyBodyTooLarge(res, http);
         if (res.body.empty()) replyError(res, res.status, defaultMessage(res.status));
     });
 }
@@ -77,10 +133,11 @@ HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log) {
 HttpServer::~HttpServer() { stop(); }
 
 int HttpServer::start(const std::string& host, int port) {
-    int bound = port;
-    if (port == 0) bound = server_.bind_to_any_port(host);
-    else if (!server_.bind_to_port(host, port)) bound = -1;
-    if (bound <= 0) throw std::runtime_error("cannot listen on " + host + ":" + std::to_string(port));
+    const int bound = server_.bindTo(host, port);
+    if (bound <= 0)
+        throw std::runtime_error("cannot listen on " + host + ":" + std::to_string(port) +
+                                 ": the port is in use (another lenslab serve?) or the address is not on this host; "
+                                 "choose another with --port");
     listener_ = std::thread([this] { server_.listen_after_bind(); });
     for (int waited = 0; !server_.is_running(); ++waited) {
         if (waited > 2000) throw std::runtime_error("the HTTP server did not start listening");
@@ -93,6 +150,7 @@ void HttpServer::stop() {
     if (!listener_.joinable()) return;
     server_.stop();
     listener_.join();
+    server_.closeConnections();
 }
 
 }  // namespace lenslab

@@ -1,12 +1,14 @@
 #pragma once
-// The HTTP front: cpp-httplib configured with the service's limits (threads, timeouts, body
-// size), every failure answered as JSON {"error": ...}, the access log, and a listening thread.
+// The HTTP front: cpp-httplib behind GuardedServer with the service's limits (workers, header and
+// body budgets, timeouts, ranges), the checks on each request's head (framing, encodings, ranges,
+// access), every failure answered as JSON {"error": ...}, the access log, and a listening thread.
 #include <httplib.h>
 
 #include <string>
 #include <thread>
 
 #include "AccessLog.h"
+#include "GuardedServer.h"
 #include "ServiceConfig.h"
 
 namespace lenslab {
@@ -19,12 +21,12 @@ public:
     httplib::Server& routes() { return server_; }
 
     // Binds host:port (port 0: any free port), starts serving, returns the bound port.
-    // std::runtime_error when the address cannot be bound.
+    // std::runtime_error saying so when the address is taken or cannot be bound.
     int start(const std::string& host, int port);
     void stop();
 
 private:
-    httplib::Server server_;
+    GuardedServer server_;
     std::thread listener_;
 };
 

@@ -146,6 +146,31 @@ std::optional<std::vector<std::uint8_t>> JobQueue::preview(const std::string& id
     return png;
 }
 
+JobQueue::Removal JobQueue::removeFinished(const std::string& id) {
+    std::lock_guard<std::mutex> lock(mutex_);  // a job cannot start or finish meanwhile
+    if (live_.count(id)) return Removal::Live;
+    if (!store_.find(id)) return Removal::NotFound;
+    // Files first: a row without files reads as "image gone", files without a row would be lost.
+    for (const char* format : {"png", "exr"}) std::filesystem::remove(imagePath(id, format));
+    store_.remove(id);
+    return Removal::Removed;
+}
+
+std::uintmax_t JobQueue::imageBytes(const std::string& id) const {
+    std::uintmax_t total = 0;
+    for (const char* format : {"png", "exr"}) {
+        std::error_code error;
+        const auto size = std::filesystem::file_size(imagePath(id, format), error);
+        if (!error) total += size;
+    }
+    return total;
+}
+
+void JobQueue::setAfterJob(std::function<void()> afterJob) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    afterJob_ = std::move(afterJob);
+}
+
 std::string JobQueue::imagePath(const std::string& id, const std::string& format) const {
     return (std::filesystem::path(imageDir_) / (id + "." + format)).string();
 }
@@ -183,6 +208,12 @@ void JobQueue::work() {
         }
         runJob(job);
         finish(job);
+        std::function<void()> afterJob;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            afterJob = afterJob_;
+        }
+        if (afterJob) afterJob();
     }
 }
 

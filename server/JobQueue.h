@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -58,6 +59,16 @@ public:
     enum class Cancel { Cancelled, Requested, AlreadyFinished, NotFound };
     Cancel cancel(const std::string& id);
 
+    // Deletes a finished job: its image files, then its row. NotFound for unknown ids, Live for
+    // jobs still waiting or running (cancel those first).
+    enum class Removal { Removed, Live, NotFound };
+    Removal removeFinished(const std::string& id);
+    // Bytes of a finished job's files on disk.
+    std::uintmax_t imageBytes(const std::string& id) const;
+
+    // Called on a worker thread after each job has finished and been saved (e.g. retention).
+    void setAfterJob(std::function<void()> afterJob);
+
     // The partial image of a running job as PNG (nullopt before its first tile or when not running).
     std::optional<std::vector<std::uint8_t>> preview(const std::string& id);
 
@@ -88,6 +99,7 @@ private:
     std::map<std::string, std::shared_ptr<LiveJob>> live_;  // waiting and running
     bool stopping_ = false;
     std::vector<std::thread> workers_;
+    std::function<void()> afterJob_;
 };
 
 }  // namespace lenslab

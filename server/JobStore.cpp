@@ -70,6 +70,16 @@ std::vector<JobRecord> JobStore::queued() const {
     return jobs;
 }
 
+std::vector<JobRecord> JobStore::finished() const {
+    std::vector<JobRecord> jobs;
+    database_.run(std::string("SELECT ") + kColumns +
+                      " FROM jobs WHERE state IN ('done', 'failed', 'cancelled') ORDER BY finished, created",
+                  {}, [&](const SqlRow& row) { jobs.push_back(readJob(row)); });
+    return jobs;
+}
+
+bool JobStore::remove(const std::string& id) { return database_.run("DELETE FROM jobs WHERE id = ?", {id}) > 0; }
+
 int JobStore::markInterrupted() {
     return database_.run(
         "UPDATE jobs SET state = 'failed', interrupted = 1, "

@@ -18,6 +18,8 @@ public:
     std::optional<JobRecord> find(const std::string& id) const;
     std::vector<JobRecord> recent(int limit) const;  // newest first
     std::vector<JobRecord> queued() const;           // oldest first
+    std::vector<JobRecord> finished() const;         // done, failed or cancelled; oldest finish first
+    bool remove(const std::string& id);              // false when there was no such job
 
     // After an abrupt stop: jobs left running are marked failed and interrupted (to be
     // resubmitted). Returns how many.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -10,6 +11,7 @@
 #include "AtomicFile.h"
 #include "Identifiers.h"
 #include "OpticsError.h"
+#include "StorageError.h"
 #include "WallClock.h"
 
 namespace lenslab {
@@ -34,16 +36,57 @@ std::shared_ptr<StoredLens> describeLens(const LensTable& table) {
     return lens;
 }
 
+constexpr std::size_t kDisplayNameCharacters = 64;
+
+// Bytes of the well-formed UTF-8 sequence starting at `at` (1 for ASCII), 0 when it is malformed
+// (stray continuation byte, truncated, overlong, surrogate or beyond U+10FFFF).
+std::size_t utf8SequenceLength(const std::string& text, std::size_t at) {
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+    const unsigned char lead = byte(at);
+    if (lead < 0x80) return lead >= 0x20 && lead != 0x7f ? 1 : 0;
+    const std::size_t length = lead >= 0xf0 ? 4 : lead >= 0xe0 ? 3 : lead >= 0xc2 ? 2 : 0;
+    if (length == 0 || lead > 0xf4 || at + length > text.size()) return 0;
+    std::uint32_t code = lead & (0x7f >> length);
+    for (std::size_t i = 1; i < length; ++i) {
+        if ((byte(at + i) & 0xc0) != 0x80) return 0;
+        code = (code << 6) | (byte(at + i) & 0x3f);
+    }
+    const std::uint32_t smallest[] = {0, 0, 0x80, 0x800, 0x10000};
+    if (code < smallest[length] || (code >= 0xd800 && code <= 0xdfff) || code > 0x10ffff) return 0;
+    return length;
+}
+
+// C1 controls and the bidirectional overrides that can make a name display as another.
+bool isInvisibleControl(const std::string& character) {
+    const auto b = [&](std::size_t i) { return static_cast<unsigned char>(character[i]); };
+    if (character.size() == 2 && b(0) == 0xc2 && b(1) < 0xa0) return true;  // U+0080..U+009F
+    if (character.size() == 3 && b(0) == 0xe2 && b(1) == 0x80 && (b(2) >= 0xaa && b(2) <= 0xae)) return true;
+    if (character.size() == 3 && b(0) == 0xe2 && b(1) == 0x81 && (b(2) >= 0xa6 && b(2) <= 0xa9)) return true;
+    return character == "\xef\xbb\xbf";  // byte order mark
+}
+
 }  // namespace
 
 std::string uploadDisplayName(const std::string& clientName) {
     const std::size_t slash = clientName.find_last_of("/\\");
     const std::string base = slash == std::string::npos ? clientName : clientName.substr(slash + 1);
     std::string name;
-    for (char c : base)
-        if (std::isalnum(static_cast<unsigned char>(c)) || std::string("._-+() ").find(c) != std::string::npos)
-            name += c;
-    name = name.substr(0, 64);
+    std::size_t characters = 0;
+    for (std::size_t at = 0; at < base.size() && characters < kDisplayNameCharacters;) {
+        const std::size_t length = utf8SequenceLength(base, at);
+        if (length == 0) {
+            ++at;  // not UTF-8: dropped, so the name stays valid in JSON
+            continue;
+        }
+        const std::string character = base.substr(at, length);
+        at += length;
+        if (length == 1 && !std::isalnum(static_cast<unsigned char>(character[0])) &&
+            std::string("._-+() ").find(character[0]) == std::string::npos)
+            continue;
+        if (length > 1 && isInvisibleControl(character)) continue;
+        name += character;
+        ++characters;
+    }
     name.erase(0, name.find_first_not_of(". "));
     return name.empty() ? "upload.dat" : name;
 }
@@ -144,9 +187,13 @@ LensStore::Removal LensStore::remove(const std::string& id) {
     auto it = std::find_if(lenses_.begin(), lenses_.end(), [&](const auto& l) { return l->id == id; });
     if (it == lenses_.end()) return Removal::NotFound;
     if ((*it)->bundled) return Removal::ReadOnly;
+    // The file first: when it cannot go (read-only folder) the lens stays listed and the client
+    // hears why, instead of a 200 with the file left behind.
+    std::error_code error;
+    fs::remove((*it)->path, error);
+    if (error && error != std::errc::no_such_file_or_directory)
+        throw StorageError(storageErrorKind(error.value()), "cannot remove " + (*it)->path + ": " + error.message());
     database_.run("DELETE FROM lenses WHERE id = ?", {id});
-    std::error_code ec;
-    fs::remove((*it)->path, ec);
     lenses_.erase(it);
     return Removal::Removed;
 }

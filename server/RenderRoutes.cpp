@@ -113,8 +113,10 @@ void addRenderRoutes(httplib::Server& server, ServiceParts& parts) {
                 replyJson(res, 202, {{"id", id}, {"state", "running"}, {"cancel_requested", true}});
                 return;
             case JobQueue::Cancel::AlreadyFinished:
-                throw HttpError(409, "render '" + id + "' has already finished (" +
-                                         jobStateName(findJob(parts, id).record.state) + ")");
+                if (parts.jobs.removeFinished(id) != JobQueue::Removal::Removed)
+                    throw HttpError(409, "render '" + id + "' changed state meanwhile; try again");
+                replyJson(res, 200, {{"id", id}, {"deleted", true}});
+                return;
             case JobQueue::Cancel::NotFound:
                 throw HttpError(404, "no render with id '" + id + "'");
         }

@@ -5,6 +5,7 @@
 
 #include "AtomicFile.h"
 #include "RenderJobResolver.h"
+#include "RenderRetention.h"
 #include "WallClock.h"
 
 namespace lenslab {
@@ -26,6 +27,7 @@ std::string databasePath(const ServiceConfig& config) {
 Service::Service(const ServiceConfig& config, std::unique_ptr<Renderer> renderer)
     : config_(config),
       accessLog_(config.accessLogPath),
+      lock_(config.dataDir),
       database_(databasePath(config)),
       lenses_(config.lensesDir, (fs::path(config.dataDir) / "lenses").string(), database_, config.maxUploadedLenses),
       scenes_(config.scenesDir),
@@ -38,6 +40,8 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<Renderer> renderer
     const int interrupted = jobStore_.markInterrupted();
     if (interrupted > 0) std::cerr << "lenslab serve: " << interrupted << " render(s) were interrupted; marked failed\n";
     restoreQueuedJobs();
+    collectRenders(jobs_, jobStore_, config_.retention, secondsSinceEpoch());
+    jobs_.setAfterJob([this] { collectRenders(jobs_, jobStore_, config_.retention, secondsSinceEpoch()); });
     addHealthRoutes(http_.routes(), parts_);
     addLensRoutes(http_.routes(), parts_);
     addDiagramRoutes(http_.routes(), parts_);

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "AccessLog.h"
+#include "DataFolderLock.h"
 #include "Database.h"
 #include "DiagramCache.h"
 #include "HttpServer.h"
@@ -33,6 +34,7 @@ private:
 
     ServiceConfig config_;
     AccessLog accessLog_;
+    DataFolderLock lock_;  // before anything touches the folder
     Database database_;
     LensStore lenses_;
     SceneCatalog scenes_;

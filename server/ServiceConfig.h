@@ -1,6 +1,7 @@
 #pragma once
 // Everything `lenslab serve` can be told: where it listens, where its folders are, its limits.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace lenslab {
@@ -13,6 +14,35 @@ struct RenderLimits {
     int threadsPerRender = 0;    // 0: all cores
 };
 
+// What one connection and one request may cost before the server answers 4xx and moves on
+// (docs/api.md, "Limits").
+struct HttpLimits {
+    std::size_t maxHeaderBytes = 16 << 10;  // request line and headers together: 431 past it
+    std::size_t maxBodyBytes = 1 << 20;     // any transfer encoding: 413 past it
+    int maxRanges = 1;                      // byte ranges in one Range header: 416 past it
+    int headerTimeoutSeconds = 10;          // the whole request head must arrive within this: 408
+    int readTimeoutSeconds = 10;            // a body must arrive within this, in all
+    int idleTimeoutSeconds = 2;             // keep-alive wait for the next request
+    int requestsPerConnection = 100;        // then the connection is closed
+    int maxConnections = 512;               // open connections not being answered; the longest waiting go first
+    int listenBacklog = 128;
+};
+
+// Who may do what (docs/api.md, "Access"). The token is required for every request that writes or
+// spends CPU (any method but GET/HEAD/OPTIONS) when it is set, and for reads too with privateReads.
+struct AccessPolicy {
+    std::string tokenFile;               // where the token is kept (created on first start)
+    std::string token;                   // empty: no token asked for (loopback, or --no-auth)
+    bool privateReads = false;
+    std::string allowedOrigins;          // comma-separated origins besides the server's own
+};
+
+// How long finished renders are kept (docs/api.md, "Retention"): the oldest go first.
+struct RetentionPolicy {
+    double keepDays = 30;                   // 0: no age limit
+    std::uintmax_t keepBytes = 2ull << 30;  // finished renders' files together; 0: no size limit
+};
+
 struct ServiceConfig {
     std::string host = "127.0.0.1";
     int port = 8080;             // 0: any free port (printed at start)
@@ -23,7 +53,9 @@ struct ServiceConfig {
     std::string reportDir;       // served at /report/
     std::string accessLogPath;   // empty: standard output
     RenderLimits limits;
-    std::size_t maxBodyBytes = 1 << 20;
+    HttpLimits http;
+    RetentionPolicy retention;
+    AccessPolicy access;
     int maxUploadedLenses = 500;
     std::size_t diagramCacheBytes = 64u << 20;
     int httpThreads = 32;

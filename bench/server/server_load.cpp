@@ -3,11 +3,9 @@
 //      parameter combinations (first drawings, then cache hits); requests/s, p50/p99, errors;
 //   2. the same with every request distinct (every one drawn);
 //   3. a full render queue: submissions past --max-queue get 429 while the API stays responsive.
+//   Each diagram and submission run is made twice: alone, and with 40 slowloris connections open.
 // usage: server_load [LENSLAB_BINARY]   (prints a Markdown summary)
 #include <httplib.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -16,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -23,73 +22,32 @@
 #include <thread>
 #include <vector>
 
+#include "ServerUnderTest.h"
+#include "SlowClients.h"
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
 using nlohmann::json;
-
-struct Server {
-    pid_t pid = -1;
-    int port = 0;
-    std::string folder;
-};
-
-Server startServer(const std::string& binary, const std::vector<std::string>& extra) {
-    Server s;
-    char pattern[] = "/tmp/lenslab-load-XXXXXX";
-    s.folder = mkdtemp(pattern);
-    const std::string log = s.folder + "/server.out";
-    std::vector<std::string> args = {binary, "serve", "--port", "0", "--data", s.folder + "/data",
-                                     "--access-log", s.folder + "/access.log"};
-    args.insert(args.end(), extra.begin(), extra.end());
-    std::cout.flush();
-    s.pid = fork();
-    if (s.pid == 0) {
-        freopen(log.c_str(), "w", stdout);
-        freopen(log.c_str(), "a", stderr);
-        std::vector<char*> argv;
-        for (auto& a : args) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        execv(binary.c_str(), argv.data());
-        _exit(127);
-    }
-    const std::regex listening(R"(listening on http://[^:]+:(\d+)/)");
-    for (int i = 0; i < 400; ++i) {
-        std::ifstream in(log);
-        std::stringstream text;
-        text << in.rdbuf();
-        std::smatch m;
-        const std::string t = text.str();
-        if (std::regex_search(t, m, listening)) {
-            s.port = std::stoi(m[1]);
-            return s;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    throw std::runtime_error("server did not start");
-}
-
-void stopServer(const Server& s) {
-    kill(s.pid, SIGTERM);
-    int status = 0;
-    waitpid(s.pid, &status, 0);
-    std::filesystem::remove_all(s.folder);
-}
+using namespace lenslab::bench;
 
 struct Sample {
     double ms;
     bool ok;
 };
 
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5))];
+using Send = std::function<httplib::Result(httplib::Client&, int, int)>;
+using Accept = std::function<bool(const httplib::Response&)>;
+
+bool isPngReply(const httplib::Response& r) { return r.status == 200 && r.body.size() > 8 && r.body.compare(1, 3, "PNG") == 0; }
+
+Send getOf(const std::function<std::string(int, int)>& urlFor) {
+    return [urlFor](httplib::Client& client, int c, int i) { return client.Get(urlFor(c, i)); };
 }
 
-// `clients` threads, each `perClient` GETs of urlFor(client, i); returns the summary row.
-std::string loadRow(const std::string& label, int port, int clients, int perClient,
-                    const std::function<std::string(int, int)>& urlFor) {
+// `clients` threads, each `perClient` requests send(client, c, i); returns the summary row.
+std::string loadRow(const std::string& label, int port, int clients, int perClient, const Send& send,
+                    const Accept& accept = isPngReply) {
     std::vector<std::vector<Sample>> samples(clients);
     const auto start = Clock::now();
     std::vector<std::thread> threads;
@@ -101,9 +59,9 @@ std::string loadRow(const std::string& label, int port, int clients, int perClie
             client.set_read_timeout(30);
             for (int i = 0; i < perClient; ++i) {
                 const auto t0 = Clock::now();
-                auto r = client.Get(urlFor(c, i));
+                auto r = send(client, c, i);
                 const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-                const bool ok = r && r->status == 200 && r->body.size() > 8 && r->body.compare(1, 3, "PNG") == 0;
+                const bool ok = r && accept(*r);
                 samples[c].push_back({ms, ok});
             }
         });
@@ -126,7 +84,7 @@ std::string loadRow(const std::string& label, int port, int clients, int perClie
 
 std::string fullQueueReport(const std::string& binary) {
     const int maxQueue = 4;
-    const Server s = startServer(binary, {"--max-queue", std::to_string(maxQueue), "--renders", "1", "--max-spp", "4096"});
+    const ServerUnderTest s = startServer(binary, {"--max-queue", std::to_string(maxQueue), "--renders", "1", "--max-spp", "4096"});
     httplib::Client c("127.0.0.1", s.port);
     c.set_read_timeout(30);
     const std::string body = json{{"lens", "dgauss.50mm"}, {"spp", 4096}, {"width", 320}, {"height", 240}}.dump();
@@ -186,21 +144,49 @@ int main(int argc, char** argv) {
     std::cout << "## Diagrams (GET /api/lenses/{id}/diagram.png, 800x400)\n\n"
               << "| workload | clients | requests | requests/s | p50 ms | p99 ms | max ms | errors |\n"
               << "|---|---|---|---|---|---|---|---|\n";
-    {
-        const Server s = startServer(binary, {});
-        const std::vector<std::string> lenses = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
-        const std::vector<std::string> modes = {"exact", "thick", "overlay"};
-        const std::vector<std::string> fstops = {"", "&fstop=5.6"};
-        const auto mixed = [&](int c, int i) {
-            const int k = (c * 7 + i) % 24;
-            return "/api/lenses/" + lenses[k % 4] + "/diagram.png?size=800x400&mode=" + modes[(k / 4) % 3] + fstops[k / 12];
+    const std::vector<std::string> lenses = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
+    const std::vector<std::string> modes = {"exact", "thick", "overlay"};
+    const std::vector<std::string> fstops = {"", "&fstop=5.6"};
+    const auto mixed = [&](int c, int i) {
+        const int k = (c * 7 + i) % 24;
+        return "/api/lenses/" + lenses[k % 4] + "/diagram.png?size=800x400&mode=" + modes[(k / 4) % 3] + fstops[k / 12];
+    };
+    // Each run its own focus range, so that every request of it is drawn.
+    const auto distinct = [](int run) {
+        return [run](int c, int i) {
+            return "/api/lenses/dgauss.50mm/diagram.png?size=800x400&mode=overlay&focus=" +
+                   std::to_string(1000 + run * 10000 + c * 100 + i);
         };
-        std::cout << loadRow("24 parameter sets, repeated (cache hits after the first drawing)", s.port, 16, 250, mixed) << "\n";
-        const auto distinct = [&](int c, int i) {
-            return "/api/lenses/dgauss.50mm/diagram.png?size=800x400&mode=overlay&focus=" + std::to_string(1000 + c * 100 + i);
-        };
-        std::cout << loadRow("every request distinct (each one drawn)", s.port, 16, 10, distinct) << "\n";
-        std::cout << "\nServer after the runs: `" << httplib::Client("127.0.0.1", s.port).Get("/api/health")->body << "`\n";
+    };
+    const Send submitRender = [](httplib::Client& client, int, int) {
+        return client.Post("/api/renders", json{{"lens", "dgauss.50mm"}, {"spp", 4}, {"width", 64}, {"height", 48}}.dump(),
+                           "application/json");
+    };
+    const Accept acceptedOrQueueFull = [](const httplib::Response& r) { return r.status == 202 || r.status == 429; };
+    for (const int slow : {0, 40}) {
+        // A 2 s header deadline with slow clients, so that they are cut off (and come back) during the runs.
+        const ServerUnderTest s = startServer(binary, {"--max-queue", "8", "--header-timeout", slow > 0 ? "2" : "10"});
+        std::unique_ptr<SlowClients> slowClients;
+        if (slow > 0) {
+            slowClients = std::make_unique<SlowClients>(s.port, slow);
+            std::this_thread::sleep_for(std::chrono::seconds(3));
+        }
+        const std::string with = slow > 0 ? ", " + std::to_string(slow) + " slowloris connections present" : "";
+        std::cout << loadRow("24 parameter sets, repeated (cache hits after the first drawing)" + with, s.port, 16, 250,
+                             getOf(mixed)) << "\n";
+        std::cout << loadRow("every request distinct (each one drawn)" + with, s.port, 16, 10, getOf(distinct(slow)))
+                  << "\n";
+        std::cout << loadRow("render submissions, 64x48 (202 accepted or 429 queue full)" + with, s.port, 16, 20,
+                             submitRender, acceptedOrQueueFull) << "\n";
+        if (slowClients)
+            std::cout << "\nSlow connections cut off by the header deadline during the runs: " << slowClients->reconnects()
+                      << "\n\n";
+        slowClients.reset();
+        std::cout << "\nServer after the runs" << with << ": `" << httplib::Client("127.0.0.1", s.port).Get("/api/health")->body
+                  << "`, RSS " << residentMiB(s.pid) << " MiB\n\n";
+        if (slow == 0)
+            std::cout << "| workload | clients | requests | requests/s | p50 ms | p99 ms | max ms | errors |\n"
+                      << "|---|---|---|---|---|---|---|---|\n";
         stopServer(s);
     }
     std::cout << "\n## Full render queue\n\n" << fullQueueReport(binary);

@@ -14,6 +14,8 @@ public:
     virtual const char* name() const = 0;
     // Makes the context current on the calling thread and loads that thread's GL table from it.
     virtual void makeCurrent() = 0;
+    // Leaves the calling thread with no current context, so another thread may take this one.
+    virtual void releaseCurrent() = 0;
 };
 
 // Each throws DiagramError with the reason when its platform cannot give a context.

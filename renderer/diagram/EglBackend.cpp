@@ -78,12 +78,13 @@ public:
             throw DiagramError("EGL backend: cannot make a context current without a surface");
         loadGlFunctions(eglGetProcAddress);
     }
+    void releaseCurrent() override { eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
     ~EglBackend() override { release(); }
     const char* name() const override { return "egl"; }
 
 private:
     void release() {
-        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        releaseCurrent();
         eglDestroyContext(display_, context_);
     }
 

@@ -7,7 +7,7 @@
 #include "LensAnalysis.h"
 #include "NumberText.h"
 #include "PngCodec.h"
-#include "ThreadContexts.h"
+#include "CanvasLease.h"
 
 namespace lenslab {
 
@@ -56,7 +56,8 @@ std::vector<std::uint8_t> drawLensDiagramPng(const LensSystem& lens, const Diagr
     validate(options);
     const LensAnalysis analysis = analyzeLens(lens, options.lens);
     const DiagramPicture picture = composeDiagram(analysis, displayName(lens.name), options);
-    std::vector<std::uint8_t> pixels = threadCanvas(options.backend)
+    std::vector<std::uint8_t> pixels = CanvasLease(options.backend)
+                                           .canvas()
                                            .rasterise(picture.shapes, picture.width, picture.height, diagram_style::kBackground);
     drawTextLabels(pixels, picture.width, picture.height, picture.labels, diagram_style::kBackground);
     return encodePngRgba8(picture.width, picture.height, pixels.data());

@@ -29,12 +29,13 @@ public:
             throw DiagramError("OSMesa backend: cannot make the context current");
         loadGlFunctions(OSMesaGetProcAddress);
     }
+    void releaseCurrent() override { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
     ~OSMesaBackend() override { release(); }
     const char* name() const override { return "osmesa"; }
 
 private:
     void release() {
-        OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+        releaseCurrent();
         OSMesaDestroyContext(context_);
     }
 

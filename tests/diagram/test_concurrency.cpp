@@ -3,6 +3,7 @@
 
 #include <thread>
 
+#include "CanvasLease.h"
 #include "DiagramTestSupport.h"
 
 namespace lenslab::test {
@@ -34,6 +35,25 @@ TEST(DiagramConcurrency, ThreadsOnBothBackendsMatchTheSerialPicture) {
     for (auto& thread : threads) thread.join();
     for (int t = 0; t < kThreads; ++t) EXPECT_EQ(errors[t], "") << "thread " << t;
     for (const auto& png : results) EXPECT_EQ(png, reference);
+}
+
+// One GL context per backend however many threads draw: a context per server thread made resident
+// memory grow with the thread count, and OSMesa contexts on several threads at once share one
+// unlocked window buffer inside Mesa (the libOSMesa crash of issue 14).
+TEST(DiagramConcurrency, ContextsDoNotMultiplyWithThreads) {
+    const LensSystem lens = loadBundledLens("dgauss.50mm");
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 12; ++t)
+        threads.emplace_back([&, t] {
+            DiagramOptions options;
+            options.width = 320 + 8 * t;
+            options.height = 200;
+            options.backend = DiagramBackendKind::OSMesa;
+            options.lens.focusDistance = Setting{1000.0 + 100.0 * t, "focus"};
+            drawLensDiagramPng(lens, options);
+        });
+    for (auto& thread : threads) thread.join();
+    EXPECT_LE(liveDiagramContexts(), 2);  // OSMesa, and EGL if another test used it
 }
 
 TEST(DiagramConcurrency, AutoBackendDraws) {

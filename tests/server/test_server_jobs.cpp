@@ -69,7 +69,8 @@ TEST_F(ServerJobs, ReportsProgressAndPartialImages) {
     EXPECT_DOUBLE_EQ(done["progress"]["fraction"].get<double>(), 1.0);
     EXPECT_TRUE(isPng(c.Get("/api/renders/" + id + "/image.png")->body));
     EXPECT_TRUE(isExr(c.Get("/api/renders/" + id + "/image.exr")->body));
-    EXPECT_EQ(remove(c, "/api/renders/" + id).status, 409);
+    EXPECT_EQ(remove(c, "/api/renders/" + id).status, 200);  // a finished render is deleted
+    EXPECT_EQ(get(c, "/api/renders/" + id).status, 404);
 }
 
 TEST_F(ServerJobs, CancelsQueuedAndRunningRendersAndRefusesAFullQueue) {

@@ -1,0 +1,27 @@
+#pragma once
+// A plain TCP connection to the server on loopback, for requests httplib::Client will not send:
+// malformed or oversized heads, bodies without a length, clients that send slowly.
+#include <string>
+
+namespace lenslab::test {
+
+class RawConnection {
+public:
+    explicit RawConnection(int port);  // connects to 127.0.0.1:port; std::runtime_error if it cannot
+    ~RawConnection();
+    RawConnection(const RawConnection&) = delete;
+    RawConnection& operator=(const RawConnection&) = delete;
+
+    bool send(const std::string& bytes);  // false once the server has closed the connection
+    // Everything that arrives until the server closes or `seconds` pass without a complete reply
+    // (a reply is complete when its Content-Length bytes have come).
+    std::string readReply(double seconds);
+
+private:
+    int fd_ = -1;
+};
+
+// The status code of a raw reply ("HTTP/1.1 431 ..."), 0 when there is none.
+int statusOf(const std::string& reply);
+
+}  // namespace lenslab::test

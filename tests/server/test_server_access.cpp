@@ -1,0 +1,104 @@
+// Access control (issue 14): beyond loopback a token guards every request that writes or spends
+// CPU; reads stay open unless made private; other sites' pages cannot drive the API.
+// LENSLAB_SERVER_BINARY overrides the binary under test (to see these fail on an older build).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "ServerProcess.h"
+
+using namespace lenslab::test;
+using nlohmann::json;
+
+namespace {
+
+std::string binaryUnderTest() {
+    const char* other = std::getenv("LENSLAB_SERVER_BINARY");
+    return other && *other ? other : LENSLAB_BINARY;
+}
+
+const std::string kTable = "50.0 5.0 1.5 20.0\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
+
+class ServerAccess : public ::testing::Test {
+protected:
+    std::string tokenFile() const { return data_.path() + "/token"; }
+    void start(std::vector<std::string> args) {
+        server_ = std::make_unique<ServerProcess>(binaryUnderTest(), data_.path() + "/data", args);
+    }
+    std::string token() const {
+        std::ifstream in(tokenFile());
+        std::string t;
+        std::getline(in, t);
+        return t;
+    }
+
+    TempDir data_;
+    std::unique_ptr<ServerProcess> server_;
+};
+
+}  // namespace
+
+TEST_F(ServerAccess, WritesNeedTheTokenThatTheFirstStartMadeAndPrinted) {
+    start({"--token-file", tokenFile()});
+    ASSERT_EQ(token().size(), 48u);
+    EXPECT_NE(server_->output().find(token()), std::string::npos);  // printed once, at creation
+
+    auto c = server_->client();
+    const auto refused = c.Post("/api/lenses?name=t.dat", kTable, "text/plain");
+    ASSERT_TRUE(refused);
+    EXPECT_EQ(refused->status, 401);
+    EXPECT_EQ(refused->get_header_value("WWW-Authenticate"), "Bearer");
+    EXPECT_EQ(remove(c, "/api/lenses/dgauss.50mm").status, 401);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}}).status, 401);
+    EXPECT_EQ(postJson(c, "/api/report", json::object()).status, 401);
+    EXPECT_EQ(get(c, "/api/lenses").status, 200);  // reads stay open
+
+    c.set_bearer_token_auth(std::string(47, 'x') + "y");
+    EXPECT_EQ(c.Post("/api/lenses?name=t.dat", kTable, "text/plain")->status, 401);
+    c.set_bearer_token_auth(token());
+    EXPECT_EQ(c.Post("/api/lenses?name=t.dat", kTable, "text/plain")->status, 201);
+
+    const std::string first = token();
+    server_.reset();
+    start({"--token-file", tokenFile()});
+    EXPECT_EQ(token(), first);  // kept across restarts, and not printed again
+    EXPECT_EQ(server_->output().find(first), std::string::npos);
+}
+
+TEST_F(ServerAccess, PrivateReadsNeedTheTokenToo) {
+    start({"--token-file", tokenFile(), "--private-reads"});
+    auto c = server_->client();
+    EXPECT_EQ(get(c, "/api/lenses").status, 401);
+    c.set_bearer_token_auth(token());
+    EXPECT_EQ(get(c, "/api/lenses").status, 200);
+}
+
+TEST_F(ServerAccess, ListeningBeyondLoopbackWithoutATokenIsRefused) {
+    try {
+        ServerProcess open(binaryUnderTest(), data_.path() + "/data", {"--host", "0.0.0.0"});
+        ADD_FAILURE() << "the server listened on 0.0.0.0 with no token";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("--token-file"), std::string::npos) << e.what();
+    }
+}
+
+TEST_F(ServerAccess, NoAuthMustBeAskedForExplicitly) {
+    start({"--host", "0.0.0.0", "--no-auth"});
+    httplib::Client c("127.0.0.1", server_->port());
+    EXPECT_EQ(c.Post("/api/lenses?name=t.dat", kTable, "text/plain")->status, 201);
+}
+
+TEST_F(ServerAccess, CrossOriginRequestsAreRefusedUnlessAllowed) {
+    start({"--allow-origin", "http://trusted.example"});
+    auto c = server_->client();
+    const std::string self = "http://127.0.0.1:" + std::to_string(server_->port());
+    const auto foreign = c.Post("/api/lenses?name=a.dat", {{"Origin", "http://evil.example"}}, kTable, "text/plain");
+    ASSERT_TRUE(foreign);
+    EXPECT_EQ(foreign->status, 403);
+    EXPECT_EQ(c.Get("/api/lenses", {{"Origin", "http://evil.example"}})->status, 403);
+    EXPECT_EQ(c.Post("/api/lenses?name=b.dat", {{"Origin", self}}, kTable, "text/plain")->status, 201);
+    EXPECT_EQ(c.Post("/api/lenses?name=c.dat", {{"Origin", "http://trusted.example"}}, kTable, "text/plain")->status, 201);
+}
