@@ -29,7 +29,7 @@ std::string loadToken(const std::string& tokenFile) {
 
 }  // namespace
 
-int serveUntilStopped(ServiceConfig config, std::unique_ptr<Renderer> renderer) {
+int serveUntilStopped(ServiceConfig config, std::unique_ptr<JobRenderer> renderer) {
     config.access.token = loadToken(config.access.tokenFile);
     // A client that hangs up mid-response must not end the process.
     ::signal(SIGPIPE, SIG_IGN);

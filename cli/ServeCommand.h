@@ -3,13 +3,13 @@
 // `lenslab serve`; tests substitute their own).
 #include <memory>
 
-#include "Renderer.h"
+#include "JobRenderer.h"
 #include "ServiceConfig.h"
 
 namespace lenslab {
 
 // Loads (or makes and prints) the API token of config.access.tokenFile, then prints
 // "lenslab serve: listening on http://HOST:PORT/" once it accepts requests.
-int serveUntilStopped(ServiceConfig config, std::unique_ptr<Renderer> renderer);
+int serveUntilStopped(ServiceConfig config, std::unique_ptr<JobRenderer> renderer);
 
 }  // namespace lenslab

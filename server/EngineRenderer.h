@@ -1,11 +1,11 @@
 #pragma once
-// The Renderer the service uses: lenslab's ray tracer with the request's camera settings, the
+// The JobRenderer the service uses: lenslab's ray tracer with the request's camera settings, the
 // result encoded as PNG (sRGB) and EXR (linear, with the camera and lens in its header).
-#include "Renderer.h"
+#include "JobRenderer.h"
 
 namespace lenslab {
 
-class EngineRenderer : public Renderer {
+class EngineRenderer : public JobRenderer {
 public:
     explicit EngineRenderer(int threads) : threads_(threads) {}
     RenderedImages render(const RenderJobInput& job, const TileCallback& onTile, const std::atomic<bool>& cancel) override;

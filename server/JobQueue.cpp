@@ -38,7 +38,7 @@ void copyTile(const TileUpdate& tile, const Image& source, Image& target) {
 
 }  // namespace
 
-JobQueue::JobQueue(JobStore& store, Renderer& renderer, const RenderLimits& limits, const std::string& imageDir)
+JobQueue::JobQueue(JobStore& store, JobRenderer& renderer, const RenderLimits& limits, const std::string& imageDir)
     : store_(store), renderer_(renderer), limits_(limits), imageDir_(imageDir) {
     std::filesystem::create_directories(imageDir_);
     for (int i = 0; i < std::max(1, limits_.concurrentRenders); ++i) workers_.emplace_back([this] { work(); });

@@ -18,7 +18,7 @@
 
 #include "JobRecord.h"
 #include "JobStore.h"
-#include "Renderer.h"
+#include "JobRenderer.h"
 #include "ServiceConfig.h"
 
 namespace lenslab {
@@ -45,7 +45,7 @@ struct QueueCounts {
 
 class JobQueue {
 public:
-    JobQueue(JobStore& store, Renderer& renderer, const RenderLimits& limits, const std::string& imageDir);
+    JobQueue(JobStore& store, JobRenderer& renderer, const RenderLimits& limits, const std::string& imageDir);
     ~JobQueue();  // shutdown()
 
     // Records the job as queued and schedules it. QueueFull when maxQueued jobs already wait.
@@ -90,7 +90,7 @@ private:
     void finish(const std::shared_ptr<LiveJob>& job);
 
     JobStore& store_;
-    Renderer& renderer_;
+    JobRenderer& renderer_;
     RenderLimits limits_;
     std::string imageDir_;
     mutable std::mutex mutex_;

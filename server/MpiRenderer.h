@@ -1,12 +1,12 @@
 #pragma once
-// The Renderer for `lenslab serve --mpi-hostfile H --mpi-np N`: each job runs as
+// The JobRenderer for `lenslab serve --mpi-hostfile H --mpi-np N`: each job runs as
 // `mpirun --hostfile H -np N lenslab render ... --mpi --progress-json` (this same lenslab binary),
 // its tile lines mapped to the job's progress, cancel killing the mpirun process group. The
 // scenes, lenses and the data folder must lie at the same paths on every host (a shared
 // filesystem); rank 0, the first slot of the hostfile, writes the images into the data folder.
 #include <string>
 
-#include "Renderer.h"
+#include "JobRenderer.h"
 
 namespace lenslab {
 
@@ -18,7 +18,7 @@ struct MpiLaunch {
     std::string scratchDir;         // where the job's images are written before loading
 };
 
-class MpiRenderer : public Renderer {
+class MpiRenderer : public JobRenderer {
 public:
     explicit MpiRenderer(MpiLaunch launch);
     RenderedImages render(const RenderJobInput& job, const TileCallback& onTile, const std::atomic<bool>& cancel) override;

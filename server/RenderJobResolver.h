@@ -5,7 +5,7 @@
 
 #include "LensStore.h"
 #include "RenderRequest.h"
-#include "Renderer.h"
+#include "JobRenderer.h"
 #include "SceneCatalog.h"
 
 namespace lenslab {

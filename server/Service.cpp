@@ -24,7 +24,7 @@ std::string databasePath(const ServiceConfig& config) {
 
 }  // namespace
 
-Service::Service(const ServiceConfig& config, std::unique_ptr<Renderer> renderer)
+Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> renderer)
     : config_(config),
       accessLog_(config.accessLogPath),
       lock_(config.dataDir),

@@ -12,7 +12,7 @@
 #include "JobQueue.h"
 #include "JobStore.h"
 #include "LensStore.h"
-#include "Renderer.h"
+#include "JobRenderer.h"
 #include "ReportJob.h"
 #include "SceneCatalog.h"
 #include "ServiceConfig.h"
@@ -22,7 +22,7 @@ namespace lenslab {
 
 class Service {
 public:
-    Service(const ServiceConfig& config, std::unique_ptr<Renderer> renderer);
+    Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> renderer);
     ~Service();  // stop()
 
     int start();  // returns the port it listens on
@@ -40,7 +40,7 @@ private:
     SceneCatalog scenes_;
     DiagramCache diagrams_;
     JobStore jobStore_;
-    std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<JobRenderer> renderer_;
     JobQueue jobs_;
     ReportJob report_;
     ServiceParts parts_;

@@ -1,11 +1,22 @@
 #include "TestScenes.h"
 
+#include "SceneDescription.h"
+
 namespace lenslab::test {
 
 std::string lensPath(const std::string& name) { return std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name; }
 
 std::string courseCamera(const std::string& lens, const std::string& params) {
     return "Scale 1000 1000 1000\nCamera \"realistic\" \"string specfile\" \"" + lensPath(lens) + "\" " + params;
+}
+
+std::string sceneErrorOf(const std::string& path) {
+    try {
+        parseSceneFile(path);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(no error)";
 }
 
 RenderOutput render(const std::string& scene, int width, int height, int spp, RenderSettings s) {

@@ -13,6 +13,9 @@ std::string lensPath(const std::string& name);  // lenslab's bundled lens table
 // lens), preceded by the Scale that brings a world in metres into its millimetre camera space.
 std::string courseCamera(const std::string& lens, const std::string& params);
 
+// The message of the SceneError that parsing `path` throws, or "(no error)".
+std::string sceneErrorOf(const std::string& path);
+
 // Renders with the given settings (threads 2 unless set).
 RenderOutput render(const std::string& scene, int width, int height, int spp, RenderSettings s = {});
 

@@ -13,14 +13,6 @@ namespace {
 
 using test::trace;
 
-std::string errorOf(const std::string& path) {
-    try {
-        parseSceneFile(path);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
 
 TEST(Instancing, ObjectAppearsAtEveryInstanceTransform) {
     test::TempDir dir;
@@ -138,7 +130,7 @@ TEST(Instancing, RedefinedObjectsServeLaterInstances) {
 
 TEST(Instancing, BadObjectUseIsAnError) {
     test::TempDir dir;
-    const auto error = [&](const std::string& world) { return errorOf(test::shapeScene(dir, world)); };
+    const auto error = [&](const std::string& world) { return test::sceneErrorOf(test::shapeScene(dir, world)); };
     std::string e = error("ObjectInstance \"nothing\"");
     EXPECT_NE(e.find("s.pbrt:5: ObjectInstance \"nothing\": unknown object \"nothing\""), std::string::npos) << e;
     e = error("ObjectBegin \"a\"\nObjectBegin \"b\"\nObjectEnd\nObjectEnd");

@@ -11,14 +11,6 @@ namespace {
 const char* kHeader = "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
                       "Film \"image\" \"integer xresolution\" 16 \"integer yresolution\" 16\n";
 
-std::string errorOf(const std::string& path) {
-    try {
-        parseSceneFile(path);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
 
 // Renders (tiny) and returns the message of the SceneError it must throw.
 std::string renderErrorOf(const std::string& path, RenderSettings s = {}) {
@@ -80,7 +72,7 @@ TEST(SceneParser, IncludeReachesAnywhereUnlessConfined) {
 TEST(SceneErrors, UnknownDirectiveNamesFileLineAndDirective) {
     test::TempDir dir;
     const std::string p = dir.write("bad.pbrt", std::string(kHeader) + "WorldBegin\n\nMakeItPretty 3\nWorldEnd\n");
-    const std::string e = errorOf(p);
+    const std::string e = test::sceneErrorOf(p);
     EXPECT_NE(e.find("bad.pbrt:6"), std::string::npos) << e;
     EXPECT_NE(e.find("MakeItPretty"), std::string::npos) << e;
 }
@@ -88,23 +80,23 @@ TEST(SceneErrors, UnknownDirectiveNamesFileLineAndDirective) {
 TEST(SceneErrors, MissingIncludeFile) {
     test::TempDir dir;
     const std::string p = dir.write("s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"nothere.pbrt\"\nWorldEnd\n");
-    const std::string e = errorOf(p);
+    const std::string e = test::sceneErrorOf(p);
     EXPECT_NE(e.find("s.pbrt:5: Include"), std::string::npos) << e;
     EXPECT_NE(e.find("cannot open 'nothere.pbrt'"), std::string::npos) << e;
-    EXPECT_NE(errorOf(dir.path() + "/missing.pbrt").find("cannot open scene file"), std::string::npos);
+    EXPECT_NE(test::sceneErrorOf(dir.path() + "/missing.pbrt").find("cannot open scene file"), std::string::npos);
 }
 
 TEST(SceneErrors, BadNumbers) {
     test::TempDir dir;
     const std::string a = dir.write("a.pbrt", std::string(kHeader) + "WorldBegin\nTranslate 1 2 x3\nWorldEnd\n");
-    EXPECT_NE(errorOf(a).find("a.pbrt:5: Translate: bad number 'x3'"), std::string::npos) << errorOf(a);
+    EXPECT_NE(test::sceneErrorOf(a).find("a.pbrt:5: Translate: bad number 'x3'"), std::string::npos) << test::sceneErrorOf(a);
     const std::string b = dir.write("b.pbrt", std::string(kHeader) + "WorldBegin\nShape \"sphere\" \"float radius\" [ 1e999 ]\nWorldEnd\n");
-    EXPECT_NE(errorOf(b).find("bad number '1e999'"), std::string::npos) << errorOf(b);
+    EXPECT_NE(test::sceneErrorOf(b).find("bad number '1e999'"), std::string::npos) << test::sceneErrorOf(b);
     const std::string c = dir.write("c.pbrt", std::string(kHeader) + "WorldBegin\nShape \"sphere\" \"float radius\" -1\nWorldEnd\n");
-    EXPECT_NE(errorOf(c).find("radius must be positive"), std::string::npos) << errorOf(c);
+    EXPECT_NE(test::sceneErrorOf(c).find("radius must be positive"), std::string::npos) << test::sceneErrorOf(c);
     const std::string d = dir.write("d.pbrt", std::string(kHeader) +
         "WorldBegin\nShape \"trianglemesh\" \"integer indices\" [0 1 5] \"point P\" [0 0 0 1 0 0 0 1 0]\nWorldEnd\n");
-    EXPECT_NE(errorOf(d).find("index 5 out of range"), std::string::npos) << errorOf(d);
+    EXPECT_NE(test::sceneErrorOf(d).find("index 5 out of range"), std::string::npos) << test::sceneErrorOf(d);
 }
 
 TEST(SceneErrors, AbsurdResolution) {
@@ -130,7 +122,7 @@ TEST(SceneErrors, UnsupportedFeaturesAreNamedNeverIgnored) {
     test::TempDir dir;
     const auto check = [&](const std::string& world, const std::string& expected) {
         const std::string p = dir.write("u.pbrt", std::string(kHeader) + "WorldBegin\n" + world + "\nWorldEnd\n");
-        const std::string e = errorOf(p);
+        const std::string e = test::sceneErrorOf(p);
         EXPECT_NE(e.find(expected), std::string::npos) << e;
     };
     check("Shape \"plymesh\" \"string filename\" \"x.ply\"", "cannot open 'x.ply'");

@@ -77,14 +77,6 @@ TEST(TextureScenes, CheckeredSphereMatchesPbrtV3Conventions) {
     EXPECT_LT(tex1Seen, checked - 100);
 }
 
-std::string errorOf(const std::string& path) {
-    try {
-        parseSceneFile(path);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
 
 const char* kHeader = "LookAt 0 -5 0  0 0 0  0 0 1\nCamera \"perspective\" \"float fov\" 10\n"
                       "Film \"image\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
@@ -95,14 +87,14 @@ TEST(TextureScenes, AttributeEndForgetsTexturesDeclaredInside) {
     const std::string inner = dir.write("inner.pbrt", std::string(kHeader) +
         "AttributeBegin\nTexture \"t\" \"spectrum\" \"constant\" \"rgb value\" [1 0 0]\nAttributeEnd\n"
         "Material \"matte\" \"texture Kd\" \"t\"\nWorldEnd\n");
-    EXPECT_NE(errorOf(inner).find("inner.pbrt:9: Material \"matte\": parameter \"Kd\" names an undeclared spectrum texture \"t\""),
+    EXPECT_NE(test::sceneErrorOf(inner).find("inner.pbrt:9: Material \"matte\": parameter \"Kd\" names an undeclared spectrum texture \"t\""),
               std::string::npos)
-        << errorOf(inner);
+        << test::sceneErrorOf(inner);
     // TransformBegin/End does not scope textures.
     const std::string transformBlock = dir.write("transform.pbrt", std::string(kHeader) +
         "TransformBegin\nTexture \"t\" \"spectrum\" \"constant\" \"rgb value\" [1 0 0]\nTransformEnd\n"
         "Material \"matte\" \"texture Kd\" \"t\"\nWorldEnd\n");
-    EXPECT_EQ(errorOf(transformBlock), "(no error)");
+    EXPECT_EQ(test::sceneErrorOf(transformBlock), "(no error)");
 }
 
 TEST(TextureScenes, RedefinitionInsideABlockEndsWithIt) {

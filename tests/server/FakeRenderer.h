@@ -3,11 +3,11 @@
 // Lets tests drive the queue (limits, cancellation, restarts, crashes) quickly and predictably.
 #include <atomic>
 
-#include "Renderer.h"
+#include "JobRenderer.h"
 
 namespace lenslab {
 
-class FakeRenderer : public Renderer {
+class FakeRenderer : public JobRenderer {
 public:
     RenderedImages render(const RenderJobInput& job, const TileCallback& onTile, const std::atomic<bool>& cancel) override;
     std::vector<std::uint8_t> encodePreview(const Image& partial) const override;

@@ -153,4 +153,9 @@ nlohmann::json waitForRenderState(httplib::Client& client, const std::string& id
     return status;
 }
 
+std::string binaryUnderTest() {
+    const char* other = std::getenv("LENSLAB_SERVER_BINARY");
+    return other && *other ? other : LENSLAB_BINARY;
+}
+
 }  // namespace lenslab::test

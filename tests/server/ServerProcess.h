@@ -54,4 +54,11 @@ bool isExr(const std::string& bytes);
 nlohmann::json waitForRenderState(httplib::Client& client, const std::string& id,
                                   const std::vector<std::string>& states, double timeoutSeconds);
 
+// The lenslab binary the tests start: LENSLAB_SERVER_BINARY when set (to try the tests on another
+// build, e.g. an older one), else this build's.
+std::string binaryUnderTest();
+
+// A small valid lens table (a singlet and a stop).
+inline const std::string kSmallLensTable = "50.0 5.0 1.5 20.0\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
+
 }  // namespace lenslab::test

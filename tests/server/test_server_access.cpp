@@ -15,13 +15,6 @@ using nlohmann::json;
 
 namespace {
 
-std::string binaryUnderTest() {
-    const char* other = std::getenv("LENSLAB_SERVER_BINARY");
-    return other && *other ? other : LENSLAB_BINARY;
-}
-
-const std::string kTable = "50.0 5.0 1.5 20.0\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
-
 class ServerAccess : public ::testing::Test {
 protected:
     std::string tokenFile() const { return data_.path() + "/token"; }
@@ -47,7 +40,7 @@ TEST_F(ServerAccess, WritesNeedTheTokenThatTheFirstStartMadeAndPrinted) {
     EXPECT_NE(server_->output().find(token()), std::string::npos);  // printed once, at creation
 
     auto c = server_->client();
-    const auto refused = c.Post("/api/lenses?name=t.dat", kTable, "text/plain");
+    const auto refused = c.Post("/api/lenses?name=t.dat", kSmallLensTable, "text/plain");
     ASSERT_TRUE(refused);
     EXPECT_EQ(refused->status, 401);
     EXPECT_EQ(refused->get_header_value("WWW-Authenticate"), "Bearer");
@@ -57,9 +50,9 @@ TEST_F(ServerAccess, WritesNeedTheTokenThatTheFirstStartMadeAndPrinted) {
     EXPECT_EQ(get(c, "/api/lenses").status, 200);  // reads stay open
 
     c.set_bearer_token_auth(std::string(47, 'x') + "y");
-    EXPECT_EQ(c.Post("/api/lenses?name=t.dat", kTable, "text/plain")->status, 401);
+    EXPECT_EQ(c.Post("/api/lenses?name=t.dat", kSmallLensTable, "text/plain")->status, 401);
     c.set_bearer_token_auth(token());
-    EXPECT_EQ(c.Post("/api/lenses?name=t.dat", kTable, "text/plain")->status, 201);
+    EXPECT_EQ(c.Post("/api/lenses?name=t.dat", kSmallLensTable, "text/plain")->status, 201);
 
     const std::string first = token();
     server_.reset();
@@ -88,17 +81,17 @@ TEST_F(ServerAccess, ListeningBeyondLoopbackWithoutATokenIsRefused) {
 TEST_F(ServerAccess, NoAuthMustBeAskedForExplicitly) {
     start({"--host", "0.0.0.0", "--no-auth"});
     httplib::Client c("127.0.0.1", server_->port());
-    EXPECT_EQ(c.Post("/api/lenses?name=t.dat", kTable, "text/plain")->status, 201);
+    EXPECT_EQ(c.Post("/api/lenses?name=t.dat", kSmallLensTable, "text/plain")->status, 201);
 }
 
 TEST_F(ServerAccess, CrossOriginRequestsAreRefusedUnlessAllowed) {
     start({"--allow-origin", "http://trusted.example"});
     auto c = server_->client();
     const std::string self = "http://127.0.0.1:" + std::to_string(server_->port());
-    const auto foreign = c.Post("/api/lenses?name=a.dat", {{"Origin", "http://evil.example"}}, kTable, "text/plain");
+    const auto foreign = c.Post("/api/lenses?name=a.dat", {{"Origin", "http://evil.example"}}, kSmallLensTable, "text/plain");
     ASSERT_TRUE(foreign);
     EXPECT_EQ(foreign->status, 403);
     EXPECT_EQ(c.Get("/api/lenses", {{"Origin", "http://evil.example"}})->status, 403);
-    EXPECT_EQ(c.Post("/api/lenses?name=b.dat", {{"Origin", self}}, kTable, "text/plain")->status, 201);
-    EXPECT_EQ(c.Post("/api/lenses?name=c.dat", {{"Origin", "http://trusted.example"}}, kTable, "text/plain")->status, 201);
+    EXPECT_EQ(c.Post("/api/lenses?name=b.dat", {{"Origin", self}}, kSmallLensTable, "text/plain")->status, 201);
+    EXPECT_EQ(c.Post("/api/lenses?name=c.dat", {{"Origin", "http://trusted.example"}}, kSmallLensTable, "text/plain")->status, 201);
 }

@@ -18,11 +18,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::string binaryUnderTest() {
-    const char* other = std::getenv("LENSLAB_SERVER_BINARY");
-    return other && *other ? other : LENSLAB_BINARY;
-}
-
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // A valid lens table of about `bytes` bytes (comment lines between its rows pad it).

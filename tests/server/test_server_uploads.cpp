@@ -13,13 +13,6 @@ using nlohmann::json;
 
 namespace {
 
-std::string binaryUnderTest() {
-    const char* other = std::getenv("LENSLAB_SERVER_BINARY");
-    return other && *other ? other : LENSLAB_BINARY;
-}
-
-const std::string kTable = "50.0 5.0 1.5 20.0\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
-
 class ServerUploads : public ::testing::Test {
 protected:
     void SetUp() override { server_ = std::make_unique<ServerProcess>(binaryUnderTest(), data_.path() + "/data"); }
@@ -32,7 +25,7 @@ protected:
 TEST_F(ServerUploads, UnicodeFileNamesAreKeptForDisplay) {
     auto c = server_->client();
     const std::string name = "\xc3\xbcn\xc3\xaf" "c\xc3\xb8" "d\xc3\xa9-\xf0\x9f\x94\xad-\xe9\x95\x9c\xe5\xa4\xb4.dat";  // ünïcødé-🔭-镜头.dat
-    const auto r = c.Post("/api/lenses", httplib::MultipartFormDataItems{{"file", kTable, name, "text/plain"}});
+    const auto r = c.Post("/api/lenses", httplib::MultipartFormDataItems{{"file", kSmallLensTable, name, "text/plain"}});
     ASSERT_TRUE(r);
     ASSERT_EQ(r->status, 201) << r->body;
     const json lens = json::parse(r->body);
@@ -47,7 +40,7 @@ TEST_F(ServerUploads, UnicodeFileNamesAreKeptForDisplay) {
 TEST_F(ServerUploads, MalformedUtf8AndControlsAreDroppedFromNames) {
     auto c = server_->client();
     const std::string name = "a\xff\xfe" "b\xe2\x80\xae" "c.dat";  // invalid bytes and a right-to-left override
-    const auto r = c.Post("/api/lenses", httplib::MultipartFormDataItems{{"file", kTable, name, "text/plain"}});
+    const auto r = c.Post("/api/lenses", httplib::MultipartFormDataItems{{"file", kSmallLensTable, name, "text/plain"}});
     ASSERT_TRUE(r);
     ASSERT_EQ(r->status, 201) << r->body;
     EXPECT_EQ(json::parse(r->body)["name"], "abc.dat");
@@ -55,10 +48,10 @@ TEST_F(ServerUploads, MalformedUtf8AndControlsAreDroppedFromNames) {
 
 TEST_F(ServerUploads, AByteOrderMarkIsAccepted) {
     auto c = server_->client();
-    const auto r = c.Post("/api/lenses?name=bom.dat", "\xef\xbb\xbf" + kTable, "text/plain");
+    const auto r = c.Post("/api/lenses?name=bom.dat", "\xef\xbb\xbf" + kSmallLensTable, "text/plain");
     ASSERT_TRUE(r);
     EXPECT_EQ(r->status, 201) << r->body;
-    const auto commented = c.Post("/api/lenses?name=bom2.dat", "\xef\xbb\xbf# a lens\n" + kTable, "text/plain");
+    const auto commented = c.Post("/api/lenses?name=bom2.dat", "\xef\xbb\xbf# a lens\n" + kSmallLensTable, "text/plain");
     ASSERT_TRUE(commented);
     ASSERT_EQ(commented->status, 201) << commented->body;
     EXPECT_EQ(json::parse(commented->body)["description"], "a lens");
@@ -66,7 +59,7 @@ TEST_F(ServerUploads, AByteOrderMarkIsAccepted) {
 
 TEST_F(ServerUploads, OverlongDescriptionsAreRefused) {
     auto c = server_->client();
-    const Reply r = postRaw(c, "/api/lenses?name=long.dat", "# " + std::string(5000, 'x') + "\n" + kTable);
+    const Reply r = postRaw(c, "/api/lenses?name=long.dat", "# " + std::string(5000, 'x') + "\n" + kSmallLensTable);
     EXPECT_EQ(r.status, 400) << r.raw.substr(0, 200);
     EXPECT_NE(r.raw.find("4096"), std::string::npos);
     EXPECT_EQ(get(c, "/api/lenses").raw.find(std::string(100, 'x')), std::string::npos);

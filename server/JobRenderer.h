@@ -27,10 +27,10 @@ struct RenderedImages {
     nlohmann::json stats = nlohmann::json::object();
 };
 
-class Renderer {
+class JobRenderer {
 public:
     using TileCallback = std::function<void(const TileUpdate&, const Image&)>;
-    virtual ~Renderer() = default;
+    virtual ~JobRenderer() = default;
     // Renders the job; onTile is called (serialised) after each finished tile with the image so
     // far. Throws RenderCancelled once `cancel` turns true, any std::exception on failure.
     virtual RenderedImages render(const RenderJobInput& job, const TileCallback& onTile,
