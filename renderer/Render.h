@@ -23,7 +23,7 @@ struct CameraOverrides {
     std::optional<Setting> fstop;
     std::optional<Setting> focusDistance;  // front vertex to the plane of focus
     std::optional<double> filmDiagonal;
-    std::optional<std::string> mode;       // "accurate" | "approximate" | "auto"
+    std::optional<std::string> mode;       // "exact" | "thick" | "auto"
 };
 
 struct RenderSettings {

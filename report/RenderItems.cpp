@@ -132,8 +132,8 @@ RenderPair buildRenderPair(ItemRunner& runner, const SceneSource& scene, const L
     pair.lensId = lens.facts.id;
     const int height = heightFor(scene, plan.width);
     const double fstop = renderFstopFor(lens, o.renderFstop);
-    const RenderJob accurate{scene, lens, "accurate", plan.spp, plan.width, height, fstop};
-    const RenderJob approximate{scene, lens, "approximate", plan.spp, plan.width, height, fstop};
+    const RenderJob accurate{scene, lens, "exact", plan.spp, plan.width, height, fstop};
+    const RenderJob approximate{scene, lens, "thick", plan.spp, plan.width, height, fstop};
     const std::optional<RenderRecord> accurateRecord = renderItem(runner, accurate, o.threads);
     const std::optional<RenderRecord> approximateRecord = renderItem(runner, approximate, o.threads);
     const std::string label = "difference " + lens.facts.id + " in " + scene.id;
@@ -176,8 +176,8 @@ SpeedStudy buildSpeedStudy(ItemRunner& runner, const ReportScene& scene, const L
         if (p.lensId == lens.facts.id && p.problem.empty()) reference = &p;
     const int height = heightFor(scene.scene, plan.width);
     const double fstop = renderFstopFor(lens, o.renderFstop);
-    const RenderJob referenceJob{scene.scene, lens, "accurate", plan.spp, plan.width, height, fstop};
-    for (const char* mode : {"accurate", "approximate"})
+    const RenderJob referenceJob{scene.scene, lens, "exact", plan.spp, plan.width, height, fstop};
+    for (const char* mode : {"exact", "thick"})
         for (int spp : plan.speedSpps) {
             const std::string label = "speed study " + std::string(mode) + " at " + std::to_string(spp) + " spp";
             if (!reference) {
@@ -200,7 +200,7 @@ SpeedStudy buildSpeedStudy(ItemRunner& runner, const ReportScene& scene, const L
             if (item) study.points.push_back({mode, spp, item->data.at("seconds").get<double>(), item->data.at("rms").get<double>()});
         }
     if (reference)
-        study.points.push_back({"approximate", plan.spp, reference->approximate.setupSeconds + reference->approximate.renderSeconds,
+        study.points.push_back({"thick", plan.spp, reference->approximate.setupSeconds + reference->approximate.renderSeconds,
                                 reference->rmsDifference});
     return study;
 }

@@ -24,7 +24,7 @@ struct LensEntry {
 
 struct RenderRecord {
     std::string image;  // relative to the site folder
-    std::string mode;   // "accurate" | "approximate"
+    std::string mode;   // "exact" | "thick"
     int width = 0, height = 0, spp = 0;
     double fstop = 0;
     double exposure = 1;  // PNG scale of the linear image

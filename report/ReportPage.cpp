@@ -222,9 +222,9 @@ void sceneArticle(std::ostringstream& out, const ReportScene& s) {
         const int w = p.accurate.width, h = p.accurate.height;
         out << "<div class=\"triptych\">\n"
             << figure(img(p.accurate.image, s.scene.id + " through " + p.lensId + ", exact lens trace", w, h),
-                      "Accurate: exact trace through the lens")
+                      "Exact: every ray traced through the lens")
             << figure(img(p.approximate.image, s.scene.id + " through " + p.lensId + ", thick-lens camera", w, h),
-                      "Approximate: thick lens")
+                      "Thick: the thick-lens model")
             << figure(img(p.differenceImage, "difference between the two renders", w, h),
                       "|difference| \u00d7 " + formatNumber(p.differenceGain, 3) + ", RMS " + formatFixed(p.rmsDifference, 2) +
                           " of 255")
@@ -277,8 +277,8 @@ void comparisonPlots(std::ostringstream& out, const ReportContent& c) {
         speed.x.logarithmic = speed.y.logarithmic = true;
         speed.width = 640;
         speed.height = 360;
-        for (const char* mode : {"accurate", "approximate"}) {
-            PlotSeries s{std::string(mode) == "accurate" ? "accurate (exact trace)" : "approximate (thick lens)", {}, {}};
+        for (const char* mode : {"exact", "thick"}) {
+            PlotSeries s{std::string(mode) == "exact" ? "exact (every ray through the lens)" : "thick (thick-lens model)", {}, {}};
             s.style = SeriesStyle::LineAndMarkers;
             for (const SpeedPoint& p : c.speed.points)
                 if (p.mode == mode) {

@@ -5,6 +5,7 @@
 
 #include "HttpError.h"
 #include "Identifiers.h"
+#include "LensModeMap.h"
 
 namespace lenslab {
 
@@ -68,8 +69,9 @@ RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, c
     r.focusDistance = fieldNumber(body, "focaldistance", -kAny, kAny);
     r.filmDiagonal = fieldNumber(body, "filmdiagonal", 1, 500);
     r.mode = fieldText(body, "mode", r.mode);
-    if (r.mode != "accurate" && r.mode != "approximate" && r.mode != "auto")
-        throw HttpError(400, "mode must be accurate|approximate|auto, got '" + r.mode.substr(0, 40) + "'");
+    const std::optional<LensMode> mode = parseLensMode(r.mode);
+    if (!mode) throw HttpError(400, "mode must be exact|thick|auto, got '" + r.mode.substr(0, 40) + "'");
+    r.mode = lensModeName(*mode);  // round one's accurate/approximate, stored under today's names
     r.spp = fieldInteger(body, "spp", r.spp, 1, limits.maxSpp, "the service's spp limit");
     r.width = fieldInteger(body, "width", r.width, 8, limits.maxWidth, "the service's width limit");
     r.height = fieldInteger(body, "height", r.height, 8, limits.maxHeight, "the service's height limit");

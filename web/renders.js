@@ -12,7 +12,8 @@ const VIEWED_KEY = "lenslab.viewer";  // the renders last open in the viewer, fo
 const items = new Map();  // render id -> { job, element, parts }
 
 const isOver = (state) => ["done", "failed", "cancelled"].includes(state);
-const modeLabel = (mode) => ({ approximate: "approximate", auto: "auto" }[mode] || "accurate");
+// Jobs from before the lens model's one vocabulary say accurate / approximate.
+const modeLabel = (mode) => ({ accurate: "exact", approximate: "thick" }[mode] || mode);
 
 function renderRequest(mode) {
   const request = {
@@ -257,5 +258,5 @@ export async function loadHistory() {
 
 export function setUpRenderPanel() {
   $("render-form").addEventListener("submit", (e) => { e.preventDefault(); submitRenders([$("render-mode").value]); });
-  $("compare-button").addEventListener("click", () => submitRenders(["accurate", "approximate"]));
+  $("compare-button").addEventListener("click", () => submitRenders(["exact", "thick"]));
 }

@@ -78,9 +78,9 @@ int main(int argc, char** argv) {
     const std::string perspective = perspectiveScene(scene);
     const std::vector<std::pair<std::string, lenslab::RenderSettings>> runs = {
         {"perspective", settings(perspective, nullptr, 2)},
-        {"accurate", settings(scene, "accurate", 2)},
-        {"approximate", settings(scene, "approximate", 2)},
-        {"accurate, 1 thread", settings(scene, "accurate", 1)},
+        {"exact", settings(scene, "exact", 2)},
+        {"thick", settings(scene, "thick", 2)},
+        {"accurate, 1 thread", settings(scene, "exact", 1)},
         {"perspective, 1 thread", settings(perspective, nullptr, 1)}};
     std::map<std::string, std::vector<Cost>> costs;
     for (int r = 0; r < rounds; ++r)

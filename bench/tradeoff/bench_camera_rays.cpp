@@ -38,7 +38,7 @@ Workload makeWorkload(const LensCase& lens, const StopCase& stop, const FieldCas
     RealisticParams p = realisticParams(lens.path, stop.fstop, kFocusDistanceMm);
     p.filmDiagonalMm = filmDiagonalMm();
     w.accurate = std::make_shared<RealisticCamera>(p, Transform{}, kFrameWidth, kFrameHeight, 0.5);
-    p.mode = LensMode::Approximate;
+    p.mode = LensMode::Thick;
     w.approximate = std::make_shared<RealisticCamera>(p, Transform{}, kFrameWidth, kFrameHeight, 0.5);
     w.samples = fieldSamples(field.fraction, kFrameWidth, kFrameHeight, kRays);
     const Pupil& xp = w.approximate->analysis().pupils.exit;

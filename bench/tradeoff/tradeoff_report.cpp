@@ -19,7 +19,7 @@ using namespace lenslab::tradeoff;
 
 namespace {
 
-const std::vector<std::string> kModes = {"accurate", "approximate", "auto"};
+const std::vector<std::string> kModes = {"exact", "thick", "auto"};
 const std::vector<int> kSppLadder = {1, 2, 4, 8, 16, 32, 64};
 constexpr int kTableSpp = 16;
 constexpr int kReferenceSpp = 256, kConvergenceReferenceSpp = 1024;
@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
     for (const LensCase& lens : lensCases())
         for (const StopCase& stop : stopCases()) {
             const bool convergenceStop = stop.label == kConvergenceStop;
-            const Image reference = renderFrame(lens, stop, "accurate", kFrameWidth, kFrameHeight,
+            const Image reference = renderFrame(lens, stop, "exact", kFrameWidth, kFrameHeight,
                                                 convergenceStop ? kConvergenceReferenceSpp : kReferenceSpp).image;
             if (convergenceStop) convergenceReference[lens.name] = reference;
             CaseFrames c;
@@ -107,11 +107,11 @@ int main(int argc, char** argv) {
                 c.frames[mode] = bestOf(lens, stop, mode, kTableSpp);
                 c.rmse[mode] = relativeRmse(c.frames[mode].image, reference);
             }
-            const double faster = std::min(c.frames["accurate"].seconds(), c.frames["approximate"].seconds());
+            const double faster = std::min(c.frames["exact"].seconds(), c.frames["thick"].seconds());
             std::printf("| %s | %s | %s | %.3f | %.3f | %.3f | %.2f | %.4f | %.4f | %.4f |\n", lens.name.c_str(),
-                        stop.label.c_str(), c.frames["auto"].split.c_str(), c.frames["accurate"].seconds(),
-                        c.frames["approximate"].seconds(), c.frames["auto"].seconds(), c.frames["auto"].seconds() / faster,
-                        c.rmse["accurate"], c.rmse["approximate"], c.rmse["auto"]);
+                        stop.label.c_str(), c.frames["auto"].split.c_str(), c.frames["exact"].seconds(),
+                        c.frames["thick"].seconds(), c.frames["auto"].seconds(), c.frames["auto"].seconds() / faster,
+                        c.rmse["exact"], c.rmse["thick"], c.rmse["auto"]);
             std::fflush(stdout);
         }
 
@@ -150,7 +150,7 @@ int main(int argc, char** argv) {
         }
         panels.push_back(std::move(panel));
         // Auto against the faster mode, at the error accurate reaches with kTableSpp samples.
-        const double target = curves["accurate"].first[std::find(kSppLadder.begin(), kSppLadder.end(), kTableSpp) -
+        const double target = curves["exact"].first[std::find(kSppLadder.begin(), kSppLadder.end(), kTableSpp) -
                                                        kSppLadder.begin()];
         char line[512];
         const auto when = [&](const std::string& mode) {
@@ -160,8 +160,8 @@ int main(int argc, char** argv) {
             else std::snprintf(b, sizeof b, "%.3f", s);
             return std::string(b);
         };
-        std::snprintf(line, sizeof line, "| %s | %.4f | %s | %s | %s |", lens.name.c_str(), target, when("accurate").c_str(),
-                      when("approximate").c_str(), when("auto").c_str());
+        std::snprintf(line, sizeof line, "| %s | %.4f | %s | %s | %s |", lens.name.c_str(), target, when("exact").c_str(),
+                      when("thick").c_str(), when("auto").c_str());
         reach.push_back(line);
     }
     std::printf("\n### Seconds per frame to reach accurate's %d-spp error (%s; interpolated along the curves above)\n\n",

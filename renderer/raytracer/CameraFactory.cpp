@@ -133,9 +133,9 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     }
     const double sceneDiagonal = p.has("filmdiag") ? p.getFloat("filmdiag", 35) : p.getFloat("filmdiagonal", scene.film.diagonalMm);
     r.filmDiagonalMm = o.filmDiagonal.value_or(sceneDiagonal);
-    const std::string mode = o.mode.value_or(p.getString("mode", "accurate"));
+    const std::string mode = o.mode.value_or(p.getString("mode", "exact"));
     const std::optional<LensMode> lensMode = parseLensMode(mode);
-    if (!lensMode) p.fail("mode must be accurate|approximate|auto, got \"" + mode + "\"");
+    if (!lensMode) p.fail("mode must be exact|thick|auto, got \"" + mode + "\"");
     r.mode = *lensMode;
     r.autoThresholdPixels = p.getFloat("autothreshold", r.autoThresholdPixels);
     r.crop = scene.film.crop;  // the effective window: the render settings' crop overrides the scene's

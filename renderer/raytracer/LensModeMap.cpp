@@ -8,16 +8,18 @@ namespace lenslab {
 
 const char* lensModeName(LensMode mode) {
     switch (mode) {
-        case LensMode::Accurate: return "accurate";
-        case LensMode::Approximate: return "approximate";
+        case LensMode::Exact: return "exact";
+        case LensMode::Thick: return "thick";
         case LensMode::Auto: return "auto";
     }
     return "?";
 }
 
 std::optional<LensMode> parseLensMode(const std::string& name) {
-    for (LensMode m : {LensMode::Accurate, LensMode::Approximate, LensMode::Auto})
+    for (LensMode m : {LensMode::Exact, LensMode::Thick, LensMode::Auto})
         if (name == lensModeName(m)) return m;
+    if (name == "accurate") return LensMode::Exact;
+    if (name == "approximate") return LensMode::Thick;
     return std::nullopt;
 }
 

@@ -10,9 +10,12 @@
 
 namespace lenslab {
 
-enum class LensMode { Accurate, Approximate, Auto };
+enum class LensMode { Exact, Thick, Auto };
 
-// "accurate" | "approximate" | "auto", both ways; nullopt for any other name.
+// The lens model: "exact" (every ray traced through every surface), "thick" (the thick-lens
+// model), "auto" (per film radius) — the words diagrams use too. parseLensMode also takes round
+// one's "accurate" and "approximate", so older scenes and API clients keep working; nullopt for
+// any other name.
 const char* lensModeName(LensMode mode);
 std::optional<LensMode> parseLensMode(const std::string& name);
 

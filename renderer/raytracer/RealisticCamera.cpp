@@ -46,15 +46,15 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     const double fullFrameRadius = findFilmRadiusRange(filmMarginPixels);
 
     LensSettings settings = params.settings;
-    settings.focusModel = params.mode == LensMode::Approximate ? FocusModel::Thick : FocusModel::Exact;
+    settings.focusModel = params.mode == LensMode::Thick ? FocusModel::Thick : FocusModel::Exact;
     analysis_ = analyzeLens(params.lens, settings);
     filmZExact_ = analysis_.focus.imageZExact;
     filmZThick_ = analysis_.focus.imageZThick;
 
     const double pixelMm = params.filmDiagonalMm / diag;
     switch (params.mode) {
-        case LensMode::Accurate: modes_ = LensModeMap::exactEverywhere(minFilmRadius_, maxFilmRadius_); break;
-        case LensMode::Approximate: modes_ = LensModeMap::thickEverywhere(minFilmRadius_, maxFilmRadius_); break;
+        case LensMode::Exact: modes_ = LensModeMap::exactEverywhere(minFilmRadius_, maxFilmRadius_); break;
+        case LensMode::Thick: modes_ = LensModeMap::thickEverywhere(minFilmRadius_, maxFilmRadius_); break;
         case LensMode::Auto:
             errors_ = measureThickLensFilmError(analysis_, minFilmRadius_, maxFilmRadius_);
             modes_ = LensModeMap::fromErrors(errors_, params.autoThresholdPixels * pixelMm);
@@ -119,7 +119,7 @@ double RealisticCamera::exactCentreWeight() const {
     return sampleExitPupil(centre, 0, 0, 0.5, 0.5).area / (dz * dz);
 }
 
-double RealisticCamera::filmZ() const { return params_.mode == LensMode::Approximate ? filmZThick_ : filmZExact_; }
+double RealisticCamera::filmZ() const { return params_.mode == LensMode::Thick ? filmZThick_ : filmZExact_; }
 
 void RealisticCamera::filmPoint(double rasterX, double rasterY, double& x, double& y) const {
     const double sx = 2.0 * rasterX / width_ - 1.0;   // -1 left, +1 right

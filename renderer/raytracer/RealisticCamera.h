@@ -1,6 +1,6 @@
 #pragma once
 // The realistic camera of Kolb, Mitchell & Hanrahan (1995): rays from the film through a real lens
-// (exact trace, "accurate"), its thick-lens model ("approximate"), or each by film radius ("auto":
+// (exact trace, "exact"), its thick-lens model ("thick"), or each by film radius ("auto":
 // the thick lens where its predicted error stays under a threshold). Lens space is millimetres with
 // the origin at the front vertex and +z toward the scene, like pbrt's camera space; a lens-space
 // ray leaving the front element maps to camera space by dividing by the millimetres of one camera
@@ -35,7 +35,7 @@ struct RealisticParams {
     double cameraUnitMm = 1000;            // millimetres per camera-space unit (1: course, 1000: pbrt-v3)
     ApertureShape aperture;                // pbrt-v4's shape of the stop's opening
     double filmDiagonalMm = 35;
-    LensMode mode = LensMode::Accurate;
+    LensMode mode = LensMode::Exact;
     double autoThresholdPixels = 0.5;      // auto: the largest predicted thick-lens film error allowed
     // The rendered part of the image, x0, x1, y0, y1 as fractions (pbrt's cropwindow): only the film
     // radii it reaches are prepared (error map, exit-pupil bounds).

@@ -183,13 +183,13 @@ async function checkCompare(page) {
   const boxes = await page.$$eval("#viewer-panes canvas", (cs) => cs.map((c) => { const r = c.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; }));
   const [a, b, d] = boxes;
   check(boxes.length === 3 && a[2] > 100 && [b, d].every((x) => Math.abs(x[1] - a[1]) < 1 && Math.abs(x[2] - a[2]) < 1 && Math.abs(x[3] - a[3]) < 1) &&
-        a[0] < b[0] && b[0] < d[0], `compare: accurate, approximate and |difference| in one row, ${a[2].toFixed(0)}x${a[3].toFixed(0)} each`);
+        a[0] < b[0] && b[0] < d[0], `compare: exact, thick and |difference| in one row, ${a[2].toFixed(0)}x${a[3].toFixed(0)} each`);
   const stats = await page.textContent("#difference-stats");
   check(/RMSE \d/.test(stats) && /worst pixel \(\d+, \d+\)/.test(stats), `the difference has its numbers: "${stats.slice(0, 60)}…"`);
   const [x, y] = [a[0] + a[2] / 2, a[1] + a[3] / 2];
   await page.mouse.move(x, y);
   const readout = await page.textContent("#pixel-readout");
-  check(/accurate: [\d.e-]+, [\d.e-]+, [\d.e-]+ · approximate: [\d.e-]+/.test(readout), `hover shows linear RGB: "${readout.slice(0, 90)}…"`);
+  check(/exact: [\d.e-]+, [\d.e-]+, [\d.e-]+ · thick: [\d.e-]+/.test(readout), `hover shows linear RGB: "${readout.slice(0, 90)}…"`);
   await page.click("#zoom-in");
   const transforms = await page.$$eval("#viewer-panes .stage", (ss) => ss.map((s) => s.style.transform));
   check(transforms.length === 3 && new Set(transforms).size === 1 && transforms[0].includes("scale(2)"), `zoom is shared: ${transforms[0]}`);
@@ -204,7 +204,7 @@ async function checkCompare(page) {
   await page.selectOption("#compare-mode", "flicker");
   const seen = new Set();
   for (let k = 0; k < 8; k++) { seen.add(await page.textContent("#viewer-panes figcaption")); await page.waitForTimeout(200); }
-  check(seen.has("accurate") && seen.has("approximate"), "flicker mode alternates the two");
+  check(seen.has("exact") && seen.has("thick"), "flicker mode alternates the two");
   await page.selectOption("#compare-mode", "side");
 }
 

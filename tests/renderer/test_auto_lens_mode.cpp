@@ -47,11 +47,11 @@ TEST(AutoLensMode, TelephotoAtF11UsesTheThickLensEverywhereOnASmallFrameButNotOn
 }
 
 TEST(AutoLensMode, AccurateAndApproximateModesKeepOneModelEverywhere) {
-    const RealisticCamera accurate(params("dgauss.50mm.dat", 4, LensMode::Accurate), {}, 240, 160, 0.5);
+    const RealisticCamera accurate(params("dgauss.50mm.dat", 4, LensMode::Exact), {}, 240, 160, 0.5);
     EXPECT_FALSE(accurate.lensModes().usesThick());
     EXPECT_EQ(accurate.pupilBounds().radiusCount(), 64);
     EXPECT_TRUE(accurate.thickLensErrors().empty());
-    const RealisticCamera approximate(params("dgauss.50mm.dat", 4, LensMode::Approximate), {}, 240, 160, 0.5);
+    const RealisticCamera approximate(params("dgauss.50mm.dat", 4, LensMode::Thick), {}, 240, 160, 0.5);
     EXPECT_FALSE(approximate.lensModes().usesExact());
     EXPECT_EQ(approximate.pupilBounds().radiusCount(), 0);
 }
@@ -123,7 +123,7 @@ TEST(AutoLensMode, AutoImageIsTheApproximateOneWhereThickAndTheAccurateOneWhereE
     const auto render = [&](const std::string& mode) {
         return test::render(dir.write(mode + ".pbrt", fisheyeWall(mode)), kSize, kSize, 4).image;
     };
-    const Image accurate = render("accurate"), approximate = render("approximate"), automatic = render("auto");
+    const Image accurate = render("exact"), approximate = render("thick"), automatic = render("auto");
     RealisticParams p = realisticParams(test::lensPath("fisheye.10mm.dat"), 5.6, 3000);
     p.filmDiagonalMm = 33.94;
     p.mode = LensMode::Auto;
@@ -169,13 +169,32 @@ TEST(AutoLensMode, ModeAutoIsAcceptedAsAnOverrideAndABadModeNamesTheChoices) {
         test::render(scene, 16, 16, 1, s);
         FAIL() << "mode \"fast\" was accepted";
     } catch (const SceneError& e) {
-        EXPECT_NE(std::string(e.what()).find("mode must be accurate|approximate|auto, got \"fast\""), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("mode must be exact|thick|auto, got \"fast\""), std::string::npos)
             << e.what();
     }
     const std::string threshold = dir.write("t.pbrt",
         test::courseCamera("dgauss.50mm.dat", "\"string mode\" \"auto\" \"float autothreshold\" 0\n") +
         "Film \"image\"\nWorldBegin\nWorldEnd\n");
     EXPECT_THROW(test::render(threshold, 16, 16, 1), SceneError);
+}
+
+}  // namespace
+}  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// One vocabulary for the lens model (exact, thick, auto, as the diagrams say it); round one's
+// names still read, and come back under today's.
+TEST(LensModeNames, ExactThickAutoWithRoundOnesNamesAccepted) {
+    EXPECT_EQ(parseLensMode("exact"), LensMode::Exact);
+    EXPECT_EQ(parseLensMode("thick"), LensMode::Thick);
+    EXPECT_EQ(parseLensMode("auto"), LensMode::Auto);
+    EXPECT_EQ(parseLensMode("accurate"), LensMode::Exact);
+    EXPECT_EQ(parseLensMode("approximate"), LensMode::Thick);
+    EXPECT_FALSE(parseLensMode("overlay").has_value());
+    EXPECT_STREQ(lensModeName(LensMode::Exact), "exact");
+    EXPECT_STREQ(lensModeName(LensMode::Thick), "thick");
 }
 
 }  // namespace

@@ -47,12 +47,12 @@ void expectBatchEqualsScalar(LensMode mode, const std::string& lens) {
 
 TEST(BatchedCamera, AccurateRaysEqualScalarRaysBitForBit) {
     for (const char* lens : {"dgauss.50mm.dat", "wide.22mm.dat", "telephoto.250mm.dat", "fisheye.10mm.dat"})
-        expectBatchEqualsScalar(LensMode::Accurate, lens);
+        expectBatchEqualsScalar(LensMode::Exact, lens);
 }
 
 TEST(BatchedCamera, AutoAndApproximateRaysEqualScalarRaysBitForBit) {
     expectBatchEqualsScalar(LensMode::Auto, "dgauss.50mm.dat");  // thick at the centre, exact beyond
-    expectBatchEqualsScalar(LensMode::Approximate, "dgauss.50mm.dat");
+    expectBatchEqualsScalar(LensMode::Thick, "dgauss.50mm.dat");
 }
 
 }  // namespace

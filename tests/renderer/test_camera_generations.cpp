@@ -108,12 +108,12 @@ TEST(CameraGenerations, FilmDistancePlacesTheFilmWhereTheFocusSolvePutsIt) {
     const LensSystem lens = loadLensSystem(test::lensPath("dgauss.dat"));
     const double fstop = 4, focus = 2500;
     const LensAnalysis a = analyzeLens(lens, fstop, focus);
-    for (const LensMode mode : {LensMode::Accurate, LensMode::Approximate}) {
+    for (const LensMode mode : {LensMode::Exact, LensMode::Thick}) {
         RealisticParams focused = realisticParams(test::lensPath("dgauss.dat"), fstop, focus);
         focused.mode = mode;
         focused.cameraUnitMm = 1;
         RealisticParams placed = focused;
-        const double filmZ = mode == LensMode::Accurate ? a.focus.imageZExact : a.focus.imageZThick;
+        const double filmZ = mode == LensMode::Exact ? a.focus.imageZExact : a.focus.imageZThick;
         placed.settings.focusDistance.reset();
         placed.settings.filmDistance = Setting{lens.rearZ() - filmZ, "filmdistance"};
         const RealisticCamera f(focused, Transform(), 64, 48, 0), p(placed, Transform(), 64, 48, 0);
@@ -301,7 +301,7 @@ struct Bokeh {
 // A small glowing ball 0.5 m ahead of dgauss.50mm wide open and focused at 100 m: its blur spot (about
 // 22 pixels across here) is the stop's shape, widened a little by the ball's own image. Intensity-
 // weighted angular moments measure the shape without thresholding the noise. mode: the lens model.
-Bokeh bokeh(const std::string& aperture, const std::string& mode = "accurate") {
+Bokeh bokeh(const std::string& aperture, const std::string& mode = "exact") {
     test::TempDir dir;
     const std::string scene = dir.write("bokeh.pbrt",
         test::courseCamera("dgauss.50mm.dat", "\"float focaldistance\" 100000 \"float filmdiag\" 35 "
@@ -345,7 +345,7 @@ TEST(ApertureShapes, ASquareApertureMakesSquareBokehOfTheSameBrightness) {
     EXPECT_NEAR(square.twofold, 0, 0.05);
     EXPECT_NEAR(square.total / circle.total, 1.0, 0.05);
     // The thick lens meets the shape at the exit pupil, the stop's image.
-    EXPECT_LT(bokeh("square", "approximate").fourfold, -0.15);
+    EXPECT_LT(bokeh("square", "thick").fourfold, -0.15);
 }
 
 }  // namespace

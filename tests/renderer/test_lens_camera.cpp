@@ -102,7 +102,7 @@ Blur measureBlur(const std::string& mode) {
     m2 = m2 / sum * pixelMm * pixelMm - pixelMm * pixelMm / 6;
     // Thick-lens prediction: the cone from the exit pupil converging on the ball's image, cut by the film.
     const LensAnalysis a = analyzeLens(loadLensSystem(test::lensPath("dgauss.dat")), fstop, focus);
-    const double filmZ = mode == "accurate" ? a.focus.imageZExact : a.focus.imageZThick;
+    const double filmZ = mode == "exact" ? a.focus.imageZExact : a.focus.imageZThick;
     const double zeta = object - a.firstOrder.zP;  // object at z = +object (front vertex at 0)
     const double f = a.firstOrder.efl;
     const double imageZ = a.firstOrder.zPPrime - f * zeta / (zeta - f);
@@ -114,14 +114,14 @@ Blur measureBlur(const std::string& mode) {
 }
 
 TEST(LensCamera, DefocusBlurMatchesThickLensCircleOfConfusionApproximate) {
-    const Blur b = measureBlur("approximate");
+    const Blur b = measureBlur("thick");
     RecordProperty("blur_radius_mm", num(b.radiusMm));
     RecordProperty("predicted_mm", num(b.predictedMm));
     EXPECT_NEAR(b.radiusMm / b.predictedMm, 1.0, 0.05) << b.radiusMm << " vs " << b.predictedMm;
 }
 
 TEST(LensCamera, DefocusBlurMatchesThickLensCircleOfConfusionAccurate) {
-    const Blur b = measureBlur("accurate");
+    const Blur b = measureBlur("exact");
     RecordProperty("blur_radius_mm", num(b.radiusMm));
     RecordProperty("predicted_mm", num(b.predictedMm));
     EXPECT_NEAR(b.radiusMm / b.predictedMm, 1.0, 0.10) << b.radiusMm << " vs " << b.predictedMm;
@@ -142,7 +142,7 @@ void checkCosFourthFalloff(const std::string& mode, double tolerance) {
         "AttributeEnd\nWorldEnd\n");
     const Image im = test::render(scene, res, res, 64).image;
     const LensAnalysis a = analyzeLens(loadLensSystem(test::lensPath("dgauss.dat")), fstop, focus);
-    const double filmZ = mode == "accurate" ? a.focus.imageZExact : a.focus.imageZThick, xpZ = a.pupils.exit.z, xpR = 0.5 * a.pupils.exit.diameter;
+    const double filmZ = mode == "exact" ? a.focus.imageZExact : a.focus.imageZThick, xpZ = a.pupils.exit.z, xpR = 0.5 * a.pupils.exit.diameter;
     const double pixelMm = diag / std::hypot(res, res);
     // Average 2x2 pixels around points along the diagonal (where the falloff is largest).
     const auto measured = [&](int k) {
@@ -168,10 +168,10 @@ void checkCosFourthFalloff(const std::string& mode, double tolerance) {
 }
 
 // The thick lens's pupil is an exact disc: the small-pupil cos^4 law holds to a percent.
-TEST(LensCamera, WhiteWallFallsOffAsCosFourthApproximate) { checkCosFourthFalloff("approximate", 0.01); }
+TEST(LensCamera, WhiteWallFallsOffAsCosFourthApproximate) { checkCosFourthFalloff("thick", 0.01); }
 
 // The real double Gauss adds pupil aberration (its exit pupil looks larger off axis): within 5%.
-TEST(LensCamera, WhiteWallFallsOffAsCosFourthAccurate) { checkCosFourthFalloff("accurate", 0.05); }
+TEST(LensCamera, WhiteWallFallsOffAsCosFourthAccurate) { checkCosFourthFalloff("exact", 0.05); }
 
 // The row of a thin glowing horizontal bar above the axis, per column (intensity-weighted).
 std::vector<double> barRows(const std::string& camera, int res) {

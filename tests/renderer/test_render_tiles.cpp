@@ -92,7 +92,7 @@ TEST(RenderTiles, MetadataNamesTheLens) {
     const RenderOutput out = test::render(sharedWorld("dgauss"), 16, 16, 1);
     EXPECT_EQ(out.metadata.at("camera"), "realistic");
     EXPECT_EQ(out.metadata.at("fstop"), "4");
-    EXPECT_EQ(out.metadata.at("mode"), "accurate");
+    EXPECT_EQ(out.metadata.at("mode"), "exact");
     EXPECT_EQ(out.metadata.at("focusDistanceMm"), "5500");
     EXPECT_LT(double(out.stats.blockedCameraRays) / out.stats.cameraRays, 0.05);
 }

@@ -115,7 +115,7 @@ TEST_F(ReportPage, EveryLensAndSceneAppears) {
     for (const std::string& scene : scenes) {
         EXPECT_NE(html_.find("id=\"scene-" + scene + "\""), std::string::npos) << scene;
         for (const std::string& lens : kCommonScale)
-            for (const char* kind : {"accurate", "approximate", "difference"})
+            for (const char* kind : {"exact", "thick", "difference"})
                 EXPECT_NE(html_.find("src=\"assets/renders/" + scene + "/" + lens + "-" + kind + ".png\""), std::string::npos)
                     << scene << " " << lens << " " << kind;
     }

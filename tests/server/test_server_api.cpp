@@ -268,7 +268,7 @@ TEST_F(ServerApi, RendersASmallSceneWithTheRayTracer) {
     const std::string scene = scenes.body["scenes"][0]["id"];
     const Reply submitted = postJson(c, "/api/renders",
                                      {{"scene", scene}, {"lens", "dgauss.50mm"}, {"fstop", 4}, {"focaldistance", 2000},
-                                      {"mode", "accurate"}, {"spp", 4}, {"width", 64}, {"height", 64}});
+                                      {"mode", "exact"}, {"spp", 4}, {"width", 64}, {"height", 64}});
     ASSERT_EQ(submitted.status, 202) << submitted.raw;
     const std::string id = submitted.body["id"];
     const json done = waitForRenderState(c, id, {"done", "failed", "cancelled"}, 120);

@@ -26,11 +26,11 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
     const RenderRequest r = parseRenderRequest(json::object(), limits, "cornell");
     EXPECT_EQ(r.scene, "cornell");
     EXPECT_EQ(r.lens, "dgauss.50mm");
-    EXPECT_EQ(r.mode, "accurate");
+    EXPECT_EQ(r.mode, "exact");
     EXPECT_FALSE(r.fstop.has_value());
     EXPECT_EQ(r.spp, 16);
     const json full = {{"scene", "s"}, {"lens", "l"}, {"fstop", 2.8}, {"focaldistance", 1500}, {"filmdiagonal", 43.3},
-                       {"mode", "approximate"}, {"spp", 4}, {"width", 64}, {"height", 48}};
+                       {"mode", "thick"}, {"spp", 4}, {"width", 64}, {"height", 48}};
     EXPECT_EQ(renderRequestJson(parseRenderRequest(full, limits, "")), full);
     for (const json& bad : {json{{"spp", 0}}, json{{"spp", limits.maxSpp + 1}}, json{{"width", 7}},
                             json{{"height", limits.maxHeight + 1}}, json{{"fstop", "wide"}}, json{{"focaldistance", "near"}},
