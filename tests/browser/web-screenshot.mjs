@@ -1,5 +1,5 @@
 // Screenshots of the web page for docs/: the shared telephoto scene through telephoto.250mm at f/5.6,
-// accurate and approximate compared side by side, at 1280x800 (the viewer in view) and on a
+// exact and thick compared side by side, at 1280x800 (the viewer in view) and on a
 // 390-wide phone; and the lens panel at the top of the page.
 // usage: node web-screenshot.mjs LENSLAB_BINARY OUT_DIR
 //        (writes web-page.png, web-page-phone.png, web-page-lens.png)
