@@ -8,6 +8,21 @@
 
 namespace lenslab {
 
+namespace {
+
+// A failed job's message as the client may see it: the scene and lens named by their file names,
+// never by where they lie on the server ("/srv/lenslab/scenes/cornell.pbrt:5" -> "cornell.pbrt:5").
+std::string withoutServerPaths(std::string message, const RenderJobInput& job) {
+    for (const std::string& path : {job.scenePath, job.lensPath}) {
+        if (path.empty()) continue;
+        const std::string folder = std::filesystem::path(path).parent_path().string() + "/";
+        for (std::size_t at; folder.size() > 1 && (at = message.find(folder)) != std::string::npos;) message.erase(at, folder.size());
+    }
+    return message;
+}
+
+}  // namespace
+
 struct JobQueue::LiveJob {
     RenderJobInput input;
     std::atomic<bool> cancel{false};
@@ -244,7 +259,7 @@ void JobQueue::runJob(const std::shared_ptr<LiveJob>& job) {
     } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(job->mutex);
         job->record.state = JobState::Failed;
-        job->record.error = e.what();
+        job->record.error = withoutServerPaths(e.what(), job->input);
     } catch (...) {
         std::lock_guard<std::mutex> lock(job->mutex);
         job->record.state = JobState::Failed;

@@ -151,3 +151,34 @@ TEST(JobQueueTest, LimitsCancelsAndPersists) {
     EXPECT_TRUE(std::filesystem::exists(queue.imagePath(slowId, "exr")));
     EXPECT_EQ(renderer.mostAtOnce(), 1);
 }
+
+namespace {
+
+// A renderer that fails the way a scene error does, naming the files by their server paths.
+class FailingRenderer : public JobRenderer {
+public:
+    RenderedImages render(const RenderJobInput& job, const TileCallback&, const std::atomic<bool>&) override {
+        throw SceneError(job.scenePath + ":5: Camera \"realistic\": cannot open 'x.dat' (looked for " +
+                         job.lensPath + ")");
+    }
+    std::vector<std::uint8_t> encodePreview(const Image&) const override { return {}; }
+};
+
+}  // namespace
+
+TEST(JobQueueTest, FailedJobsNameFilesWithoutServerPaths) {
+    test::TempDir dir;
+    Database db(dir.path() + "/jobs.db");
+    JobStore store(db);
+    FailingRenderer renderer;
+    JobQueue queue(store, renderer, RenderLimits{}, dir.path() + "/renders");
+    RenderJobInput job = fakeJob(1);
+    job.scenePath = "/srv/lenslab/scenes/cornell.pbrt";
+    job.lensPath = "/srv/lenslab/data/lenses/upload-1.dat";
+    const std::string id = queue.submit(job).id;
+    ASSERT_EQ(waitForState(queue, id, JobState::Failed), JobState::Failed);
+    const std::string error = queue.find(id)->record.error;
+    EXPECT_EQ(error, "cornell.pbrt:5: Camera \"realistic\": cannot open 'x.dat' (looked for upload-1.dat)");
+    EXPECT_EQ(error.find("/srv"), std::string::npos);
+    queue.shutdown();
+}
