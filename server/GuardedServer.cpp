@@ -61,6 +61,8 @@ int GuardedServer::bindTo(const std::string& host, int port) {
 }
 
 void GuardedServer::closeConnections() {
+    // Called on stop and again on destruction: the worker pool joins its threads only once.
+    if (closed_.exchange(true)) return;
     waiter_.stop();
     workers_.shutdown();
 }

@@ -10,6 +10,7 @@
 //   fails to bind instead of taking every other connection.
 #include <httplib.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <memory>
@@ -53,6 +54,7 @@ private:
 
     ConnectionLimits limits_;
     httplib::ThreadPool workers_;
+    std::atomic<bool> closed_{false};
     HeadWaiter waiter_;
 };
 

@@ -71,18 +71,19 @@ httplib::Client ServerProcess::client() const {
     return c;
 }
 
-void ServerProcess::stop() {
-    if (pid_ <= 0) return;
+int ServerProcess::stop() {
+    if (pid_ <= 0) return -1;
     ::kill(pid_, SIGTERM);
     for (int i = 0; i < 400; ++i) {
         int status = 0;
         if (::waitpid(pid_, &status, WNOHANG) == pid_) {
             pid_ = -1;
-            return;
+            return status;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
-    kill9();
+    ::kill(pid_, SIGKILL);
+    return wait();
 }
 
 void ServerProcess::kill9() {
@@ -91,10 +92,11 @@ void ServerProcess::kill9() {
     wait();
 }
 
-void ServerProcess::wait() {
+int ServerProcess::wait() {
     int status = 0;
     ::waitpid(pid_, &status, 0);
     pid_ = -1;
+    return status;
 }
 
 std::string ServerProcess::output() const {

@@ -22,12 +22,13 @@ public:
 
     int port() const { return port_; }
     httplib::Client client() const;
-    void stop();   // SIGTERM, then waits (SIGKILL after 20 s)
+    // SIGTERM, then waits (SIGKILL after 20 s); the exit status as waitpid gives it (-1: not running).
+    int stop();
     void kill9();  // SIGKILL, then waits
     std::string output() const;  // everything it printed
 
 private:
-    void wait();
+    int wait();
     pid_t pid_ = -1;
     int port_ = 0;
     std::string logPath_;

@@ -1,6 +1,7 @@
 // The real `lenslab serve` on a free loopback port, driven over HTTP: health, lenses (bundled,
 // uploads good and bad, deletion, restart), diagrams, input checking, and a real render.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -349,4 +350,15 @@ TEST_F(ServerApi, UploadedLensRendersWithTheLayoutItWasCheckedWith) {
     ASSERT_EQ(submitted.status, 202) << submitted.raw;
     const json done = waitForRenderState(c, submitted.body["id"], {"done", "failed", "cancelled"}, 120);
     EXPECT_EQ(done["state"], "done") << done.dump();
+}
+
+// SIGTERM after serving stops the server cleanly: exit status 0, no abort on the way out (the
+// worker pool was once shut down twice, which threw from its join).
+TEST_F(ServerApi, StopsCleanlyOnSigterm) {
+    auto c = client();
+    EXPECT_EQ(get(c, "/api/health").status, 200);
+    const int status = server_->stop();
+    EXPECT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0) << "\n"
+                                   << server_->output();
+    EXPECT_EQ(WEXITSTATUS(status), 0) << server_->output();
 }
