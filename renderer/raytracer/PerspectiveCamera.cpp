@@ -8,17 +8,13 @@ namespace lenslab {
 
 PerspectiveCamera::PerspectiveCamera(const PerspectiveParams& params, const Transform& cameraToWorld, int width,
                                      int height)
-    : params_(params), cameraToWorld_(cameraToWorld), width_(width), height_(height) {
-    tanHalf_ = std::tan(params.fovDegrees * M_PI / 360.0);
-    const double aspect = double(width) / height;
-    screenX_ = aspect > 1 ? aspect : 1.0;
-    screenY_ = aspect > 1 ? 1.0 : 1.0 / aspect;
-}
+    : params_(params), cameraToWorld_(cameraToWorld), width_(width), height_(height),
+      tanHalf_(std::tan(params.fovDegrees * M_PI / 360.0)), screen_(ScreenWindow::forImage(width, height)) {}
 
 bool PerspectiveCamera::generateRay(double rasterX, double rasterY, float u1, float u2, CameraRay& out) const {
     // Camera space (pbrt): +x right, +y up, +z forward.
-    const double sx = (2.0 * rasterX / width_ - 1.0) * screenX_;
-    const double sy = (1.0 - 2.0 * rasterY / height_) * screenY_;
+    double sx, sy;
+    screen_.toScreen(rasterX, rasterY, width_, height_, sx, sy);
     Vec3f dir{float(sx * tanHalf_), float(sy * tanHalf_), 1.0f};
     Vec3f origin{0, 0, 0};
     if (params_.lensRadius > 0) {

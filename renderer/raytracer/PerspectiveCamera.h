@@ -1,6 +1,7 @@
 #pragma once
 // pbrt-v3's "perspective" camera: a pinhole, or a thin lens with lensradius/focaldistance (metres).
 #include "Camera.h"
+#include "ScreenWindow.h"
 #include "Transform.h"
 
 namespace lenslab {
@@ -21,7 +22,8 @@ private:
     PerspectiveParams params_;
     Transform cameraToWorld_;
     int width_, height_;
-    double tanHalf_, screenX_, screenY_;  // screen window half extents (the shorter is 1)
+    double tanHalf_;
+    ScreenWindow screen_;  // the shorter image side spans [-1, 1]
 };
 
 }  // namespace lenslab
