@@ -54,11 +54,11 @@ mkdir -p "$out"
 intParam() { grep -o "\"integer $2\" *\[\? *[0-9]\+" "$1" | grep -o '[0-9]\+$' | head -1; }
 
 # Runs a command with its output in log file $1; prints its CPU seconds (user + system) and wall
-# seconds.
+# seconds. A failed render shows as a missing image, reported below.
 timed() {
     local log=$1 TIMEFORMAT='%R %U %S'
     shift
-    { time "$@" >"$log" 2>&1; } 2>&1 | awk '{ printf "%.2f %.2f\n", $2 + $3, $1 }'
+    { time "$@" >"$log" 2>&1 || true; } 2>&1 | awk '{ printf "%.2f %.2f\n", $2 + $3, $1 }'
 }
 
 # Channel means of an EXR's first three channels.
@@ -86,9 +86,13 @@ for scene in "${scenes[@]}"; do
         -e "s/\"integer pixelsamples\" *\[\? *[0-9]\+ *\]\?/\"integer pixelsamples\" $spp/" \
         "$scene" >"$copy"
     ref=$out/$name.pbrt-v3.exr mine=$out/$name.lenslab.exr
+    rm -f "$ref" "$mine"
     pbrtTime=$(timed "$out/$name.pbrt-v3.log" "$pbrt" --nthreads "$threads" --outfile "$ref" "$copy")
     mineTime=$(timed "$out/$name.lenslab.log" "$lenslab" render "$copy" -o "$mine" --threads "$threads" --spp "$spp" --quiet)
     rm -f "$copy"
+    for f in "$ref" "$mine"; do
+        [[ -f $f ]] || { echo "| $name | failed: see ${f%.exr}.log |"; continue 2; }
+    done
     read -r r0 g0 b0 <<<"$(means "$ref")"
     read -r r1 g1 b1 <<<"$(means "$mine")"
     ratios=$(awk -v a="$r1 $g1 $b1" -v b="$r0 $g0 $b0" 'BEGIN { split(a, x, " "); split(b, y, " ");

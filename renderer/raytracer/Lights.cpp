@@ -12,7 +12,8 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// pbrt-v3's spot: full intensity inside coneangle - conedelta, a smooth falloff to zero at coneangle.
+// pbrt-v3's spot: full intensity inside coneangle - conedeltaangle, a smooth falloff to zero at
+// coneangle.
 class SpotLight : public PointLight {
 public:
     SpotLight(Vec3f position, Vec3f axis, Vec3f intensity, float coneAngle, float coneDelta)
@@ -100,8 +101,8 @@ std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& p, con
         const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
         const Vec3f axis = transformVector(toWorld, toL - fromL);
         if (!(length(axis) > 0)) p.fail("\"from\" and \"to\" must differ");
-        const float cone = float(p.getFloat("coneangle", 30)), delta = float(p.getFloat("conedelta", 5));
-        if (!(cone > 0 && cone <= 180) || !(delta >= 0 && delta <= cone)) p.fail("coneangle must lie in (0, 180] and conedelta in [0, coneangle]");
+        const float cone = float(p.getFloat("coneangle", 30)), delta = float(p.getFloat("conedeltaangle", 5));
+        if (!(cone > 0 && cone <= 180) || !(delta >= 0 && delta <= cone)) p.fail("coneangle must lie in (0, 180] and conedeltaangle in [0, coneangle]");
         light = std::make_unique<SpotLight>(transformPoint(toWorld, fromL), normalize(axis),
                                             scale * p.getRgb("I", {1, 1, 1}), cone, delta);
     } else if (type == "distant") {

@@ -184,8 +184,8 @@ TEST(Lights, UnknownTypeAndBadConeAreNamed) {
     test::TempDir dir;
     const std::string laser = planeScene(dir, "LightSource \"laser\"");
     EXPECT_NE(errorOf(laser).find("light \"laser\" is not supported"), std::string::npos) << errorOf(laser);
-    const std::string cone = planeScene(dir, "LightSource \"spot\" \"float coneangle\" 10 \"float conedelta\" 20");
-    EXPECT_NE(errorOf(cone).find("conedelta"), std::string::npos) << errorOf(cone);
+    const std::string cone = planeScene(dir, "LightSource \"spot\" \"float coneangle\" 10 \"float conedeltaangle\" 20");
+    EXPECT_NE(errorOf(cone).find("conedeltaangle"), std::string::npos) << errorOf(cone);
 }
 
 TEST(PointLight, IrradianceIsIntensityTimesCosineOverDistanceSquared) {
@@ -198,11 +198,13 @@ TEST(PointLight, IrradianceIsIntensityTimesCosineOverDistanceSquared) {
     }
 }
 
+// pbrt-v3 names the falloff band "conedeltaangle" (default 5 degrees): with 10 the falloff
+// starts at 20 degrees, so 25 degrees lies inside it.
 TEST(SpotLight, FalloffAtKnownAngles) {
     test::TempDir dir;
     const std::string scene = planeScene(dir,
         "LightSource \"spot\" \"point from\" [0 0 2] \"point to\" [0 0 0] \"float coneangle\" 30 "
-        "\"float conedelta\" 10 \"rgb I\" [5 5 5]");
+        "\"float conedeltaangle\" 10 \"rgb I\" [5 5 5]");
     const auto radiance = [](double degrees, double falloff) {
         const double c = std::cos(degrees * kPi / 180), d2 = 4 / (c * c);
         return 5 * falloff * c / d2 / kPi;
