@@ -2,8 +2,8 @@
 # Renders scenes with pbrt-v3 and with lenslab, one after the other on the same machine and thread
 # count, and prints a Markdown table: times, the ratio lenslab / pbrt-v3 of each channel's mean,
 # and the relative RMSE (RMS of the difference over pbrt-v3's mean) of the pixels and of 10 x 10
-# pixel block means (mostly noise in the first, mostly bias in the second). pbrt-v3 is a peer program
-# built outside this repository; this script only runs it. Not part of the CTest suite.
+# pixel block means (mostly noise in the first, mostly bias in the second). pbrt-v3 is a peer
+# program built outside this repository; this script only runs it. Not part of the CTest suite.
 #
 #   bench/peer/compare.sh PBRT_V3_BINARY [options] SCENE.pbrt...
 #     --lenslab PATH   lenslab binary (default build/cli/lenslab)
@@ -19,7 +19,7 @@
 # here when missing.
 set -euo pipefail
 
-usage() { sed -n '7,13p' "$0" >&2; exit 2; }
+usage() { sed -n '8,13p' "$0" >&2; exit 2; }
 [[ $# -ge 2 ]] || usage
 pbrt=$1; shift
 here=$(cd "$(dirname "$0")" && pwd)
@@ -44,7 +44,8 @@ mkdir -p "$out"
 
 # The bench scenes' images: an 8-bit sRGB grid and a lat-long sky that is brighter and warmer at
 # the upper left than at the upper right, so a mirrored or rotated map shows.
-[[ -f $here/scenes/grid.png ]] || oiiotool --pattern checker:width=8:height=8:color1=0.9,0.6,0.1:color2=0.1,0.2,0.7 64x64 3 \
+[[ -f $here/scenes/grid.png ]] || oiiotool \
+    --pattern checker:width=8:height=8:color1=0.9,0.6,0.1:color2=0.1,0.2,0.7 64x64 3 \
     -d uint8 -o "$here/scenes/grid.png"
 [[ -f $here/scenes/sky.exr ]] || oiiotool \
     --pattern fill:topleft=3,2,1:topright=0.3,0.6,2:bottomleft=0.2,0.15,0.1:bottomright=0.05,0.08,0.05 128x64 3 \
@@ -88,7 +89,8 @@ for scene in "${scenes[@]}"; do
     ref=$out/$name.pbrt-v3.exr mine=$out/$name.lenslab.exr
     rm -f "$ref" "$mine"
     pbrtTime=$(timed "$out/$name.pbrt-v3.log" "$pbrt" --nthreads "$threads" --outfile "$ref" "$copy")
-    mineTime=$(timed "$out/$name.lenslab.log" "$lenslab" render "$copy" -o "$mine" --threads "$threads" --spp "$spp" --quiet)
+    mineTime=$(timed "$out/$name.lenslab.log" "$lenslab" render "$copy" -o "$mine" \
+        --threads "$threads" --spp "$spp" --quiet)
     rm -f "$copy"
     for f in "$ref" "$mine"; do
         [[ -f $f ]] || { echo "| $name | failed: see ${f%.exr}.log |"; continue 2; }
@@ -104,7 +106,8 @@ for scene in "${scenes[@]}"; do
     done
     relBlocks=$(relativeRmse "${mine%.exr}.blocks.exr" "${ref%.exr}.blocks.exr" "$r0 $g0 $b0")
     for f in "$ref" "$mine"; do oiiotool "$f" --ch 0,1,2 --tocolorspace sRGB -d uint8 -o "${f%.exr}.png"; done
-    oiiotool "$mine" --ch 0,1,2 "$ref" --ch 0,1,2 --absdiff --mulc 4 --tocolorspace sRGB -d uint8 -o "$out/$name.diff.png"
+    oiiotool "$mine" --ch 0,1,2 "$ref" --ch 0,1,2 --absdiff --mulc 4 --tocolorspace sRGB -d uint8 \
+        -o "$out/$name.diff.png"
     read -r pc pw <<<"$pbrtTime"; read -r lc lw <<<"$mineTime"
     echo "| $name | $pc ($pw) | $lc ($lw) | $ratios | $rel | $relBlocks |"
 done
