@@ -183,7 +183,9 @@ std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverride
         return camera;
     }
     PerspectiveParams pp;
-    const double fov = p.getFloat("fov", 90);
+    // pbrt-v3 also reads "halffov" (pbrt-v1's name), which wins when positive.
+    const double halfFov = p.getFloat("halffov", -1);
+    const double fov = halfFov > 0 ? 2 * halfFov : p.getFloat("fov", 90);
     if (!(fov > 0 && fov < 180)) p.fail("fov must lie in (0, 180) degrees");
     pp.fovDegrees = fov;
     pp.lensRadius = p.getFloat("lensradius", 0);

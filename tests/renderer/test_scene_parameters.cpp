@@ -185,6 +185,22 @@ TEST(OrthographicCamera, SilhouetteWidthDoesNotDependOnDistance) {
     }
 }
 
+// Perspective: an emitting ball of angular radius asin(0.1) 5 m ahead spans tan(asin(0.1)) /
+// tan(15 degrees) = 0.375 of a 30-degree view (12 of 32 pixels); pbrt-v3's "halffov" 15 gives that
+// view (ignored, the default 90 degrees would light 3).
+TEST(PerspectiveCamera, HalfFovSetsHalfTheFieldOfView) {
+    test::TempDir dir;
+    const std::string p = dir.write("h.pbrt", "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float halffov\" 15\n"
+                                              "Film \"image\" \"integer xresolution\" 32 \"integer yresolution\" 32\n"
+                                              "WorldBegin\nAttributeBegin\nTranslate 0 0 5\n"
+                                              "AreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
+                                              "Shape \"sphere\" \"float radius\" 0.5\nAttributeEnd\nWorldEnd\n");
+    const RenderOutput out = test::render(p, 32, 32, 16);
+    int lit = 0;
+    for (int x = 0; x < 32; ++x) lit += test::lum(out.image, x, 16) > 0.5f;
+    EXPECT_NEAR(lit, 12, 1);
+}
+
 }  // namespace
 }  // namespace lenslab
 
