@@ -69,6 +69,20 @@ TEST(BumpMapping, ConstantDisplacementChangesNothing) {
     }
 }
 
+// A mix has no bump map of its own, and those of its parts are not applied: a warning says so.
+TEST(BumpMapping, MixWarnsThatItsPartsBumpsAreNotApplied) {
+    test::TempDir dir;
+    const std::string world = kTextures + "MakeNamedMaterial \"a\" \"string type\" \"matte\" \"texture bumpmap\" \"ramp\"\n"
+                                          "MakeNamedMaterial \"b\" \"string type\" \"plastic\"\n"
+                                          "Material \"mix\" \"string namedmaterial1\" \"a\" \"string namedmaterial2\" \"b\"\n"
+                                          "Shape \"sphere\"\n";
+    const SceneDescription scene = test::parseWorld(dir, world);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("bump maps of the materials inside a mix are not applied"), std::string::npos)
+        << scene.warnings[0];
+    EXPECT_EQ(shadingNormalAt(world, {0.2f, 0.3f, 0}).x, shadingNormalAt("Shape \"sphere\"\n", {0.2f, 0.3f, 0}).x);
+}
+
 // A white diffuse plane under a distant light of radiance scale L at 30 degrees from the zenith,
 // seen from straight above: L cos(30 + tilt) / pi with the ramp, L cos(30) / pi without, both
 // through the three integrators and through a rendered pixel.
