@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders lenslab's own environment map, scenes/maps/sky.exr (256 x 128, latitude-longitude, y up),
 # with lenslab's environment camera: a sky of five emitting bands paler toward the horizon, a
-# chequered ground (half-metre squares) lit by them and by the materials scene's sun, and a few coloured towers and
+# plain ground lit by them and by the materials scene's sun, and a few coloured towers and
 # cones on the horizon for reflections to show. Needs build/cli/lenslab (scripts/build.sh).
 # The scene is written here rather than under scenes/, which holds the scenes the report renders.
 set -euo pipefail
@@ -39,11 +39,8 @@ upright() {  # shape x z "params" "rgb Kd"
   band 30 55 "0.38 0.52 0.88"
   band 55 90 "0.26 0.38 0.78"
   echo 'AttributeBegin'
-  echo '  Texture "ground" "spectrum" "checkerboard" "float uscale" 2400 "float vscale" 2400'
-  echo '    "rgb tex1" [0.42 0.4 0.34] "rgb tex2" [0.2 0.22 0.16]'
-  echo '  Material "matte" "texture Kd" "ground"'
-  echo '  Shape "trianglemesh" "integer indices" [0 1 2 0 2 3]'
-  echo '    "point P" [-600 0 -600  600 0 -600  600 0 600  -600 0 600] "float uv" [0 0 1 0 1 1 0 1]'
+  echo '  Material "matte" "rgb Kd" [0.3 0.32 0.24]'
+  echo '  Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point P" [-600 0 -600  600 0 -600  600 0 600  -600 0 600]'
   echo 'AttributeEnd'
   upright cylinder 40 25 '"float radius" 5 "float zmin" 0 "float zmax" 18' "0.7 0.15 0.1"
   upright cylinder -35 40 '"float radius" 8 "float zmin" 0 "float zmax" 10' "0.8 0.75 0.6"
