@@ -58,6 +58,15 @@ TEST(BumpMapping, LinearRampTiltsTheShadingNormal) {
     EXPECT_NEAR(flipped.x, std::sin(kTilt), 1e-4);
 }
 
+// An instance stretched to twice the width along x halves the slope per metre: dp/du follows the
+// instance's transform into the world.
+TEST(BumpMapping, InstancedPlaneTiltsByItsWorldSlope) {
+    const Vec3f n = shadingNormalAt("ObjectBegin \"p\"\n" + plane(matte("ramp")) + "ObjectEnd\n"
+                                    "AttributeBegin\nScale 2 1 1\nObjectInstance \"p\"\nAttributeEnd\n",
+                                    {0.2f, 0.3f, 0});
+    EXPECT_NEAR(std::acos(n.z), std::atan(kRamp / 2), 1e-4);
+}
+
 TEST(BumpMapping, ConstantDisplacementChangesNothing) {
     for (const std::string shape : {plane(matte("")), plane(matte(""), "\"normal N\" [0 0.1 1  0 0 1  0.2 0 1  0 0 1]"),
                                     matte("") + "\nTranslate 0 0 -1\nShape \"sphere\" \"float phimax\" 300"}) {
