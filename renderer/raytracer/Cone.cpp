@@ -28,6 +28,12 @@ protected:
     }
     bool accepts(Vec3d p) const override { return p.z >= 0 && p.z <= h_ && azimuth(p.x, p.y) <= phiMax_; }
     Vec3d normal(Vec3d p) const override { return {p.x, p.y, -k_ * (p.z - h_)}; }
+    // pbrt-v3's (-x / (1 - v), -y / (1 - v), height), by the azimuth so that the apex has it too.
+    void partials(Vec3d p, Vec3d& dpdu, Vec3d& dpdv) const override {
+        const double phi = azimuth(p.x, p.y);
+        dpdu = azimuthalPartial(p);
+        dpdv = {-r_ * std::cos(phi), -r_ * std::sin(phi), h_};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, 0};
         hi = {r_, r_, h_};

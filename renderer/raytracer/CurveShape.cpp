@@ -90,6 +90,10 @@ public:
         h.ng = h.ns = n;
         h.u = (float(prim) + hitU) / float(segs_.size());
         h.v = std::clamp(0.5f * (hitV + 1), 0.0f, 1.0f);
+        // Along the curve, per unit of this u; across it, the width, turned so that dp/du x dp/dv
+        // runs along the normal (as pbrt-v3's curves).
+        h.dpdu = float(segs_.size()) * tangent;
+        h.dpdv = (2 * radiusAt(prim, hitU)) * cross(n, T);
     }
 
     // pbrt-v3 cannot sample curves either: they do not emit (the parser warns).

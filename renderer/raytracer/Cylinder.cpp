@@ -31,6 +31,10 @@ protected:
     }
     bool accepts(Vec3d p) const override { return p.z >= zMin_ && p.z <= zMax_ && azimuth(p.x, p.y) <= phiMax_; }
     Vec3d normal(Vec3d p) const override { return {p.x, p.y, 0}; }
+    void partials(Vec3d p, Vec3d& dpdu, Vec3d& dpdv) const override {
+        dpdu = azimuthalPartial(p);
+        dpdv = {0, 0, zMax_ - zMin_};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, zMin_};
         hi = {r_, r_, zMax_};

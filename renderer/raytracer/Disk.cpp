@@ -34,6 +34,11 @@ protected:
         return rho2 <= r_ * r_ && rho2 >= ri_ * ri_ && azimuth(p.x, p.y) <= phiMax_;
     }
     Vec3d normal(Vec3d) const override { return {0, 0, 1}; }
+    void partials(Vec3d p, Vec3d& dpdu, Vec3d& dpdv) const override {
+        const double phi = azimuth(p.x, p.y);  // not p / rho: defined at the centre too
+        dpdu = azimuthalPartial(p);
+        dpdv = (ri_ - r_) * Vec3d{std::cos(phi), std::sin(phi), 0};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, h_};
         hi = {r_, r_, h_};

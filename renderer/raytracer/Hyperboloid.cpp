@@ -49,6 +49,14 @@ protected:
         const double s = p2_.z > p1_.z ? 1 : -1;
         return {s * ah_ * p.x, s * ah_ * p.y, -s * ch_ * p.z};
     }
+    // pbrt-v3's dp/dv: the segment p1-p2 turned by the point's phi (exact when the segment is a
+    // ruling of the surface).
+    void partials(Vec3d p, Vec3d& dpdu, Vec3d& dpdv) const override {
+        const double phi = relativePhi(p, (p.z - p1_.z) / (p2_.z - p1_.z));
+        const Vec3d d = p2_ - p1_;
+        dpdu = azimuthalPartial(p);
+        dpdv = {d.x * std::cos(phi) - d.y * std::sin(phi), d.x * std::sin(phi) + d.y * std::cos(phi), d.z};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-rMax_, -rMax_, zMin_};
         hi = {rMax_, rMax_, zMax_};

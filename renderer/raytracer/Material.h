@@ -16,7 +16,11 @@ struct SurfaceHit {
     Vec3f p;        // world position, metres
     Vec3f ng;       // geometric normal (unit), as the shape orients it
     Vec3f ns;       // shading normal (unit, same side as ng)
-    Vec3f dpdu;     // surface tangent along u (any length); zero when the shape gives none
+    // pbrt-v3's shading partials of p along u and v: the surface's own, except on meshes with
+    // shading normals, where pbrt-v3 takes unit tangents around ns (both pointing against the
+    // surface's partials: pbrt-v3 issues #188 and #261, kept there and so here). Zero when the shape
+    // gives none.
+    Vec3f dpdu, dpdv;
     float u = 0, v = 0;
 };
 
@@ -44,6 +48,15 @@ public:
     Vec3f evaluate(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const;
     float pdf(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const;
     bool sample(const SurfaceHit& hit, Vec3f wo, float uLobe, float u1, float u2, BsdfSample& out) const;
+
+    // pbrt-v3's "bumpmap": the float texture displaces the surface along its shading normal; hits
+    // of this material take the displaced surface's normal and partials (applyBump, once per hit).
+    void setBumpMap(std::shared_ptr<const Texture> displacement) { bump_ = std::move(displacement); }
+    bool hasBumpMap() const { return bump_ != nullptr; }
+    void applyBump(SurfaceHit& hit) const;
+
+private:
+    std::shared_ptr<const Texture> bump_;
 };
 
 using NamedMaterials = std::map<std::string, std::shared_ptr<const Material>>;

@@ -251,6 +251,7 @@ public:
         return p_.has(name) ? number(name, 0) : fallback;
     }
     [[noreturn]] void fail(const std::string& message) const { p_.fail(message); }
+    void warn(const std::string& message) const { c_.warnings.push_back(describe(p_.where()) + ": " + message); }
     // A number given in the scene (no texture) equal to `value`, or absent with that default.
     bool isConstant(const std::string& name, float fallback, float value) const {
         const ColorOrTexture c = p_.getColorOrTexture(name, grey(fallback));
@@ -289,7 +290,7 @@ private:
     const MaterialContext& c_;
 };
 
-std::shared_ptr<const Material> makeMetal(const Reader& r) {
+std::shared_ptr<Material> makeMetal(const Reader& r) {
     // pbrt-v3's default is copper.
     static const Vec3f copperEta = namedSpectrumRgb("metal-Cu-eta").value(), copperK = namedSpectrumRgb("metal-Cu-k").value();
     const TexturePtr rough = r.number("roughness", 0.01f);
@@ -297,13 +298,13 @@ std::shared_ptr<const Material> makeMetal(const Reader& r) {
     return std::make_shared<Metal>(r.color("eta", copperEta), r.color("k", copperK), r.roughness(u, v));
 }
 
-std::shared_ptr<const Material> makeGlass(const Reader& r) {
+std::shared_ptr<Material> makeGlass(const Reader& r) {
     const bool smooth = r.isConstant("uroughness", 0, 0) && r.isConstant("vroughness", 0, 0);
     return std::make_shared<Glass>(r.color("Kr", {1, 1, 1}), r.color("Kt", {1, 1, 1}), r.refractiveIndex(),
                                    r.roughness(r.number("uroughness", 0), r.number("vroughness", 0)), smooth);
 }
 
-std::shared_ptr<const Material> makeUber(const Reader& r) {
+std::shared_ptr<Material> makeUber(const Reader& r) {
     const TexturePtr u = r.numberOr("uroughness", r.number("roughness", 0.1f));
     const TexturePtr v = r.numberOr("vroughness", u);  // pbrt-v3: v follows u, not "roughness"
     return std::make_shared<Uber>(Uber::Inputs{r.color("Kd", grey(0.25f)), r.color("Ks", grey(0.25f)),
@@ -313,12 +314,18 @@ std::shared_ptr<const Material> makeUber(const Reader& r) {
                                                r.roughness(u, v)});
 }
 
-std::shared_ptr<const Material> makeMix(const Reader& r) {
+std::shared_ptr<Material> makeMix(const Reader& r) {
     auto a = r.named("namedmaterial1"), b = r.named("namedmaterial2");
     if (a->maxLobes() + b->maxLobes() > Bsdf::kMaxLobes)
         r.fail("mix of materials with more than " + std::to_string(Bsdf::kMaxLobes) + " lobes in all");
+    // One hit has one shading frame, the mix's own, which has no bump map (as in pbrt-v3).
+    if (a->hasBumpMap() || b->hasBumpMap())
+        r.warn("the bump maps of the materials inside a mix are not applied");
     return std::make_shared<Mix>(std::move(a), std::move(b), r.color("amount", grey(0.5f)));
 }
+
+// pbrt-v3 reads a bump map for every material but mix and none (which has no surface to bump).
+bool takesBumpMap(const std::string& type) { return type != "mix" && type != "" && type != "none" && type != "interface"; }
 
 const char* kSupported =
     "(matte, plastic, metal, mirror, glass, substrate, uber, translucent, mix, measured, none, interface)";
@@ -331,7 +338,7 @@ std::shared_ptr<const Material> makeDefaultMaterial() {
 
 std::shared_ptr<const Material> makeMaterial(const std::string& type, const ParamSet& p, const MaterialContext& c) {
     const Reader r(p, c);
-    std::shared_ptr<const Material> m;
+    std::shared_ptr<Material> m;
     if (type == "matte") {
         m = std::make_shared<Matte>(r.color("Kd", grey(0.5f)), r.number("sigma", 0));
     } else if (type == "plastic") {
@@ -363,6 +370,7 @@ std::shared_ptr<const Material> makeMaterial(const std::string& type, const Para
     } else {
         p.fail("material \"" + type + "\" is not supported " + kSupported);
     }
+    if (takesBumpMap(type) && p.has("bumpmap")) m->setBumpMap(r.number("bumpmap", 0));
     p.checkAllUsed(c.warnings, {"remaproughness"});
     return m;
 }

@@ -30,6 +30,12 @@ protected:
     }
     bool accepts(Vec3d p) const override { return p.z >= zMin_ && p.z <= zMax_ && azimuth(p.x, p.y) <= phiMax_; }
     Vec3d normal(Vec3d p) const override { return {2 * k_ * p.x, 2 * k_ * p.y, -1}; }
+    // dp/dv grows without bound at the vertex (z = 0), where it is taken a hair above.
+    void partials(Vec3d p, Vec3d& dpdu, Vec3d& dpdv) const override {
+        const double z = std::max(p.z, 1e-9 * zMax_);
+        dpdu = azimuthalPartial(p);
+        dpdv = (zMax_ - zMin_) * Vec3d{p.x / (2 * z), p.y / (2 * z), 1};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, zMin_};
         hi = {r_, r_, zMax_};

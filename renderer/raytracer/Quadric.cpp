@@ -187,6 +187,10 @@ void Quadric::surface(Vec3f o, Vec3f d, float t, unsigned, float, float, Surface
     h.v = float(v);
     h.p = toGroup(p);
     h.ng = h.ns = groupNormal(p, growth);
+    Vec3d dpdu, dpdv;
+    partials(p, dpdu, dpdv);
+    h.dpdu = toFloat(apply(objectToGroup_.forward, dpdu, 0));
+    h.dpdv = toFloat(apply(objectToGroup_.forward, dpdv, 0));
 }
 
 ShapeSample Quadric::samplePrimitive(std::size_t, float u1, float u2) const {

@@ -48,6 +48,8 @@ protected:
     virtual Vec3d refine(Vec3d p) const { return p; }  // back onto the surface against rounding
     virtual bool accepts(Vec3d p) const = 0;           // inside the z range and phimax
     virtual Vec3d normal(Vec3d p) const = 0;           // along dp/du x dp/dv, any length
+    // pbrt-v3's dp/du and dp/dv at a point of the surface, of its own (u, v).
+    virtual void partials(Vec3d p, Vec3d& dpdu, Vec3d& dpdv) const = 0;
     virtual void bounds(Vec3d& lo, Vec3d& hi) const = 0;
     // A point drawn over the object-space surface, and its density per unit object-space area
     // (uniform unless a quadric says otherwise).
@@ -58,6 +60,8 @@ protected:
     // factor: areas scale by one constant), else 0; and an object-space point in the group's space.
     double similarityScale() const { return similarityScale_; }
     Vec3f toGroup(Vec3d p) const;
+    // dp/du of the azimuthal u = phi / phimax that every quadric has.
+    Vec3d azimuthalPartial(Vec3d p) const { return {-phiMax_ * p.y, phiMax_ * p.x, 0}; }
 
     // The nearest root of a t^2 + b t + c = 0 in (tMin, tMax) whose point passes accepts().
     bool nearestRoot(double a, double b, double c, Vec3d o, Vec3d d, double tMin, double tMax, double& t) const;

@@ -15,7 +15,7 @@
 namespace lenslab {
 
 struct Intersection {
-    SurfaceHit hit;
+    SurfaceHit hit;  // in world space, the material's bump map applied
     float t = 0;
     const Material* material = nullptr;
     const Light* light = nullptr;  // the area light when the surface emits

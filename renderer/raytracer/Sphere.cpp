@@ -40,6 +40,12 @@ protected:
         return !((zMin_ > -r_ && p.z < zMin_) || (zMax_ < r_ && p.z > zMax_) || azimuth(p.x, p.y) > phiMax_);
     }
     Vec3d normal(Vec3d p) const override { return p; }
+    void partials(Vec3d p, Vec3d& dpdu, Vec3d& dpdv) const override {
+        const double rho = std::hypot(p.x, p.y), cosTheta = std::clamp(p.z / r_, -1.0, 1.0);
+        const double sinTheta = std::sqrt(1 - cosTheta * cosTheta), dTheta = thetaZMax_ - thetaZMin_;
+        dpdu = azimuthalPartial(p);
+        dpdv = dTheta * Vec3d{p.z * p.x / rho, p.z * p.y / rho, -r_ * sinTheta};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, zMin_};
         hi = {r_, r_, zMax_};

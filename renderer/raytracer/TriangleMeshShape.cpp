@@ -52,6 +52,8 @@ public:
             h.u = b1 + b2;
             h.v = b2;
         }
+        partials(prim, h.dpdu, h.dpdv);
+        if (!m_.n.empty()) shadingTangents(h.ns, h.dpdu, h.dpdv);
     }
 
     std::size_t primitiveCount() const override { return m_.indices.size() / 3; }
@@ -89,6 +91,50 @@ private:
                           RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i), h);
             if (alpha.evaluate(h).x == 0) args->valid[i] = 0;
         }
+    }
+
+    // pbrt-v3's dp/du and dp/dv from the corners' (u, v), or any frame around the face normal when
+    // those (u, v) span no area.
+    void partials(std::size_t prim, Vec3f& dpdu, Vec3f& dpdv) const {
+        const std::uint32_t* i = &m_.indices[3 * prim];
+        float uv[3][2] = {{0, 0}, {1, 0}, {1, 1}};
+        if (!m_.uv.empty())
+            for (int k = 0; k < 3; ++k) {
+                uv[k][0] = m_.uv[2 * i[k]];
+                uv[k][1] = m_.uv[2 * i[k] + 1];
+            }
+        const float du02 = uv[0][0] - uv[2][0], dv02 = uv[0][1] - uv[2][1];
+        const float du12 = uv[1][0] - uv[2][0], dv12 = uv[1][1] - uv[2][1];
+        const Vec3f dp02 = m_.p[i[0]] - m_.p[i[2]], dp12 = m_.p[i[1]] - m_.p[i[2]];
+        const float det = du02 * dv12 - dv02 * du12;
+        if (std::fabs(det) >= 1e-8f) {
+            dpdu = (dv12 * dp02 - dv02 * dp12) / det;
+            dpdv = (du02 * dp12 - du12 * dp02) / det;
+            if (length(cross(dpdu, dpdv)) > 0) return;
+        }
+        const Vec3f n = cross(m_.p[i[2]] - m_.p[i[0]], m_.p[i[1]] - m_.p[i[0]]);
+        if (length(n) > 0) perpendiculars(normalize(n), dpdu, dpdv);
+    }
+
+    // pbrt-v3's shading tangents on a mesh with normals: unit, around the shading normal, from dp/du
+    // (they come out opposite to dp/du and dp/dv, which pbrt-v3 keeps; see SurfaceHit).
+    static void shadingTangents(Vec3f ns, Vec3f& dpdu, Vec3f& dpdv) {
+        const float len = length(dpdu);
+        const Vec3f s = len > 0 ? dpdu / len : dpdu;
+        const Vec3f t = cross(s, ns);
+        if (length(t) > 0) {
+            dpdv = normalize(t);
+            dpdu = cross(dpdv, ns);
+        } else {
+            perpendiculars(ns, dpdu, dpdv);
+        }
+    }
+
+    // pbrt-v3's CoordinateSystem: two unit vectors completing the unit n to a right-handed frame.
+    static void perpendiculars(Vec3f n, Vec3f& a, Vec3f& b) {
+        a = std::fabs(n.x) > std::fabs(n.y) ? Vec3f{-n.z, 0, n.x} / std::sqrt(n.x * n.x + n.z * n.z)
+                                            : Vec3f{0, n.z, -n.y} / std::sqrt(n.y * n.y + n.z * n.z);
+        b = cross(n, a);
     }
 
     // pbrt-v3's rule: the face normal (p1 - p0) x (p2 - p0) turned toward the shading normals when the

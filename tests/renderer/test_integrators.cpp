@@ -1,6 +1,6 @@
 // pbrt-v3's path, directlighting and whitted integrators against closed forms: a white diffuse
-// plane (albedo 1: radiance = irradiance / pi) under a point light, under a uniform sky and under
-// an emitting ceiling, and a mirror showing a lit wall.
+// plane (albedo 1: radiance = irradiance / pi) under a point light, under a uniform sky, under an
+// emitting ceiling and under an emitting disk, and a mirror showing a lit wall.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -82,6 +82,20 @@ TEST(Integrators, EmittingCeilingOverWhitePlane) {
     for (int i = 0; i < 3; ++i) {
         const test::RadianceProbe probe(s, kAll[i], 1);
         EXPECT_NEAR(probe.mean({0, 0, 0.5f}, {0, 0, -1}, samples[i]), expected, tolerance[i] * expected) << kNames[i];
+    }
+}
+
+// An emitting disk (radiance 2, radius 0.5) facing down from 1 above the white plane: the
+// irradiance on its axis is pi L r^2 / (r^2 + h^2), the plane's radiance L r^2 / (r^2 + h^2) = 0.4.
+TEST(Integrators, EmittingDiskOverWhitePlane) {
+    test::TempDir dir;
+    const std::string s = scene(dir, "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [2 2 2]\n"
+                                     "Translate 0 0 1\nRotate 180 1 0 0\nShape \"disk\" \"float radius\" 0.5\n"
+                                     "AttributeEnd\n" + square(1000, 0, kWhite));
+    const double L = 2, r = 0.5, h = 1, expected = L * r * r / (r * r + h * h);
+    for (int i = 0; i < 3; ++i) {
+        const test::RadianceProbe probe(s, kAll[i], 1);
+        EXPECT_NEAR(probe.mean({0, 0, 0.5f}, {0, 0, -1}, 20000), expected, 0.01 * expected) << kNames[i];
     }
 }
 

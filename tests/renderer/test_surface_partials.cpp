@@ -1,0 +1,105 @@
+// dp/du and dp/dv at hits, as pbrt-v3 defines them: each quadric's against its own (u, v) (a small
+// step along dp/du, put back on the surface, must land at u + step), and triangles' from their
+// corners' (u, v), pbrt-v3's default (u, v) and its fallback frame.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ShapeTestScenes.h"
+
+namespace lenslab {
+namespace {
+
+using test::trace;
+
+// The hit seen from `above` the surface point p along its normal n.
+Intersection hitFromAbove(const SceneGeometry& g, Vec3f p, Vec3f n) {
+    Intersection it;
+    EXPECT_TRUE(trace(g, p + 0.05f * n, -n, it));
+    return it;
+}
+
+// Steps of `eps` along dp/du and dp/dv from points drawn on the shape, projected back onto it along
+// the normal, change (u, v) by (eps, 0) and (0, eps) up to the surface's curvature (eps^2). Also
+// dp/du x dp/dv runs along the oriented normal.
+void expectPartialsMatchUv(const std::string& world) {
+    test::TempDir dir;
+    SceneDescription scene = test::parseWorld(dir, world);
+    const std::shared_ptr<const Shape> shape = scene.shapes.at(0).shape;  // the geometry takes the scene's shapes
+    const SceneGeometry g(scene);
+    constexpr float kEps = 1e-3f;
+    for (float u1 : {0.3f, 0.55f, 0.8f})
+        for (float u2 : {0.2f, 0.45f, 0.7f}) {
+            const ShapeSample s = shape->samplePrimitive(0, u1, u2);
+            const SurfaceHit h = hitFromAbove(g, s.p, s.n).hit;
+            const std::string where = world + " at (" + std::to_string(h.u) + ", " + std::to_string(h.v) + ")";
+            EXPECT_GT(dot(normalize(cross(h.dpdu, h.dpdv)), h.ng), 0.999f) << where;
+            const SurfaceHit alongU = hitFromAbove(g, h.p + kEps * h.dpdu, h.ng).hit;
+            EXPECT_NEAR(alongU.u - h.u, kEps, 0.03 * kEps) << where;
+            EXPECT_NEAR(alongU.v - h.v, 0, 0.03 * kEps) << where;
+            const SurfaceHit alongV = hitFromAbove(g, h.p + kEps * h.dpdv, h.ng).hit;
+            EXPECT_NEAR(alongV.u - h.u, 0, 0.03 * kEps) << where;
+            EXPECT_NEAR(alongV.v - h.v, kEps, 0.03 * kEps) << where;
+        }
+}
+
+TEST(SurfacePartials, QuadricsMatchTheirOwnUv) {
+    expectPartialsMatchUv("Shape \"sphere\" \"float radius\" 2");
+    expectPartialsMatchUv("Shape \"sphere\" \"float radius\" 1 \"float zmin\" -0.5 \"float zmax\" 0.8 \"float phimax\" 270");
+    expectPartialsMatchUv("Shape \"disk\" \"float radius\" 2 \"float innerradius\" 0.5 \"float height\" 0.3");
+    expectPartialsMatchUv("Shape \"cylinder\" \"float radius\" 1.5 \"float zmin\" -1 \"float zmax\" 2 \"float phimax\" 300");
+    expectPartialsMatchUv("Shape \"cone\" \"float radius\" 1.5 \"float height\" 2");
+    expectPartialsMatchUv("Shape \"paraboloid\" \"float radius\" 1 \"float zmin\" 0.2 \"float zmax\" 2");
+    // pbrt-v3's hyperboloid dp/dv follows the segment p1-p2, exact when it is a ruling: x = 1, y = z
+    // lies on x^2 + y^2 - z^2 = 1.
+    expectPartialsMatchUv("Shape \"hyperboloid\" \"point p1\" [1 -1 -1] \"point p2\" [1 1 1]");
+}
+
+// The partials come out in world space through any transform, shear and mirror included.
+TEST(SurfacePartials, QuadricsUnderTransforms) {
+    expectPartialsMatchUv("Rotate 30 1 1 0\nScale 1 2 0.5\nShape \"sphere\"");
+    expectPartialsMatchUv("Transform [1 0 0 0  0.4 1 0 0  0 0 1.5 0  0.2 0.1 0 1]\nShape \"cylinder\"");
+    expectPartialsMatchUv("Scale -1 1 1\nShape \"cone\" \"float radius\" 1 \"float height\" 1.5");
+}
+
+// A triangle z = 2 ahead of the camera with corners (0,0) (2,0) (0,3) about the point (0.3, 0.4).
+std::string triangle(const std::string& extra) {
+    return "Translate 0.3 0.4 2\nShape \"trianglemesh\" \"integer indices\" [0 1 2] "
+           "\"point P\" [-0.5 -0.5 0  1.5 -0.5 0  -0.5 2.5 0] " + extra;
+}
+
+SurfaceHit triangleHit(const std::string& extra) {
+    test::TempDir dir;
+    const auto g = test::geometryOf(dir, triangle(extra));
+    Intersection it;
+    EXPECT_TRUE(trace(*g, {0, 0, 0}, {0.3f, 0.4f, 2}, it));
+    return it.hit;
+}
+
+void expectVec(Vec3f got, Vec3f want, const std::string& what) {
+    EXPECT_NEAR(got.x, want.x, 1e-5) << what;
+    EXPECT_NEAR(got.y, want.y, 1e-5) << what;
+    EXPECT_NEAR(got.z, want.z, 1e-5) << what;
+}
+
+TEST(SurfacePartials, TrianglesFollowPbrt) {
+    // (u, v) given: p = p0 + u (p1 - p0) + v (p2 - p0) here.
+    SurfaceHit h = triangleHit("\"float uv\" [0 0  1 0  0 1]");
+    expectVec(h.dpdu, {2, 0, 0}, "uv dpdu");
+    expectVec(h.dpdv, {0, 3, 0}, "uv dpdv");
+    // pbrt-v3's default (0,0) (1,0) (1,1): p = p0 + (u - v) (p1 - p0) + v (p2 - p0).
+    h = triangleHit("");
+    expectVec(h.dpdu, {2, 0, 0}, "default dpdu");
+    expectVec(h.dpdv, {-2, 3, 0}, "default dpdv");
+    // (u, v) spanning nothing: pbrt-v3's frame around the unit (p2 - p0) x (p1 - p0) = -z.
+    h = triangleHit("\"float uv\" [0.5 0.5  0.5 0.5  0.5 0.5]");
+    expectVec(h.dpdu, {0, -1, 0}, "degenerate dpdu");
+    expectVec(h.dpdv, {-1, 0, 0}, "degenerate dpdv");
+    // With shading normals: pbrt-v3's unit tangents around them, opposite to dp/du and dp/dv.
+    h = triangleHit("\"float uv\" [0 0  1 0  0 1] \"normal N\" [0 0 1  0 0 1  0 0 1]");
+    expectVec(h.dpdu, {-1, 0, 0}, "shading dpdu");
+    expectVec(h.dpdv, {0, -1, 0}, "shading dpdv");
+}
+
+}  // namespace
+}  // namespace lenslab
