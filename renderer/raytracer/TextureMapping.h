@@ -29,10 +29,13 @@ private:
     Transform worldToTexture_;                                 // spherical, cylindrical
 };
 
-// The hit point in the texture's space: the inverse of the transform at the Texture directive.
+// The hit point in the texture's space. pbrt-v3 hands the transform current at the Texture
+// directive to its 3D mapping as world-to-texture, unlike its 2D mappings (and pbrt-v4), which
+// invert it: `Scale 8 8 8` before an fbm makes its noise 8x finer. Scenes written for pbrt-v3 are
+// tuned to that, so it is followed here.
 class TextureMapping3D {
 public:
-    explicit TextureMapping3D(const Transform& textureToWorld) : worldToTexture_(inverse(textureToWorld)) {}
+    explicit TextureMapping3D(const Transform& directiveTransform) : worldToTexture_(directiveTransform) {}
     Vec3f map(const SurfaceHit& hit) const;
 
 private:

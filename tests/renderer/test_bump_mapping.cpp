@@ -68,7 +68,7 @@ TEST(BumpMapping, InstancedPlaneTiltsByItsWorldSlope) {
 }
 
 TEST(BumpMapping, ConstantDisplacementChangesNothing) {
-    for (const std::string shape : {plane(matte("")), plane(matte(""), "\"normal N\" [0 0.1 1  0 0 1  0.2 0 1  0 0 1]"),
+    for (const std::string& shape : {plane(matte("")), plane(matte(""), "\"normal N\" [0 0.1 1  0 0 1  0.2 0 1  0 0 1]"),
                                     matte("") + "\nTranslate 0 0 -1\nShape \"sphere\" \"float phimax\" 300"}) {
         const std::string bumped = std::string(shape).replace(shape.find(']') + 1, 0, " \"texture bumpmap\" \"flat\"");
         for (Vec3f at : {Vec3f{0.2f, 0.3f, 0}, Vec3f{-0.4f, 0.1f, 0}}) {

@@ -59,8 +59,10 @@ TEST(SceneParser, IncludeReachesAnywhereUnlessConfined) {
     dir.write("parts/ball.pbrt", "Shape \"sphere\" \"float radius\" 2\n");
     const std::string up = dir.write("scene/s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"../parts/ball.pbrt\"\nWorldEnd\n");
     EXPECT_EQ(parseSceneFile(up).shapes.size(), 1u);  // the command line: the user's own files
+    SceneParseOptions confined;
+    confined.confined = true;
     try {
-        parseSceneFile(up, {true});
+        parseSceneFile(up, confined);
         ADD_FAILURE() << "a confined scene reached outside its folder";
     } catch (const SceneError& e) {
         EXPECT_NE(std::string(e.what()).find("outside the scene's folder"), std::string::npos) << e.what();

@@ -84,12 +84,14 @@ TEST(TextureClasses, CheckerboardsTakeTex1WhereTheCellIndicesSumEven) {
     expectRgb(board->evaluate(hitAt(0.3f, 0.3f)), white);   // cell (1, 1)
     expectRgb(board->evaluate(hitAt(-0.1f, 0.1f)), black);  // cell (-1, 0): odd
     expectRgb(board->evaluate(hitAt(-0.1f, -0.1f)), white);
-    // 3D: cells of the texture space, here shifted by half a cell in x.
+    // 3D: cells of the texture space, the hit point under the directive's transform as pbrt-v3
+    // maps it (not its inverse): shifted by half a cell in x, then doubled.
     auto solid = texture("checkerboard", {intParam("dimension", 3), rgbParam("tex1", {1, 0, 0}), rgbParam("tex2", {0, 0, 1})},
-                         TextureKind::Spectrum, translate(0.5, 0, 0));
-    expectRgb(solid->evaluate(hitAt(0, 0, {0.75f, 0.5f, 0.5f})), {1, 0, 0});  // texture point (0.25, .5, .5)
-    expectRgb(solid->evaluate(hitAt(0, 0, {0.25f, 0.5f, 0.5f})), {0, 0, 1});  // (-0.25, .5, .5)
-    expectRgb(solid->evaluate(hitAt(0, 0, {0.25f, -0.5f, 0.5f})), {1, 0, 0});
+                         TextureKind::Spectrum, scale(2, 2, 2) * translate(0.5, 0, 0));
+    expectRgb(solid->evaluate(hitAt(0, 0, {0.2f, 0.2f, 0.2f})), {0, 0, 1});   // texture point (1.4, .4, .4)
+    expectRgb(solid->evaluate(hitAt(0, 0, {0.7f, 0.2f, 0.2f})), {1, 0, 0});   // (2.4, .4, .4)
+    expectRgb(solid->evaluate(hitAt(0, 0, {-0.2f, 0.2f, 0.2f})), {1, 0, 0});  // (0.6, .4, .4)
+    expectRgb(solid->evaluate(hitAt(0, 0, {0.2f, -0.2f, 0.2f})), {1, 0, 0});  // (1.4, -.4, .4)
     EXPECT_THROW(texture("checkerboard", {intParam("dimension", 4)}), SceneError);
 }
 
