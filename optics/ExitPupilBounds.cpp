@@ -224,38 +224,72 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
     return b;
 }
 
-PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY, double u1, double u2) {
-    const double r = std::sqrt(filmX * filmX + filmY * filmY);  // mm: no overflow, cheaper than hypot
-    const auto [i, j, f] = radiusWeight(b, r);
-    const int n = b.vertices;
-    // The fan's area up to vertex k at this radius, from the tabulated sums.
-    const double g0 = (1 - f) * (1 - f), g1 = f * (1 - f), g2 = f * f;
-    const double* cum = &b.fanAreas[static_cast<std::size_t>(i) * (n + 1) * 3];
-    const auto areaTo = [&](int k) { return g0 * cum[3 * k] + g1 * cum[3 * k + 1] + g2 * cum[3 * k + 2]; };
-    PupilSample s;
-    s.area = areaTo(n);
-    if (!(s.area > 0)) return s;
-    const double target = u1 * s.area;
+void sampleExitPupils(const ExitPupilBounds& b, std::size_t count, const double* filmX, const double* filmY,
+                      const double* u1, const double* u2, PupilSampleBatch& out) {
+    out.resize(count);
+    const int n = b.vertices, last = b.radiusCount() - 1, lastPair = std::max(last - 1, 0);
+    const double step = b.radiusStep, first = b.firstRadius;
+    const double* fans = b.fanAreas.data();
+    const int stride = (n + 1) * 3;
+    double* r = out.radius.data();
+    double* f = out.weight.data();
+    double* target = out.target.data();
+    int* row = out.row.data();
+    int* k = out.vertex.data();
+    double* area = out.area.data();
+    // Each stage is one loop over the samples (structure of arrays, table reads as gathers), so the
+    // compiler vectorises every stage; radiusWeight's arithmetic, written out for the loop.
+#pragma GCC ivdep
+    for (std::size_t s = 0; s < count; ++s) {
+        r[s] = std::sqrt(filmX[s] * filmX[s] + filmY[s] * filmY[s]);  // mm: no overflow, cheaper than hypot
+        const double t = step > 0 ? std::clamp(r[s] / step - first, 0.0, double(last)) : 0.0;
+        const int i = std::min(static_cast<int>(t), lastPair);
+        row[s] = i;
+        f[s] = last > 0 ? t - i : 0.0;
+        const double fs = f[s], g0 = (1 - fs) * (1 - fs), g1 = fs * (1 - fs), g2 = fs * fs;
+        const double* cum = fans + std::size_t(i) * stride + std::size_t(n) * 3;
+        area[s] = g0 * cum[0] + g1 * cum[1] + g2 * cum[2];
+        target[s] = u1[s] * area[s];
+        k[s] = 0;
+    }
     // The fan triangle holding target, areaTo(k) <= target < areaTo(k + 1), by a search whose steps
-    // depend on n alone: selects, no branch for random u1 to mispredict.
-    int k = 0;
+    // depend on n alone: one vectorised pass over the samples per halving.
+    const auto areaTo = [&](std::size_t s, int vertex) {
+        const double fs = f[s], g0 = (1 - fs) * (1 - fs), g1 = fs * (1 - fs), g2 = fs * fs;
+        const double* cum = fans + std::size_t(row[s]) * stride + std::size_t(vertex) * 3;
+        return g0 * cum[0] + g1 * cum[1] + g2 * cum[2];
+    };
     for (int len = n; len > 1;) {
         const int half = len / 2;
-        k = areaTo(k + half) <= target ? k + half : k;
+#pragma GCC ivdep
+        for (std::size_t s = 0; s < count; ++s) k[s] = areaTo(s, k[s] + half) <= target[s] ? k[s] + half : k[s];
         len -= half;
     }
-    const double tri = areaTo(k + 1) - areaTo(k);
-    const double v = tri > 0 ? std::clamp((target - areaTo(k)) / tri, 0.0, 1.0) : 0.5;
-    const int k1 = (k + 1) % n;
-    const double rho0 = (1 - f) * b.rho[static_cast<std::size_t>(i) * n + k] + f * b.rho[static_cast<std::size_t>(j) * n + k];
-    const double rho1 = (1 - f) * b.rho[static_cast<std::size_t>(i) * n + k1] + f * b.rho[static_cast<std::size_t>(j) * n + k1];
-    // Uniform over the fan triangle (centre, vertex k, vertex k+1).
-    const double s1 = std::sqrt(v);
-    const double lx = s1 * ((1 - u2) * rho0 * b.vertexX[k] + u2 * rho1 * b.vertexX[k + 1]);
-    const double ly = s1 * ((1 - u2) * rho0 * b.vertexY[k] + u2 * rho1 * b.vertexY[k + 1]);
-    const double x = (1 - f) * b.centreX[i] + f * b.centreX[j] + lx;
-    const double c = r > 0 ? filmX / r : 1.0, sn = r > 0 ? filmY / r : 0.0;
-    s.point = {x * c - ly * sn, x * sn + ly * c, b.aimZ};
+    const int radii = b.radiusCount();
+#pragma GCC ivdep
+    for (std::size_t s = 0; s < count; ++s) {
+        const int i = row[s], j = std::min(i + 1, std::max(radii - 1, 0)), v0 = k[s], v1 = v0 + 1 == n ? 0 : v0 + 1;
+        const double fs = f[s], below = areaTo(s, v0), tri = areaTo(s, v0 + 1) - below;
+        const double v = tri > 0 ? std::clamp((target[s] - below) / tri, 0.0, 1.0) : 0.5;
+        const double rho0 = (1 - fs) * b.rho[std::size_t(i) * n + v0] + fs * b.rho[std::size_t(j) * n + v0];
+        const double rho1 = (1 - fs) * b.rho[std::size_t(i) * n + v1] + fs * b.rho[std::size_t(j) * n + v1];
+        // Uniform over the fan triangle (centre, vertex k, vertex k+1).
+        const double s1 = std::sqrt(v), w2 = u2[s];
+        const double lx = s1 * ((1 - w2) * rho0 * b.vertexX[v0] + w2 * rho1 * b.vertexX[v0 + 1]);
+        const double ly = s1 * ((1 - w2) * rho0 * b.vertexY[v0] + w2 * rho1 * b.vertexY[v0 + 1]);
+        const double x = (1 - fs) * b.centreX[i] + fs * b.centreX[j] + lx;
+        const double rs = r[s], c = rs > 0 ? filmX[s] / rs : 1.0, sn = rs > 0 ? filmY[s] / rs : 0.0;
+        out.x[s] = x * c - ly * sn;
+        out.y[s] = x * sn + ly * c;
+    }
+}
+
+PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY, double u1, double u2) {
+    thread_local PupilSampleBatch one;
+    sampleExitPupils(b, 1, &filmX, &filmY, &u1, &u2, one);
+    PupilSample s;
+    s.area = one.area[0];
+    if (s.area > 0) s.point = {one.x[0], one.y[0], b.aimZ};
     return s;
 }
 

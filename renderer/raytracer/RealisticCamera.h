@@ -24,6 +24,7 @@
 #include "LensAnalysis.h"
 #include "LensSettings.h"
 #include "LensModeMap.h"
+#include "RayBatch.h"
 #include "Transform.h"
 
 namespace lenslab {
@@ -79,7 +80,16 @@ private:
     // Where a ray from film point (fx, fy) is aimed and the weight it will carry if the lens passes
     // it (0: no aim), for the thick lens or the exact trace.
     double aimThick(double fx, double fy, float u1, float u2, Ray& ray) const;
-    double aimExact(double fx, double fy, float u1, float u2, Ray& ray) const;
+    // The exact rays of a batch: film points and lens samples in, pupil points, rays and weights
+    // (0: no aim) out, as structure of arrays.
+    struct ExactRayBatch {
+        std::vector<double> filmX, filmY, u1, u2;
+        std::vector<std::size_t> sampleOf;  // the caller's index of each exact sample
+        PupilSampleBatch pupil;
+        RayBatch rays;
+        std::vector<double> weights;
+    };
+    void aimExactRays(std::size_t count, ExactRayBatch& batch) const;
     // The exact trace with the stop's shape applied where the ray crosses the stop; the weight is
     // multiplied by the shape's.
     TraceResult traceShaped(const Ray& ray, double& weight) const;
