@@ -224,21 +224,35 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
     return b;
 }
 
+namespace {
+
+// The fan's area up to a vertex at the weight f between two radii, from the tabulated sums at
+// fans[at], fans[at + 1], fans[at + 2] (ExitPupilBounds::fanAreas).
+inline double fanArea(const double* fans, int at, double f) {
+    return (1 - f) * (1 - f) * fans[at] + f * (1 - f) * fans[at + 1] + f * f * fans[at + 2];
+}
+
+}  // namespace
+
 void sampleExitPupils(const ExitPupilBounds& b, std::size_t count, const double* filmX, const double* filmY,
                       const double* u1, const double* u2, PupilSampleBatch& out) {
     out.resize(count);
     const int n = b.vertices, last = b.radiusCount() - 1, lastPair = std::max(last - 1, 0);
     const double step = b.radiusStep, first = b.firstRadius;
     const double* fans = b.fanAreas.data();
+    const double* rho = b.rho.data();
+    const double* centreX = b.centreX.data();
+    const double* vertexX = b.vertexX.data();
+    const double* vertexY = b.vertexY.data();
     const int stride = (n + 1) * 3;
     double* r = out.radius.data();
     double* f = out.weight.data();
     double* target = out.target.data();
+    double* area = out.area.data();
     int* row = out.row.data();
     int* k = out.vertex.data();
-    double* area = out.area.data();
-    // Each stage is one loop over the samples (structure of arrays, table reads as gathers), so the
-    // compiler vectorises every stage; radiusWeight's arithmetic, written out for the loop.
+    // Each stage is one loop over the samples (structure of arrays, int offsets so that table reads
+    // become gathers), which the compiler vectorises; radiusWeight's arithmetic, written out.
 #pragma GCC ivdep
     for (std::size_t s = 0; s < count; ++s) {
         r[s] = std::sqrt(filmX[s] * filmX[s] + filmY[s] * filmY[s]);  // mm: no overflow, cheaper than hypot
@@ -246,38 +260,33 @@ void sampleExitPupils(const ExitPupilBounds& b, std::size_t count, const double*
         const int i = std::min(static_cast<int>(t), lastPair);
         row[s] = i;
         f[s] = last > 0 ? t - i : 0.0;
-        const double fs = f[s], g0 = (1 - fs) * (1 - fs), g1 = fs * (1 - fs), g2 = fs * fs;
-        const double* cum = fans + std::size_t(i) * stride + std::size_t(n) * 3;
-        area[s] = g0 * cum[0] + g1 * cum[1] + g2 * cum[2];
+        area[s] = fanArea(fans, i * stride + n * 3, f[s]);
         target[s] = u1[s] * area[s];
         k[s] = 0;
     }
     // The fan triangle holding target, areaTo(k) <= target < areaTo(k + 1), by a search whose steps
-    // depend on n alone: one vectorised pass over the samples per halving.
-    const auto areaTo = [&](std::size_t s, int vertex) {
-        const double fs = f[s], g0 = (1 - fs) * (1 - fs), g1 = fs * (1 - fs), g2 = fs * fs;
-        const double* cum = fans + std::size_t(row[s]) * stride + std::size_t(vertex) * 3;
-        return g0 * cum[0] + g1 * cum[1] + g2 * cum[2];
-    };
+    // depend on n alone: one pass over the samples per halving.
     for (int len = n; len > 1;) {
         const int half = len / 2;
 #pragma GCC ivdep
-        for (std::size_t s = 0; s < count; ++s) k[s] = areaTo(s, k[s] + half) <= target[s] ? k[s] + half : k[s];
+        for (std::size_t s = 0; s < count; ++s)
+            k[s] = fanArea(fans, row[s] * stride + (k[s] + half) * 3, f[s]) <= target[s] ? k[s] + half : k[s];
         len -= half;
     }
-    const int radii = b.radiusCount();
+    const int lastRow = std::max(b.radiusCount() - 1, 0);
 #pragma GCC ivdep
     for (std::size_t s = 0; s < count; ++s) {
-        const int i = row[s], j = std::min(i + 1, std::max(radii - 1, 0)), v0 = k[s], v1 = v0 + 1 == n ? 0 : v0 + 1;
-        const double fs = f[s], below = areaTo(s, v0), tri = areaTo(s, v0 + 1) - below;
+        const int i = row[s], j = std::min(i + 1, lastRow), v0 = k[s], v1 = v0 + 1 == n ? 0 : v0 + 1;
+        const double fs = f[s], below = fanArea(fans, i * stride + v0 * 3, fs);
+        const double tri = fanArea(fans, i * stride + v0 * 3 + 3, fs) - below;
         const double v = tri > 0 ? std::clamp((target[s] - below) / tri, 0.0, 1.0) : 0.5;
-        const double rho0 = (1 - fs) * b.rho[std::size_t(i) * n + v0] + fs * b.rho[std::size_t(j) * n + v0];
-        const double rho1 = (1 - fs) * b.rho[std::size_t(i) * n + v1] + fs * b.rho[std::size_t(j) * n + v1];
+        const double rho0 = (1 - fs) * rho[i * n + v0] + fs * rho[j * n + v0];
+        const double rho1 = (1 - fs) * rho[i * n + v1] + fs * rho[j * n + v1];
         // Uniform over the fan triangle (centre, vertex k, vertex k+1).
         const double s1 = std::sqrt(v), w2 = u2[s];
-        const double lx = s1 * ((1 - w2) * rho0 * b.vertexX[v0] + w2 * rho1 * b.vertexX[v0 + 1]);
-        const double ly = s1 * ((1 - w2) * rho0 * b.vertexY[v0] + w2 * rho1 * b.vertexY[v0 + 1]);
-        const double x = (1 - fs) * b.centreX[i] + fs * b.centreX[j] + lx;
+        const double lx = s1 * ((1 - w2) * rho0 * vertexX[v0] + w2 * rho1 * vertexX[v0 + 1]);
+        const double ly = s1 * ((1 - w2) * rho0 * vertexY[v0] + w2 * rho1 * vertexY[v0 + 1]);
+        const double x = (1 - fs) * centreX[i] + fs * centreX[j] + lx;
         const double rs = r[s], c = rs > 0 ? filmX[s] / rs : 1.0, sn = rs > 0 ? filmY[s] / rs : 0.0;
         out.x[s] = x * c - ly * sn;
         out.y[s] = x * sn + ly * c;
