@@ -58,6 +58,9 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         case LensMode::Auto:
             errors_ = measureThickLensFilmError(analysis_, minFilmRadius_, maxFilmRadius_);
             modes_ = LensModeMap::fromErrors(errors_, params.autoThresholdPixels * pixelMm);
+            thickShare_ = thickShareOfCrop();
+            if (modes_.usesExact() && thickShare_ < kAutoMinThickShare)
+                modes_ = LensModeMap::exactEverywhere(minFilmRadius_, maxFilmRadius_);
             break;
     }
     const auto checkFilm = [&](double z) {
@@ -108,6 +111,20 @@ double RealisticCamera::findFilmRadiusRange(double filmMarginPixels) {
     maxFilmRadius_ = std::hypot(farX, farY);
     const double marginMm = 2 * reach / width_ * halfWidthMm_;
     return std::hypot(halfWidthMm_ + marginMm, halfHeightMm_ + marginMm);
+}
+
+double RealisticCamera::thickShareOfCrop() const {
+    constexpr int kGrid = 64;  // points across the crop window each way
+    const std::array<double, 4>& c = params_.crop;
+    int thick = 0;
+    for (int j = 0; j < kGrid; ++j)
+        for (int i = 0; i < kGrid; ++i) {
+            double fx, fy;
+            filmPoint((c[0] + (c[1] - c[0]) * (i + 0.5) / kGrid) * width_, (c[2] + (c[3] - c[2]) * (j + 0.5) / kGrid) * height_,
+                      fx, fy);
+            thick += modes_.thickAt(filmRadius(fx, fy));
+        }
+    return double(thick) / (kGrid * kGrid);
 }
 
 double RealisticCamera::exactCentreWeight() const {
@@ -281,11 +298,16 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
     if (params_.mode == LensMode::Auto) {
         // The prediction behind the split: worst film error of the thick lens, in pixels, per radius.
         const double pixelMm = params_.filmDiagonalMm / std::hypot(double(width_), double(height_));
-        std::string errors;
-        for (const ThickLensFilmError& e : errors_)
+        std::string errors, brightness;
+        for (const ThickLensFilmError& e : errors_) {
             errors += (errors.empty() ? "" : ", ") + formatNumber(e.filmRadius) + " mm: " + formatNumber(e.maxErrorMm / pixelMm);
+            brightness += (brightness.empty() ? "" : ", ") + formatNumber(e.filmRadius) + " mm: " +
+                          formatNumber(e.illuminationRatio, 3);
+        }
         d["autoThresholdPixels"] = formatNumber(params_.autoThresholdPixels);
         d["thickLensErrorPixels"] = errors;
+        d["thickLensBrightnessRatio"] = brightness;
+        d["thickLensShareOfFilm"] = formatNumber(thickShare_, 3);
     }
     return d;
 }

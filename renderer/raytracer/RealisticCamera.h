@@ -1,7 +1,8 @@
 #pragma once
 // The realistic camera of Kolb, Mitchell & Hanrahan (1995): rays from the film through a real lens
 // (exact trace, "exact"), its thick-lens model ("thick"), or each by film radius ("auto":
-// the thick lens where its predicted error stays under a threshold). Lens space is millimetres with
+// the thick lens where its predicted position and brightness errors stay under the thresholds,
+// LensModeMap.h). Lens space is millimetres with
 // the origin at the front vertex and +z toward the scene, like pbrt's camera space; a lens-space
 // ray leaving the front element maps to camera space by dividing by the millimetres of one camera
 // unit (1 with the course's parameters, whose camera space is millimetres; 1000 with pbrt-v3's
@@ -77,6 +78,8 @@ private:
     // Sets the film radii the crop window reaches; returns the whole frame's reach.
     double findFilmRadiusRange(double filmMarginPixels);
     double exactCentreWeight() const;
+    // Auto: the fraction of the crop window's film area where the thick lens is allowed.
+    double thickShareOfCrop() const;
     // Where a ray from film point (fx, fy) is aimed and the weight it will carry if the lens passes
     // it (0: no aim), for the thick lens or the exact trace.
     double aimThick(double fx, double fy, float u1, float u2, Ray& ray) const;
@@ -104,6 +107,7 @@ private:
     double filmZExact_ = 0, filmZThick_ = 0;
     std::vector<ThickLensFilmError> errors_;
     LensModeMap modes_;
+    double thickShare_ = 0;          // auto: thickShareOfCrop() of the allowed bands
     ExitPupilBounds bounds_;         // for the exact trace's film radii
     // Exposure time, or 1 / centre weight for simple weighting (each model normalised by its own).
     double weightScaleExact_ = 1, weightScaleThick_ = 1;
