@@ -2,7 +2,7 @@
 // accuracy") and draws the convergence curves and film errors into a PNG.
 //   tradeoff_report [--reduced] [plot.png]   (default bench/tradeoff/tradeoff.png in the source tree)
 // Per-ray timings come from bench_camera_rays (Google Benchmark). Two threads; the machine is
-// shared, so every frame time is the best of three runs.
+// shared, so frame times are CPU seconds (setup included), the best of three runs.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -101,10 +101,10 @@ int main(int argc, char** argv) {
                 kFilmWidthMm, kFilmHeightMm, kFrameWidth, kFrameHeight, pixelMm(), kFocusDistanceMm / 1000);
     printFilmErrors();
 
-    std::printf("\n### Whole frames: time and image error (%d spp, best of %d runs; RMSE against accurate at %d spp, "
+    std::printf("\n### Whole frames: time and image error (%d spp, best of %d runs; RMSE against exact at %d spp, "
                 "%d at %s)\n\n", kTableSpp, effort.repeats, effort.referenceSpp, effort.convergenceReferenceSpp, kConvergenceStop);
-    std::printf("| lens | stop | auto: thick lens for | s accurate | s approximate | s auto | auto / faster | "
-                "RMSE accurate | RMSE approximate | RMSE auto |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| lens | stop | auto: thick lens for | CPU s exact | CPU s thick | CPU s auto | auto / faster | "
+                "RMSE exact | RMSE thick | RMSE auto |\n|---|---|---|---|---|---|---|---|---|---|\n");
     std::map<std::string, Image> convergenceReference;
     for (const LensCase& lens : lensCases())
         for (const StopCase& stop : stopCases()) {
@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
             std::fflush(stdout);
         }
 
-    std::printf("\n### Convergence at %s: relative RMSE against accurate at %d spp (seconds per frame in brackets)\n\n",
+    std::printf("\n### Convergence at %s: relative RMSE against exact at %d spp (CPU seconds per frame in brackets)\n\n",
                 kConvergenceStop, effort.convergenceReferenceSpp);
     std::printf("| lens | mode |");
     for (int spp : effort.sppLadder) std::printf(" %d spp |", spp);
@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < effort.sppLadder.size(); ++i) std::printf("---|");
     std::printf("\n");
     std::vector<Panel> panels;
-    Panel trade{"seconds per frame against error, " + lensCases().front().name, "seconds per frame", "relative RMSE",
+    Panel trade{"CPU seconds per frame against error, " + lensCases().front().name, "CPU seconds per frame", "relative RMSE",
                 true, true, {}};
     std::vector<std::string> reach;
     for (const LensCase& lens : lensCases()) {
@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
             panel.series.push_back(std::move(s));
         }
         panels.push_back(std::move(panel));
-        // Auto against the faster mode, at the error accurate reaches with kTableSpp samples.
+        // Auto against the faster mode, at the error exact reaches with kTableSpp samples.
         const double target = curves["exact"].first[std::find(effort.sppLadder.begin(), effort.sppLadder.end(), kTableSpp) -
                                                        effort.sppLadder.begin()];
         char line[512];
@@ -174,9 +174,9 @@ int main(int argc, char** argv) {
                       when("thick").c_str(), when("auto").c_str());
         reach.push_back(line);
     }
-    std::printf("\n### Seconds per frame to reach accurate's %d-spp error (%s; interpolated along the curves above)\n\n",
+    std::printf("\n### CPU seconds per frame to reach exact's %d-spp error (%s; interpolated along the curves above)\n\n",
                 kTableSpp, kConvergenceStop);
-    std::printf("| lens | target RMSE | accurate s | approximate s | auto s |\n|---|---|---|---|---|\n");
+    std::printf("| lens | target RMSE | exact CPU s | thick CPU s | auto CPU s |\n|---|---|---|---|---|\n");
     for (const std::string& l : reach) std::printf("%s\n", l.c_str());
 
     Panel film{"thick-lens film error at " + std::string(kConvergenceStop), "field position (film radius, mm)",
