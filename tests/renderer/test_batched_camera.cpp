@@ -56,7 +56,7 @@ TEST(BatchedCamera, AccurateRaysEqualScalarRaysBitForBit) {
 
 TEST(BatchedCamera, AutoAndApproximateRaysEqualScalarRaysBitForBit) {
     // Split by film radius: thick at the centre, exact at the rim.
-    expectBatchEqualsScalar(LensMode::Auto, "telephoto.250mm.dat", 11, 0.1);
+    expectBatchEqualsScalar(LensMode::Auto, "telephoto.250mm.dat", 11, 0.07);
     expectBatchEqualsScalar(LensMode::Thick, "dgauss.50mm.dat");
 }
 
