@@ -21,9 +21,11 @@ enum class LensMode { Exact, Thick, Auto };
 // lens's.
 constexpr double kAutoBrightnessTolerance = 0.03;
 // Auto's smallest thick share of the rendered film area worth a split. A thick-lens camera ray
-// saves ~12% of an exact one (bench/README.md), a percent or two of a frame's CPU over the whole
-// picture; over less than nine tenths of it the saving is below the noise of a frame time, while
-// the seam between the models' pictures (up to the threshold apart) stays.
+// costs about what an exact one does (bench/README.md): what the thick lens saves is the exact
+// trace's setup (exit-pupil bounds) for its radii and rays the bounds waste, a few percent of a
+// small frame even over the whole picture; over less than nine tenths of it the saving is below
+// the noise of a frame time, while the seam between the models' pictures (up to the threshold
+// apart) stays.
 constexpr double kAutoMinThickShare = 0.9;
 
 // The lens model: "exact" (every ray traced through every surface), "thick" (the thick-lens
@@ -40,8 +42,6 @@ public:
     // errors: samples at evenly spaced radii, in order; thresholdMm: the largest film error allowed;
     // brightness: kAutoBrightnessTolerance.
     static LensModeMap fromErrors(const std::vector<ThickLensFilmError>& errors, double thresholdMm);
-    // Whether the thick lens may draw at a sampled radius.
-    static bool thickAllowed(const ThickLensFilmError& error, double thresholdMm);
 
     bool thickAt(double filmRadius) const;
     bool usesThick() const;
@@ -53,6 +53,9 @@ public:
     std::string describe() const;
 
 private:
+    // Whether the thick lens may draw at a sampled radius.
+    static bool thickAllowed(const ThickLensFilmError& error, double thresholdMm);
+
     double minRadius_ = 0, maxRadius_ = 0;
     std::vector<bool> thick_;  // per band, evenly spaced from minRadius_ to maxRadius_
     double bandWidth() const { return (maxRadius_ - minRadius_) / thick_.size(); }

@@ -296,7 +296,8 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"weighting", params_.simpleWeighting ? "simple (centre = 1)" : "radiometric (cos^4 A / d^2 * t)"},
             {"cameraSpaceUnitMm", formatNumber(params_.cameraUnitMm)}};
     if (params_.mode == LensMode::Auto) {
-        // The prediction behind the split: worst film error of the thick lens, in pixels, per radius.
+        // The prediction behind the split, per radius: the thick lens's worst film error in pixels
+        // and its brightness against the exact lens's; and the share of the film it was allowed.
         const double pixelMm = params_.filmDiagonalMm / std::hypot(double(width_), double(height_));
         std::string errors, brightness;
         for (const ThickLensFilmError& e : errors_) {

@@ -1,12 +1,12 @@
 #pragma once
 // The realistic camera of Kolb, Mitchell & Hanrahan (1995): rays from the film through a real lens
-// (exact trace, "exact"), its thick-lens model ("thick"), or each by film radius ("auto":
-// the thick lens where its predicted position and brightness errors stay under the thresholds,
-// LensModeMap.h). Lens space is millimetres with
-// the origin at the front vertex and +z toward the scene, like pbrt's camera space; a lens-space
-// ray leaving the front element maps to camera space by dividing by the millimetres of one camera
-// unit (1 with the course's parameters, whose camera space is millimetres; 1000 with pbrt-v3's
-// lensfile, whose camera space is metres: docs/camera-conventions.md).
+// (exact trace, "exact"), its thick-lens model ("thick"), or each by film radius ("auto": the
+// thick lens where its predicted position and brightness errors stay under the thresholds, see
+// LensModeMap.h). Lens space is millimetres with the origin at the front vertex and +z toward the
+// scene, like pbrt's camera space; a lens-space ray leaving the front element maps to camera space
+// by dividing by the millimetres of one camera unit (1 with the course's parameters, whose camera
+// space is millimetres; 1000 with pbrt-v3's lensfile, whose camera space is metres:
+// docs/camera-conventions.md).
 //
 // Each model keeps its own film plane (exact: best focus of the real lens; thick: the thick-lens
 // conjugate of the plane of focus), so an auto picture equals the accurate one where the exact
@@ -80,8 +80,8 @@ private:
     double exactCentreWeight() const;
     // Auto: the fraction of the crop window's film area where the thick lens is allowed.
     double thickShareOfCrop() const;
-    // Where a ray from film point (fx, fy) is aimed and the weight it will carry if the lens passes
-    // it (0: no aim), for the thick lens or the exact trace.
+    // Where a thick-lens ray from film point (fx, fy) is aimed and the weight it will carry if the
+    // lens passes it (0: no aim).
     double aimThick(double fx, double fy, float u1, float u2, Ray& ray) const;
     // The exact rays of a batch: film points and lens samples in, pupil points, rays and weights
     // (0: no aim) out, as structure of arrays.
