@@ -171,7 +171,7 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     declareLensFlags(p);
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
     p.option("--layout", "L", "realistic camera: the --lens table's layout, gap-before | gap-after (default: detect)");
-    p.option("--mode", "M", "realistic camera: exact | thick | auto (thick lens where its error < 0.5 px)");
+    p.option("--mode", "M", "realistic camera: exact | thick | auto (thick lens where its position error < 0.5 px and brightness within 3%, over 90%+ of the film; else exact)");
     p.flag("--quiet", "no progress bar, no summary");
     p.flag("--progress-json", "print one JSON line per finished tile on stdout, and the statistics last");
     p.flag("--mpi", "spread the tiles over the processes of an MPI job: mpirun -np N lenslab render ... --mpi");

@@ -37,7 +37,7 @@ TraceResult traceRayT(const LensSystem& lens, const Ray& ray, TraceDirection dir
         const T eta = T(toFilm ? nScene / nFilm : nFilm / nScene);
         const T r2 = options.ignoreApertures ? inf : T(s.apertureRadius * s.apertureRadius);
         const BlockReason why =
-            stepThroughSurface<T>(px, py, pz, dx, dy, dz, T(s.z), T(s.curvature), r2, eta, s.isStop);
+            stepThroughSurface<T>(px, py, pz, dx, dy, dz, T(s.z), T(s.curvature), T(1) / T(s.curvature), r2, eta, s.isStop);
         if (why != BlockReason::None) {
             result.blocked = why;
             result.surface = i;

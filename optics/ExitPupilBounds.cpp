@@ -224,38 +224,81 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
     return b;
 }
 
-PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY, double u1, double u2) {
-    const double r = std::sqrt(filmX * filmX + filmY * filmY);  // mm: no overflow, cheaper than hypot
-    const auto [i, j, f] = radiusWeight(b, r);
-    const int n = b.vertices;
-    // The fan's area up to vertex k at this radius, from the tabulated sums.
-    const double g0 = (1 - f) * (1 - f), g1 = f * (1 - f), g2 = f * f;
-    const double* cum = &b.fanAreas[static_cast<std::size_t>(i) * (n + 1) * 3];
-    const auto areaTo = [&](int k) { return g0 * cum[3 * k] + g1 * cum[3 * k + 1] + g2 * cum[3 * k + 2]; };
-    PupilSample s;
-    s.area = areaTo(n);
-    if (!(s.area > 0)) return s;
-    const double target = u1 * s.area;
+namespace {
+
+// The fan's area up to a vertex at the weight f between two radii, from the tabulated sums at
+// fans[at], fans[at + 1], fans[at + 2] (ExitPupilBounds::fanAreas).
+inline double fanArea(const double* fans, int at, double f) {
+    return (1 - f) * (1 - f) * fans[at] + f * (1 - f) * fans[at + 1] + f * f * fans[at + 2];
+}
+
+}  // namespace
+
+void sampleExitPupils(const ExitPupilBounds& b, std::size_t count, const double* filmX, const double* filmY,
+                      const double* u1, const double* u2, PupilSampleBatch& out) {
+    out.resize(count);
+    const int n = b.vertices, last = b.radiusCount() - 1, lastPair = std::max(last - 1, 0);
+    const double step = b.radiusStep, first = b.firstRadius;
+    const double* fans = b.fanAreas.data();
+    const double* rho = b.rho.data();
+    const double* centreX = b.centreX.data();
+    const double* vertexX = b.vertexX.data();
+    const double* vertexY = b.vertexY.data();
+    const int stride = (n + 1) * 3;
+    double* r = out.radius.data();
+    double* f = out.weight.data();
+    double* target = out.target.data();
+    double* area = out.area.data();
+    int* row = out.row.data();
+    int* k = out.vertex.data();
+    // Each stage is one loop over the samples (structure of arrays, int offsets so that table reads
+    // become gathers), which the compiler vectorises; radiusWeight's arithmetic, written out.
+#pragma GCC ivdep
+    for (std::size_t s = 0; s < count; ++s) {
+        r[s] = std::sqrt(filmX[s] * filmX[s] + filmY[s] * filmY[s]);  // mm: no overflow, cheaper than hypot
+        const double t = step > 0 ? std::clamp(r[s] / step - first, 0.0, double(last)) : 0.0;
+        const int i = std::min(static_cast<int>(t), lastPair);
+        row[s] = i;
+        f[s] = last > 0 ? t - i : 0.0;
+        area[s] = fanArea(fans, i * stride + n * 3, f[s]);
+        target[s] = u1[s] * area[s];
+        k[s] = 0;
+    }
     // The fan triangle holding target, areaTo(k) <= target < areaTo(k + 1), by a search whose steps
-    // depend on n alone: selects, no branch for random u1 to mispredict.
-    int k = 0;
+    // depend on n alone: one pass over the samples per halving.
     for (int len = n; len > 1;) {
         const int half = len / 2;
-        k = areaTo(k + half) <= target ? k + half : k;
+#pragma GCC ivdep
+        for (std::size_t s = 0; s < count; ++s)
+            k[s] = fanArea(fans, row[s] * stride + (k[s] + half) * 3, f[s]) <= target[s] ? k[s] + half : k[s];
         len -= half;
     }
-    const double tri = areaTo(k + 1) - areaTo(k);
-    const double v = tri > 0 ? std::clamp((target - areaTo(k)) / tri, 0.0, 1.0) : 0.5;
-    const int k1 = (k + 1) % n;
-    const double rho0 = (1 - f) * b.rho[static_cast<std::size_t>(i) * n + k] + f * b.rho[static_cast<std::size_t>(j) * n + k];
-    const double rho1 = (1 - f) * b.rho[static_cast<std::size_t>(i) * n + k1] + f * b.rho[static_cast<std::size_t>(j) * n + k1];
-    // Uniform over the fan triangle (centre, vertex k, vertex k+1).
-    const double s1 = std::sqrt(v);
-    const double lx = s1 * ((1 - u2) * rho0 * b.vertexX[k] + u2 * rho1 * b.vertexX[k + 1]);
-    const double ly = s1 * ((1 - u2) * rho0 * b.vertexY[k] + u2 * rho1 * b.vertexY[k + 1]);
-    const double x = (1 - f) * b.centreX[i] + f * b.centreX[j] + lx;
-    const double c = r > 0 ? filmX / r : 1.0, sn = r > 0 ? filmY / r : 0.0;
-    s.point = {x * c - ly * sn, x * sn + ly * c, b.aimZ};
+    const int lastRow = std::max(b.radiusCount() - 1, 0);
+#pragma GCC ivdep
+    for (std::size_t s = 0; s < count; ++s) {
+        const int i = row[s], j = std::min(i + 1, lastRow), v0 = k[s], v1 = v0 + 1 == n ? 0 : v0 + 1;
+        const double fs = f[s], below = fanArea(fans, i * stride + v0 * 3, fs);
+        const double tri = fanArea(fans, i * stride + v0 * 3 + 3, fs) - below;
+        const double v = tri > 0 ? std::clamp((target[s] - below) / tri, 0.0, 1.0) : 0.5;
+        const double rho0 = (1 - fs) * rho[i * n + v0] + fs * rho[j * n + v0];
+        const double rho1 = (1 - fs) * rho[i * n + v1] + fs * rho[j * n + v1];
+        // Uniform over the fan triangle (centre, vertex k, vertex k+1).
+        const double s1 = std::sqrt(v), w2 = u2[s];
+        const double lx = s1 * ((1 - w2) * rho0 * vertexX[v0] + w2 * rho1 * vertexX[v0 + 1]);
+        const double ly = s1 * ((1 - w2) * rho0 * vertexY[v0] + w2 * rho1 * vertexY[v0 + 1]);
+        const double x = (1 - fs) * centreX[i] + fs * centreX[j] + lx;
+        const double rs = r[s], c = rs > 0 ? filmX[s] / rs : 1.0, sn = rs > 0 ? filmY[s] / rs : 0.0;
+        out.x[s] = x * c - ly * sn;
+        out.y[s] = x * sn + ly * c;
+    }
+}
+
+PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY, double u1, double u2) {
+    thread_local PupilSampleBatch one;
+    sampleExitPupils(b, 1, &filmX, &filmY, &u1, &u2, one);
+    PupilSample s;
+    s.area = one.area[0];
+    if (s.area > 0) s.point = {one.x[0], one.y[0], b.aimZ};
     return s;
 }
 

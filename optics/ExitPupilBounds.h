@@ -79,6 +79,22 @@ struct PupilSample {
 // stay well stratified (fan triangles chosen by inverting the area CDF with u1).
 PupilSample sampleExitPupil(const ExitPupilBounds& bounds, double filmX, double filmY, double u1, double u2);
 
+// Many film points at once (structure of arrays), for the camera's batches: sample s's point is
+// (x[s], y[s], aimZ) and the region's area area[s], bit for bit what sampleExitPupil returns (it is
+// this with one sample). The other arrays are the stages' scratch.
+struct PupilSampleBatch {
+    std::vector<double> x, y, area;
+    std::vector<double> radius, weight, target;
+    std::vector<int> row, vertex;
+    void resize(std::size_t n) {
+        for (auto* v : {&x, &y, &area, &radius, &weight, &target}) v->resize(n);
+        row.resize(n);
+        vertex.resize(n);
+    }
+};
+void sampleExitPupils(const ExitPupilBounds& bounds, std::size_t count, const double* filmX, const double* filmY,
+                      const double* u1, const double* u2, PupilSampleBatch& out);
+
 // Whether a point of the aiming plane lies inside the bounds seen from the film point.
 bool insideExitPupilBounds(const ExitPupilBounds& bounds, double filmX, double filmY, double x, double y);
 

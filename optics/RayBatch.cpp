@@ -25,12 +25,13 @@ namespace {
 // branches, so this loop vectorises.
 void stepAll(std::size_t count, double* px, double* py, double* pz, double* vx, double* vy, double* vz,
              std::uint8_t* why, std::int16_t* at, const Surface& s, double eta, std::int16_t index) {
-    const double zVertex = s.z, curvature = s.curvature, r2 = s.apertureRadius * s.apertureRadius;
+    const double zVertex = s.z, curvature = s.curvature, radius = 1.0 / curvature;
+    const double r2 = s.apertureRadius * s.apertureRadius;
     const bool isStop = s.isStop;
 #pragma GCC ivdep
     for (std::size_t r = 0; r < count; ++r) {
         double x = px[r], y = py[r], z = pz[r], u = vx[r], v = vy[r], w = vz[r];
-        const auto b = static_cast<std::uint8_t>(stepThroughSurface(x, y, z, u, v, w, zVertex, curvature, r2, eta, isStop));
+        const auto b = static_cast<std::uint8_t>(stepThroughSurface(x, y, z, u, v, w, zVertex, curvature, radius, r2, eta, isStop));
         const bool alive = why[r] == 0;
         px[r] = alive ? x : px[r];
         py[r] = alive ? y : py[r];

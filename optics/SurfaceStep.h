@@ -24,9 +24,12 @@ const char* blockReasonName(BlockReason reason);
 // nearly flat surfaces. Both roots are formed without cancellation (one from Vieta's product); the
 // hit is the nearest one ahead of the ray on the cap at the vertex, the hemisphere where the unit
 // normal c q + e_z points toward +z. On a block the ray is left untouched and the reason returned.
+// radius is 1 / curvature (infinite for a flat surface), taken by the caller once per surface: the
+// far root's division per ray would be one of the step's six divisions and square roots, which
+// bound the vectorised batch.
 template <class T>
 inline BlockReason stepThroughSurface(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T zVertex,
-                                      T curvature, T apertureRadius2, T eta, bool isStop) {
+                                      T curvature, T radius, T apertureRadius2, T eta, bool isStop) {
     const T qz = pz - zVertex;
     const T b = dz + curvature * (px * dx + py * dy + qz * dz);
     const T c = curvature * (px * px + py * py + qz * qz) + T(2) * qz;
@@ -34,8 +37,8 @@ inline BlockReason stepThroughSurface(T& px, T& py, T& pz, T& dx, T& dy, T& dz, 
     const T root = std::sqrt(disc > T(0) ? disc : T(0));
     const T q = -(b + (b < T(0) ? -root : root));
     const T tNear = c / q;  // stays finite as curvature -> 0
-    // The other root. A flat surface has none: q / 0 is +-inf (or NaN), which farOk rejects.
-    const T tFar = q / curvature;
+    // The other root. A flat surface has none: q * inf is +-inf (or NaN), which farOk rejects.
+    const T tFar = q * radius;
     const T tMin = T(-1e-9);
     const bool nearOk = (tNear >= tMin) & (T(1) + curvature * (qz + tNear * dz) > T(0));
     const bool farOk = (tFar >= tMin) & (tFar < T(1e30)) & (T(1) + curvature * (qz + tFar * dz) > T(0));

@@ -1,11 +1,24 @@
 #include "FrameStudy.h"
 
+#include <sys/resource.h>
+
 #include <cmath>
 #include <stdexcept>
 
 #include "LensAnalysis.h"
 
 namespace lenslab::tradeoff {
+
+namespace {
+
+double processCpuSeconds() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    const auto s = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    return s(u.ru_utime) + s(u.ru_stime);
+}
+
+}  // namespace
 
 TimedFrame renderFrame(const LensCase& lens, const StopCase& stop, const std::string& mode, int width, int height, int spp,
                   int threads) {
@@ -21,11 +34,11 @@ TimedFrame renderFrame(const LensCase& lens, const StopCase& stop, const std::st
     s.height = height;
     s.spp = spp;
     s.threads = threads;
+    const double cpu0 = processCpuSeconds();
     RenderOutput out = renderScene(s);
     TimedFrame f;
+    f.cpuSeconds = processCpuSeconds() - cpu0;
     f.image = std::move(out.image);
-    f.setupSeconds = out.stats.setupSeconds;
-    f.renderSeconds = out.stats.renderSeconds;
     f.split = out.metadata.at("lensModelByFilmRadius");
     return f;
 }

@@ -10,9 +10,11 @@ namespace lenslab::tradeoff {
 
 struct TimedFrame {
     Image image;
-    double setupSeconds = 0, renderSeconds = 0;  // setup: scene, camera (bounds, error map), BVH
-    std::string split;                           // which film radii the thick lens drew
-    double seconds() const { return setupSeconds + renderSeconds; }
+    // CPU seconds (user + system, all threads) of the whole render, setup included (scene, camera:
+    // bounds and error map, BVH): on a shared machine far steadier than wall time.
+    double cpuSeconds = 0;
+    std::string split;  // which film radii the thick lens drew
+    double seconds() const { return cpuSeconds; }
 };
 
 TimedFrame renderFrame(const LensCase& lens, const StopCase& stop, const std::string& mode, int width, int height, int spp,

@@ -1,8 +1,8 @@
 // The speed-against-accuracy study: prints the Markdown tables of bench/README.md ("Speed against
 // accuracy") and draws the convergence curves and film errors into a PNG.
-//   tradeoff_report [plot.png]   (default bench/tradeoff/tradeoff.png in the source tree)
+//   tradeoff_report [--reduced] [plot.png]   (default bench/tradeoff/tradeoff.png in the source tree)
 // Per-ray timings come from bench_camera_rays (Google Benchmark). Two threads; the machine is
-// shared, so every frame time is the best of three runs.
+// shared, so frame times are CPU seconds (setup included), the best of three runs.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,11 +20,17 @@ using namespace lenslab::tradeoff;
 namespace {
 
 const std::vector<std::string> kModes = {"exact", "thick", "auto"};
-const std::vector<int> kSppLadder = {1, 2, 4, 8, 16, 32, 64};
 constexpr int kTableSpp = 16;
-constexpr int kReferenceSpp = 256, kConvergenceReferenceSpp = 1024;
-constexpr int kRepeats = 3;
 const char* const kConvergenceStop = "f/5.6";
+
+// How much is rendered: the full study, or (--reduced, for a loaded machine: about a quarter of the
+// samples) fewer reference samples, two repeats and the ladder up to 16 spp; frames stay the same.
+struct Effort {
+    std::vector<int> sppLadder = {1, 2, 4, 8, 16, 32, 64};
+    int referenceSpp = 256, convergenceReferenceSpp = 1024;
+    int repeats = 3;
+};
+Effort effort;
 
 double pixelMm() { return kFilmWidthMm / kFrameWidth; }
 
@@ -36,7 +42,7 @@ LensAnalysis analysisOf(const LensCase& lens, const StopCase& stop) {
 
 TimedFrame bestOf(const LensCase& lens, const StopCase& stop, const std::string& mode, int spp) {
     TimedFrame best = renderFrame(lens, stop, mode, kFrameWidth, kFrameHeight, spp);
-    for (int i = 1; i < kRepeats; ++i) {
+    for (int i = 1; i < effort.repeats; ++i) {
         TimedFrame f = renderFrame(lens, stop, mode, kFrameWidth, kFrameHeight, spp);
         if (f.seconds() < best.seconds()) best = std::move(f);
     }
@@ -86,21 +92,25 @@ double secondsToReach(const std::vector<double>& rmse, const std::vector<double>
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::string plotPath = argc > 1 ? argv[1] : std::string(LENSLAB_SOURCE_DIR) + "/bench/tradeoff/tradeoff.png";
+    std::string plotPath = std::string(LENSLAB_SOURCE_DIR) + "/bench/tradeoff/tradeoff.png";
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--reduced") effort = {{1, 2, 4, 8, 16}, 64, 256, 2};
+        else plotPath = argv[i];
+    }
     std::printf("Film %gx%g mm, frame %dx%d (%.3f mm pixels), focus %.1f m, scene shared-world, 2 threads.\n",
                 kFilmWidthMm, kFilmHeightMm, kFrameWidth, kFrameHeight, pixelMm(), kFocusDistanceMm / 1000);
     printFilmErrors();
 
-    std::printf("\n### Whole frames: time and image error (%d spp, best of %d runs; RMSE against accurate at %d spp, "
-                "%d at %s)\n\n", kTableSpp, kRepeats, kReferenceSpp, kConvergenceReferenceSpp, kConvergenceStop);
-    std::printf("| lens | stop | auto: thick lens for | s accurate | s approximate | s auto | auto / faster | "
-                "RMSE accurate | RMSE approximate | RMSE auto |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("\n### Whole frames: time and image error (%d spp, best of %d runs; RMSE against exact at %d spp, "
+                "%d at %s)\n\n", kTableSpp, effort.repeats, effort.referenceSpp, effort.convergenceReferenceSpp, kConvergenceStop);
+    std::printf("| lens | stop | auto: thick lens for | CPU s exact | CPU s thick | CPU s auto | auto / faster | "
+                "RMSE exact | RMSE thick | RMSE auto |\n|---|---|---|---|---|---|---|---|---|---|\n");
     std::map<std::string, Image> convergenceReference;
     for (const LensCase& lens : lensCases())
         for (const StopCase& stop : stopCases()) {
             const bool convergenceStop = stop.label == kConvergenceStop;
             const Image reference = renderFrame(lens, stop, "exact", kFrameWidth, kFrameHeight,
-                                                convergenceStop ? kConvergenceReferenceSpp : kReferenceSpp).image;
+                                                convergenceStop ? effort.convergenceReferenceSpp : effort.referenceSpp).image;
             if (convergenceStop) convergenceReference[lens.name] = reference;
             CaseFrames c;
             for (const std::string& mode : kModes) {
@@ -115,15 +125,15 @@ int main(int argc, char** argv) {
             std::fflush(stdout);
         }
 
-    std::printf("\n### Convergence at %s: relative RMSE against accurate at %d spp (seconds per frame in brackets)\n\n",
-                kConvergenceStop, kConvergenceReferenceSpp);
+    std::printf("\n### Convergence at %s: relative RMSE against exact at %d spp (CPU seconds per frame in brackets)\n\n",
+                kConvergenceStop, effort.convergenceReferenceSpp);
     std::printf("| lens | mode |");
-    for (int spp : kSppLadder) std::printf(" %d spp |", spp);
+    for (int spp : effort.sppLadder) std::printf(" %d spp |", spp);
     std::printf("\n|---|---|");
-    for (std::size_t i = 0; i < kSppLadder.size(); ++i) std::printf("---|");
+    for (std::size_t i = 0; i < effort.sppLadder.size(); ++i) std::printf("---|");
     std::printf("\n");
     std::vector<Panel> panels;
-    Panel trade{"seconds per frame against error, " + lensCases().front().name, "seconds per frame", "relative RMSE",
+    Panel trade{"CPU seconds per frame against error, " + lensCases().front().name, "CPU seconds per frame", "relative RMSE",
                 true, true, {}};
     std::vector<std::string> reach;
     for (const LensCase& lens : lensCases()) {
@@ -133,7 +143,7 @@ int main(int argc, char** argv) {
         for (const std::string& mode : kModes) {
             Series s{mode, {}, {}, mode == "auto"};
             std::printf("| %s | %s |", lens.name.c_str(), mode.c_str());
-            for (int spp : kSppLadder) {
+            for (int spp : effort.sppLadder) {
                 const TimedFrame f = bestOf(lens, stop, mode, spp);
                 const double e = relativeRmse(f.image, convergenceReference[lens.name]);
                 s.x.push_back(spp);
@@ -149,9 +159,9 @@ int main(int argc, char** argv) {
             panel.series.push_back(std::move(s));
         }
         panels.push_back(std::move(panel));
-        // Auto against the faster mode, at the error accurate reaches with kTableSpp samples.
-        const double target = curves["exact"].first[std::find(kSppLadder.begin(), kSppLadder.end(), kTableSpp) -
-                                                       kSppLadder.begin()];
+        // Auto against the faster mode, at the error exact reaches with kTableSpp samples.
+        const double target = curves["exact"].first[std::find(effort.sppLadder.begin(), effort.sppLadder.end(), kTableSpp) -
+                                                       effort.sppLadder.begin()];
         char line[512];
         const auto when = [&](const std::string& mode) {
             const double s = secondsToReach(curves[mode].first, curves[mode].second, target);
@@ -164,9 +174,9 @@ int main(int argc, char** argv) {
                       when("thick").c_str(), when("auto").c_str());
         reach.push_back(line);
     }
-    std::printf("\n### Seconds per frame to reach accurate's %d-spp error (%s; interpolated along the curves above)\n\n",
+    std::printf("\n### CPU seconds per frame to reach exact's %d-spp error (%s; interpolated along the curves above)\n\n",
                 kTableSpp, kConvergenceStop);
-    std::printf("| lens | target RMSE | accurate s | approximate s | auto s |\n|---|---|---|---|---|\n");
+    std::printf("| lens | target RMSE | exact CPU s | thick CPU s | auto CPU s |\n|---|---|---|---|---|\n");
     for (const std::string& l : reach) std::printf("%s\n", l.c_str());
 
     Panel film{"thick-lens film error at " + std::string(kConvergenceStop), "field position (film radius, mm)",

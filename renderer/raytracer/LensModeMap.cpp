@@ -1,6 +1,7 @@
 #include "LensModeMap.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "NumberText.h"
 
@@ -37,11 +38,15 @@ LensModeMap LensModeMap::thickEverywhere(double minFilmRadius, double maxFilmRad
     return m;
 }
 
+bool LensModeMap::thickAllowed(const ThickLensFilmError& e, double thresholdMm) {
+    return e.maxErrorMm < thresholdMm && std::fabs(e.illuminationRatio - 1) < kAutoBrightnessTolerance;
+}
+
 LensModeMap LensModeMap::fromErrors(const std::vector<ThickLensFilmError>& errors, double thresholdMm) {
     LensModeMap m;
     m.minRadius_ = errors.front().filmRadius;
     m.maxRadius_ = errors.back().filmRadius;
-    const auto under = [&](const ThickLensFilmError& e) { return e.maxErrorMm < thresholdMm; };
+    const auto under = [&](const ThickLensFilmError& e) { return thickAllowed(e, thresholdMm); };
     if (errors.size() < 2 || !(m.maxRadius_ > m.minRadius_)) {
         m.thick_ = {std::all_of(errors.begin(), errors.end(), under)};
         return m;

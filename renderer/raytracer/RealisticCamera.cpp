@@ -58,6 +58,9 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         case LensMode::Auto:
             errors_ = measureThickLensFilmError(analysis_, minFilmRadius_, maxFilmRadius_);
             modes_ = LensModeMap::fromErrors(errors_, params.autoThresholdPixels * pixelMm);
+            thickShare_ = thickShareOfCrop();
+            if (modes_.usesExact() && thickShare_ < kAutoMinThickShare)
+                modes_ = LensModeMap::exactEverywhere(minFilmRadius_, maxFilmRadius_);
             break;
     }
     const auto checkFilm = [&](double z) {
@@ -110,6 +113,20 @@ double RealisticCamera::findFilmRadiusRange(double filmMarginPixels) {
     return std::hypot(halfWidthMm_ + marginMm, halfHeightMm_ + marginMm);
 }
 
+double RealisticCamera::thickShareOfCrop() const {
+    constexpr int kGrid = 64;  // points across the crop window each way
+    const std::array<double, 4>& c = params_.crop;
+    int thick = 0;
+    for (int j = 0; j < kGrid; ++j)
+        for (int i = 0; i < kGrid; ++i) {
+            double fx, fy;
+            filmPoint((c[0] + (c[1] - c[0]) * (i + 0.5) / kGrid) * width_, (c[2] + (c[3] - c[2]) * (j + 0.5) / kGrid) * height_,
+                      fx, fy);
+            thick += modes_.thickAt(filmRadius(fx, fy));
+        }
+    return double(thick) / (kGrid * kGrid);
+}
+
 double RealisticCamera::exactCentreWeight() const {
     // The film centre's region, measured apart when the crop leaves the centre out.
     const ExitPupilBounds centre = bounds_.firstRadius == 0
@@ -145,16 +162,6 @@ double RealisticCamera::aimThick(double fx, double fy, float u1, float u2, Ray& 
     return shape * cos4(ray.direction.z) * (M_PI * 0.25 * xp.diameter * xp.diameter) / (dz * dz) * weightScaleThick_;
 }
 
-double RealisticCamera::aimExact(double fx, double fy, float u1, float u2, Ray& ray) const {
-    const PupilSample s = sampleExitPupil(bounds_, fx, fy, u1, u2);
-    if (!(s.area > 0)) return 0;
-    const Vec3 from{fx, fy, filmZExact_};
-    const Vec3 d = s.point - from;
-    ray = {from, (1.0 / length(d)) * d};
-    const double dz = s.point.z - filmZExact_;
-    return cos4(ray.direction.z) * s.area / (dz * dz) * weightScaleExact_;
-}
-
 TraceResult RealisticCamera::traceShaped(const Ray& ray, double& weight) const {
     if (params_.aperture.isCircular()) return traceRay(analysis_.lens, ray, TraceDirection::FilmToScene);
     // Film to stop (the stop included), the shape where the ray crosses it, then on to the front.
@@ -184,30 +191,32 @@ bool RealisticCamera::finish(const Ray& lensRay, double weight, CameraRay& out) 
 bool RealisticCamera::generateRay(double rasterX, double rasterY, float u1, float u2, CameraRay& out) const {
     double fx, fy;
     filmPoint(rasterX, rasterY, fx, fy);
-    Ray ray;
-    if (modes_.thickAt(filmRadius(fx, fy))) {
-        const double weight = aimThick(fx, fy, u1, u2, ray);
-        const TraceResult r = traceThick(analysis_.thick, ray, TraceDirection::FilmToScene);
-        return weight > 0 && r.ok() && finish(r.ray, weight, out);
+    if (!modes_.thickAt(filmRadius(fx, fy))) {
+        // One exact ray is a batch of one: the same bits as the renderer's batches.
+        const CameraSample sample{rasterX, rasterY, u1, u2};
+        generateRays(&sample, 1, &out);
+        return out.weight > 0;
     }
-    double weight = aimExact(fx, fy, u1, u2, ray);
-    if (!(weight > 0)) return false;
-    const TraceResult r = traceShaped(ray, weight);
-    return r.ok() && weight > 0 && finish(r.ray, weight, out);
+    Ray ray;
+    const double weight = aimThick(fx, fy, u1, u2, ray);
+    const TraceResult r = traceThick(analysis_.thick, ray, TraceDirection::FilmToScene);
+    return weight > 0 && r.ok() && finish(r.ray, weight, out);
 }
 
 void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const {
-    if (!modes_.usesExact() || !params_.aperture.isCircular()) {  // a shaped stop is met ray by ray
+    if (!modes_.usesExact()) {
         Camera::generateRays(samples, n, out);
         return;
     }
-    // Thick-lens samples are traced one by one; the exact ones together, as one batch.
-    thread_local RayBatch batch;
-    thread_local std::vector<double> weights;
-    thread_local std::vector<std::size_t> sampleOf;
-    batch.resize(n);
-    weights.resize(n);
-    sampleOf.clear();
+    // Thick-lens samples are made one by one; the exact ones together, each stage one loop over
+    // them in structure-of-arrays form so that it vectorises.
+    thread_local ExactRayBatch b;
+    b.filmX.resize(n);
+    b.filmY.resize(n);
+    b.u1.resize(n);
+    b.u2.resize(n);
+    b.sampleOf.resize(n);
+    std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const CameraSample& s = samples[i];
         double fx, fy;
@@ -216,17 +225,50 @@ void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, C
             if (!generateRay(s.rasterX, s.rasterY, s.u1, s.u2, out[i])) out[i].weight = 0;
             continue;
         }
-        Ray ray{{0, 0, filmZExact_}, {0, 0, 1}};
-        weights[sampleOf.size()] = aimExact(fx, fy, s.u1, s.u2, ray);
-        batch.set(sampleOf.size(), ray);
-        sampleOf.push_back(i);
+        b.filmX[m] = fx;
+        b.filmY[m] = fy;
+        b.u1[m] = s.u1;
+        b.u2[m] = s.u2;
+        b.sampleOf[m++] = i;
     }
-    batch.resize(sampleOf.size());
-    traceBatch(analysis_.lens, batch, TraceDirection::FilmToScene);
-    for (std::size_t k = 0; k < sampleOf.size(); ++k) {
-        CameraRay& o = out[sampleOf[k]];
+    if (m == 0) return;
+    sampleExitPupils(bounds_, m, b.filmX.data(), b.filmY.data(), b.u1.data(), b.u2.data(), b.pupil);
+    b.rays.resize(m);
+    b.weights.resize(m);
+    aimExactRays(m, b);
+    if (params_.aperture.isCircular()) traceBatch(analysis_.lens, b.rays, TraceDirection::FilmToScene);
+    for (std::size_t k = 0; k < m; ++k) {
+        CameraRay& o = out[b.sampleOf[k]];
         o.weight = 0;
-        if (weights[k] > 0 && batch.blocked[k] == BlockReason::None) finish(batch.get(k), weights[k], o);
+        if (!(b.weights[k] > 0)) continue;
+        if (params_.aperture.isCircular()) {
+            if (b.rays.blocked[k] == BlockReason::None) finish(b.rays.get(k), b.weights[k], o);
+            continue;
+        }
+        double weight = b.weights[k];  // a shaped stop is met ray by ray
+        const TraceResult r = traceShaped(b.rays.get(k), weight);
+        if (r.ok() && weight > 0) finish(r.ray, weight, o);
+    }
+}
+
+// Irradiance from a patch dA of the aiming plane: L cos^2 / dist^2 dA = L cos^4 / dz^2 dA.
+void RealisticCamera::aimExactRays(std::size_t count, ExactRayBatch& b) const {
+    const double z = filmZExact_, aimZ = bounds_.aimZ, scale = weightScaleExact_;
+    const double* px = b.pupil.x.data();
+    const double* py = b.pupil.y.data();
+    const double* area = b.pupil.area.data();
+    RayBatch& r = b.rays;
+#pragma GCC ivdep
+    for (std::size_t k = 0; k < count; ++k) {
+        const double dx = px[k] - b.filmX[k], dy = py[k] - b.filmY[k], dz = aimZ - z;
+        const double inv = 1.0 / std::sqrt(dx * dx + dy * dy + dz * dz);
+        r.ox[k] = b.filmX[k];
+        r.oy[k] = b.filmY[k];
+        r.oz[k] = z;
+        r.dx[k] = inv * dx;
+        r.dy[k] = inv * dy;
+        r.dz[k] = inv * dz;
+        b.weights[k] = area[k] > 0 ? cos4(r.dz[k]) * area[k] / (dz * dz) * scale : 0.0;
     }
 }
 
@@ -254,13 +296,19 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"weighting", params_.simpleWeighting ? "simple (centre = 1)" : "radiometric (cos^4 A / d^2 * t)"},
             {"cameraSpaceUnitMm", formatNumber(params_.cameraUnitMm)}};
     if (params_.mode == LensMode::Auto) {
-        // The prediction behind the split: worst film error of the thick lens, in pixels, per radius.
+        // The prediction behind the split, per radius: the thick lens's worst film error in pixels
+        // and its brightness against the exact lens's; and the share of the film it was allowed.
         const double pixelMm = params_.filmDiagonalMm / std::hypot(double(width_), double(height_));
-        std::string errors;
-        for (const ThickLensFilmError& e : errors_)
+        std::string errors, brightness;
+        for (const ThickLensFilmError& e : errors_) {
             errors += (errors.empty() ? "" : ", ") + formatNumber(e.filmRadius) + " mm: " + formatNumber(e.maxErrorMm / pixelMm);
+            brightness += (brightness.empty() ? "" : ", ") + formatNumber(e.filmRadius) + " mm: " +
+                          formatNumber(e.illuminationRatio, 3);
+        }
         d["autoThresholdPixels"] = formatNumber(params_.autoThresholdPixels);
         d["thickLensErrorPixels"] = errors;
+        d["thickLensBrightnessRatio"] = brightness;
+        d["thickLensShareOfFilm"] = formatNumber(thickShare_, 3);
     }
     return d;
 }

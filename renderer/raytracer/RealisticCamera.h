@@ -1,11 +1,12 @@
 #pragma once
 // The realistic camera of Kolb, Mitchell & Hanrahan (1995): rays from the film through a real lens
-// (exact trace, "exact"), its thick-lens model ("thick"), or each by film radius ("auto":
-// the thick lens where its predicted error stays under a threshold). Lens space is millimetres with
-// the origin at the front vertex and +z toward the scene, like pbrt's camera space; a lens-space
-// ray leaving the front element maps to camera space by dividing by the millimetres of one camera
-// unit (1 with the course's parameters, whose camera space is millimetres; 1000 with pbrt-v3's
-// lensfile, whose camera space is metres: docs/camera-conventions.md).
+// (exact trace, "exact"), its thick-lens model ("thick"), or each by film radius ("auto": the
+// thick lens where its predicted position and brightness errors stay under the thresholds, see
+// LensModeMap.h). Lens space is millimetres with the origin at the front vertex and +z toward the
+// scene, like pbrt's camera space; a lens-space ray leaving the front element maps to camera space
+// by dividing by the millimetres of one camera unit (1 with the course's parameters, whose camera
+// space is millimetres; 1000 with pbrt-v3's lensfile, whose camera space is metres:
+// docs/camera-conventions.md).
 //
 // Each model keeps its own film plane (exact: best focus of the real lens; thick: the thick-lens
 // conjugate of the plane of focus), so an auto picture equals the accurate one where the exact
@@ -24,6 +25,7 @@
 #include "LensAnalysis.h"
 #include "LensSettings.h"
 #include "LensModeMap.h"
+#include "RayBatch.h"
 #include "Transform.h"
 
 namespace lenslab {
@@ -76,10 +78,21 @@ private:
     // Sets the film radii the crop window reaches; returns the whole frame's reach.
     double findFilmRadiusRange(double filmMarginPixels);
     double exactCentreWeight() const;
-    // Where a ray from film point (fx, fy) is aimed and the weight it will carry if the lens passes
-    // it (0: no aim), for the thick lens or the exact trace.
+    // Auto: the fraction of the crop window's film area where the thick lens is allowed.
+    double thickShareOfCrop() const;
+    // Where a thick-lens ray from film point (fx, fy) is aimed and the weight it will carry if the
+    // lens passes it (0: no aim).
     double aimThick(double fx, double fy, float u1, float u2, Ray& ray) const;
-    double aimExact(double fx, double fy, float u1, float u2, Ray& ray) const;
+    // The exact rays of a batch: film points and lens samples in, pupil points, rays and weights
+    // (0: no aim) out, as structure of arrays.
+    struct ExactRayBatch {
+        std::vector<double> filmX, filmY, u1, u2;
+        std::vector<std::size_t> sampleOf;  // the caller's index of each exact sample
+        PupilSampleBatch pupil;
+        RayBatch rays;
+        std::vector<double> weights;
+    };
+    void aimExactRays(std::size_t count, ExactRayBatch& batch) const;
     // The exact trace with the stop's shape applied where the ray crosses the stop; the weight is
     // multiplied by the shape's.
     TraceResult traceShaped(const Ray& ray, double& weight) const;
@@ -94,6 +107,7 @@ private:
     double filmZExact_ = 0, filmZThick_ = 0;
     std::vector<ThickLensFilmError> errors_;
     LensModeMap modes_;
+    double thickShare_ = 0;          // auto: thickShareOfCrop() of the allowed bands
     ExitPupilBounds bounds_;         // for the exact trace's film radii
     // Exposure time, or 1 / centre weight for simple weighting (each model normalised by its own).
     double weightScaleExact_ = 1, weightScaleThick_ = 1;

@@ -27,7 +27,9 @@ struct ThickLensFilmError {
 
 struct ThickLensFilmErrorOptions {
     int filmRadii = 12;  // sampled evenly from the minimum to the maximum radius
-    int pupilGrid = 32;  // grid cells across the passing rays' box on the aiming plane (its y >= 0 half)
+    // Grid cells across the passing rays' box on the aiming plane (its y >= 0 half): at 64 the
+    // brightness ratio is within ~0.5% of a 128 grid's (32: ~2%), fine enough for auto's 3% bound.
+    int pupilGrid = 64;
 };
 
 // Where rays are compared: the plane of focus (or the far plane), and the thick lens's lateral

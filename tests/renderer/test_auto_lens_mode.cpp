@@ -1,5 +1,6 @@
-// Mode "auto": the thick lens where its predicted film error stays under the threshold, the exact
-// trace elsewhere, with the work limited to the film radii the crop window reaches.
+// Mode "auto": the thick lens where its predicted film position and brightness errors stay under the
+// thresholds, over at least nine tenths of the film (else nowhere), the exact trace elsewhere, with
+// the work limited to the film radii the crop window reaches.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,32 +19,57 @@ RealisticParams params(const std::string& lens, double fstop, LensMode mode) {
     return p;
 }
 
-TEST(AutoLensMode, FisheyeUsesTheThickLensNearTheAxisAndTheExactTraceAtTheRim) {
+TEST(AutoLensMode, FisheyeTracesExactlyEverywhereWhenTheThickLensFitsOnlyTheCentre) {
     const RealisticCamera c(params("fisheye.10mm.dat", 5.6, LensMode::Auto), {}, 240, 160, 0.5);
-    const LensModeMap& m = c.lensModes();
-    EXPECT_TRUE(m.thickAt(0.0));
-    EXPECT_TRUE(m.thickAt(1.5));
-    // The fisheye's projection leaves the thick lens's (rectilinear) by 0.25 mm at 4 mm already.
-    EXPECT_FALSE(m.thickAt(5.0));
-    EXPECT_FALSE(m.thickAt(12.0));
-    EXPECT_FALSE(m.thickAt(21.0));  // beyond the image circle: only the exact trace draws it black
-    EXPECT_EQ(c.describe().at("lensModelByFilmRadius"), "thick for r < 2 mm, exact beyond");
-    // The prediction behind it: the worst exact ray strays 0.04 mm at r = 2 mm (under 0.075 mm,
-    // half a pixel), 0.25 mm at 4 mm.
+    // The prediction: the worst exact ray strays 0.04 mm at r = 2 mm (under 0.075 mm, half a
+    // pixel), 0.25 mm at 4 mm: the fisheye's projection leaves the thick lens's (rectilinear).
     const auto& e = c.thickLensErrors();
     ASSERT_GE(e.size(), 3u);
     EXPECT_LT(e[1].maxErrorMm, 0.075);
     EXPECT_GT(e[2].maxErrorMm, 0.2);
+    // The thick lens would be allowed on the disc r < 2 mm: 1.5% of the film, not worth a split.
+    EXPECT_EQ(c.describe().at("thickLensShareOfFilm"), "0.0146");
+    EXPECT_FALSE(c.lensModes().usesThick());
+    EXPECT_EQ(c.describe().at("lensModelByFilmRadius"), "exact for 0 <= r <= 21.9 mm");
+}
+
+TEST(AutoLensMode, ATelephotoFivePercentTooBrightIsTracedExactlyThoughItsPositionsFit) {
+    const RealisticCamera c(params("telephoto.250mm.dat", 5.6, LensMode::Auto), {}, 240, 160, 0.5);
+    const auto& e = c.thickLensErrors();
+    ASSERT_EQ(e.size(), 12u);
+    for (std::size_t i = 0; i + 1 < e.size(); ++i) {
+        // Within half a pixel up to r = 20 mm, and 5% too bright everywhere (its thick exit pupil
+        // is larger than the real lens's opening seen from the film).
+        EXPECT_LT(e[i].maxErrorMm, 0.075) << e[i].filmRadius;
+        EXPECT_GT(e[i].illuminationRatio, 1.04) << e[i].filmRadius;
+        EXPECT_LT(e[i].illuminationRatio, 1.07) << e[i].filmRadius;
+    }
+    EXPECT_EQ(c.describe().at("thickLensShareOfFilm"), "0");
+    EXPECT_FALSE(c.lensModes().usesThick());
 }
 
 TEST(AutoLensMode, TelephotoAtF11UsesTheThickLensEverywhereOnASmallFrameButNotOnALargeOne) {
     const RealisticCamera small(params("telephoto.250mm.dat", 11, LensMode::Auto), {}, 240, 160, 0.5);
     EXPECT_FALSE(small.lensModes().usesExact());
     EXPECT_EQ(small.pupilBounds().radiusCount(), 0) << "no exit-pupil bounds for a lens never traced exactly";
+    for (const ThickLensFilmError& e : small.thickLensErrors()) EXPECT_NEAR(e.illuminationRatio, 1.0, 0.025);
     // 2400 x 1600: 15 um pixels, and the telephoto's 7-70 um errors no longer fit under half of one.
     const RealisticCamera large(params("telephoto.250mm.dat", 11, LensMode::Auto), {}, 2400, 1600, 0.5);
     EXPECT_TRUE(large.lensModes().usesExact());
     EXPECT_GT(large.pupilBounds().radiusCount(), 0);
+}
+
+TEST(AutoLensMode, TheFilmIsSplitOnlyWhereTheThickLensCoversNineTenthsOfIt) {
+    // 480 x 320: the thick lens fits out to r = 17.8 mm, 91% of the film: thick there, exact beyond.
+    const RealisticCamera split(params("telephoto.250mm.dat", 11, LensMode::Auto), {}, 480, 320, 0.5);
+    EXPECT_EQ(split.describe().at("lensModelByFilmRadius"), "thick for r < 17.8 mm, exact beyond");
+    EXPECT_EQ(split.describe().at("thickLensShareOfFilm"), "0.91");
+    EXPECT_TRUE(split.lensModes().thickAt(17.0));
+    EXPECT_FALSE(split.lensModes().thickAt(19.0));
+    // 960 x 640: it fits to r = 13.8 mm only, 78% of the film: exact everywhere.
+    const RealisticCamera whole(params("telephoto.250mm.dat", 11, LensMode::Auto), {}, 960, 640, 0.5);
+    EXPECT_EQ(whole.describe().at("thickLensShareOfFilm"), "0.784");
+    EXPECT_FALSE(whole.lensModes().usesThick());
 }
 
 TEST(AutoLensMode, AccurateAndApproximateModesKeepOneModelEverywhere) {
@@ -105,34 +131,37 @@ TEST(AutoLensMode, ACropOverrideInTheRenderSettingsReachesTheCamera) {
         << out.metadata.at("lensModelByFilmRadius");
 }
 
-// A checkerboard wall 3 m ahead under a uniform sky, through the fisheye on a 24 x 24 mm film.
-std::string fisheyeWall(const std::string& mode) {
-    return test::courseCamera("fisheye.10mm.dat", "\"float fstop\" 5.6 \"float focaldistance\" ") +
-           "3000 \"float filmdiagonal\" 33.94 \"string mode\" \"" + mode + "\"\n"
+// A fine checkerboard wall in the plane of focus, 5.5 m ahead, under a uniform sky, through the
+// telephoto at f/11 on a 36 x 24 mm film; a 0.1-pixel threshold splits the film at r = 18.3 mm.
+constexpr int kWallWidth = 96, kWallHeight = 64;
+constexpr double kWallThreshold = 0.1;
+
+std::string telephotoWall(const std::string& mode) {
+    return test::courseCamera("telephoto.250mm.dat", "\"float fstop\" 11 \"float focaldistance\" ") +
+           "5500 \"float filmdiagonal\" 43.267 \"string mode\" \"" + mode + "\" \"float autothreshold\" " + std::to_string(kWallThreshold) + "\n"
            "Film \"image\"\nPixelFilter \"box\"\nIntegrator \"directlighting\" \"integer maxdepth\" 1\n"
            "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
-           "Texture \"c\" \"spectrum\" \"checkerboard\" \"float uscale\" 24 \"float vscale\" 24 \"rgb tex1\" [0.9 0.9 0.9] "
+           "Texture \"c\" \"spectrum\" \"checkerboard\" \"float uscale\" 720 \"float vscale\" 720 \"rgb tex1\" [0.9 0.9 0.9] "
            "\"rgb tex2\" [0.1 0.1 0.1]\nMaterial \"matte\" \"texture Kd\" \"c\"\n"
-           "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point P\" [-9 -9 3  9 -9 3  9 9 3  -9 9 3] "
+           "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point P\" [-9 -9 5.5  9 -9 5.5  9 9 5.5  -9 9 5.5] "
            "\"float uv\" [0 0 1 0 1 1 0 1]\nWorldEnd\n";
 }
 
 TEST(AutoLensMode, AutoImageIsTheApproximateOneWhereThickAndTheAccurateOneWhereExact) {
     test::TempDir dir;
-    constexpr int kSize = 48;
     const auto render = [&](const std::string& mode) {
-        return test::render(dir.write(mode + ".pbrt", fisheyeWall(mode)), kSize, kSize, 4).image;
+        return test::render(dir.write(mode + ".pbrt", telephotoWall(mode)), kWallWidth, kWallHeight, 4).image;
     };
     const Image accurate = render("exact"), approximate = render("thick"), automatic = render("auto");
-    RealisticParams p = realisticParams(test::lensPath("fisheye.10mm.dat"), 5.6, 3000);
-    p.filmDiagonalMm = 33.94;
+    RealisticParams p = realisticParams(test::lensPath("telephoto.250mm.dat"), 11, 5500);
+    p.filmDiagonalMm = 43.267;
     p.mode = LensMode::Auto;
-    const RealisticCamera camera(p, {}, kSize, kSize, 0.5);
-    ASSERT_TRUE(camera.lensModes().usesThick());
-    ASSERT_TRUE(camera.lensModes().usesExact());
+    p.autoThresholdPixels = kWallThreshold;
+    const RealisticCamera camera(p, {}, kWallWidth, kWallHeight, 0.5);
+    ASSERT_EQ(camera.describe().at("lensModelByFilmRadius"), "thick for r < 18.3 mm, exact beyond");
     int thickPixels = 0, exactPixels = 0, thickSame = 0, exactSame = 0, thickDiffersFromAccurate = 0;
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
+    for (int y = 0; y < kWallHeight; ++y)
+        for (int x = 0; x < kWallWidth; ++x) {
             // A box-filtered pixel takes samples from its own square only: all four corners on one side.
             int thickCorners = 0;
             for (int c = 0; c < 4; ++c) {
@@ -150,8 +179,8 @@ TEST(AutoLensMode, AutoImageIsTheApproximateOneWhereThickAndTheAccurateOneWhereE
                 exactSame += a == test::lum(accurate, x, y);
             }
         }
-    EXPECT_GT(thickPixels, 20);
-    EXPECT_GT(exactPixels, 1000);
+    EXPECT_GT(thickPixels, 5000);  // of 6144
+    EXPECT_GT(exactPixels, 200);   // the corners
     EXPECT_EQ(thickSame, thickPixels);
     EXPECT_EQ(exactSame, exactPixels);
     EXPECT_GT(thickDiffersFromAccurate, thickPixels / 2) << "the two models must differ for the check to mean anything";
