@@ -2,10 +2,12 @@
 // makes every write need the token, loopback or not). In headless Chromium an upload without the
 // token is refused and the page says so next to the field; with the token typed in, the same
 // upload succeeds, the token is kept for the tab (sessionStorage) and not in localStorage.
+// A screenshot of the header with the refusal goes to tests/browser/artifacts/token-refused.png.
 // usage: node token.test.mjs LENSLAB_BINARY SOURCE_DIR
-import { copyFileSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
+import { copyFileSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
-import { join } from "node:path";
+import { dirname, join } from "node:path";
+import { fileURLToPath } from "node:url";
 import { launchBrowser, startServer, stopServer } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
@@ -13,6 +15,8 @@ if (!binary || !sourceDir) {
   console.error("usage: node token.test.mjs LENSLAB_BINARY SOURCE_DIR");
   process.exit(2);
 }
+const artifacts = join(dirname(fileURLToPath(import.meta.url)), "artifacts");
+mkdirSync(artifacts, { recursive: true });
 const work = mkdtempSync(join(tmpdir(), "lenslab-token-"));
 const token = "0123456789abcdef0123456789abcdef0123456789abcdef";
 
@@ -46,6 +50,7 @@ async function main() {
     check(uploads.length === 1 && uploads[0] === "", "that upload carried no Authorization header");
     check(await page.evaluate(() => document.activeElement.id) === "token-input", "the keyboard goes to the token field");
     check(!(await page.textContent("#lens-list")).includes("upload-"), "and no lens was added");
+    await page.locator("header").screenshot({ path: join(artifacts, "token-refused.png") });
 
     await page.fill("#token-input", "not-the-token-at-all");
     await page.press("#token-input", "Enter");
