@@ -1,7 +1,7 @@
 // A full or broken data folder (issue 14): uploads that cannot be written are answered 507 with a
 // message the user can act on, never a path of the server's file system, and renders whose image
 // cannot be written fail with such a message too; a data-folder quota is enforced the same way.
-// The server is started with a file-size limit (RLIMIT_FSIZE, inherited across fork and
+// The fixture's server is started with a file-size limit (RLIMIT_FSIZE, inherited across fork and
 // exec), under which writing past the limit fails as on a full disk.
 #include <gtest/gtest.h>
 #include <signal.h>
