@@ -1,5 +1,6 @@
 #include "ServeCommand.h"
 
+#include <malloc.h>
 #include <signal.h>
 
 #include <filesystem>
@@ -40,6 +41,11 @@ int serveUntilStopped(ServiceConfig config, std::unique_ptr<JobRenderer> rendere
     sigaddset(&stopSignals, SIGINT);
     sigaddset(&stopSignals, SIGTERM);
     pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
+    // glibc gives each thread that meets a busy arena a new one, up to 8 per core. The 32 HTTP
+    // workers drawing diagrams then spread the cache's PNGs and the drawings' large buffers over
+    // 16 arenas, each keeping its own free holes, and resident memory crept up under steady load
+    // (bench/server/RESULTS.md, soak). Two arenas reuse those holes; set before any thread starts.
+    ::mallopt(M_ARENA_MAX, 2);
 
     Service service(config, std::move(renderer));
     const int port = service.start();

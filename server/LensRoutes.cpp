@@ -64,6 +64,7 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
             if (!file.filename.empty()) name = file.filename;
         }
         if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw HttpError(400, "the lens table is empty");
+        parts.quota.checkRoomForWrite();
         try {
             const auto lens = parts.lenses.add(name, text, layoutParameter(req));
             res.set_header("Location", "/api/lenses/" + lens->id);

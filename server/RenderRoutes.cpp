@@ -28,6 +28,7 @@ JobView findJob(const ServiceParts& parts, const std::string& id) {
 }
 
 void submit(ServiceParts& parts, const RenderRequest& request, httplib::Response& res) {
+    parts.quota.checkRoomForWrite();
     const RenderJobInput input = resolveRenderJob(newRandomIdentifier("render-"), request, parts.lenses, parts.scenes);
     try {
         const JobRecord record = parts.jobs.submit(input);

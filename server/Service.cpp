@@ -35,13 +35,14 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
       jobStore_(database_),
       renderer_(std::move(renderer)),
       jobs_(jobStore_, *renderer_, config.limits, (fs::path(config.dataDir) / "renders").string()),
-      parts_{config_, lenses_, scenes_, diagrams_, jobs_, report_, secondsSinceEpoch()},
+      quota_(config.dataDir, config.maxDataBytes, [this] { collectFinishedRenders(); }),
+      parts_{config_, lenses_, scenes_, diagrams_, jobs_, report_, quota_, secondsSinceEpoch()},
       http_(config_, accessLog_) {
     const int interrupted = jobStore_.markInterrupted();
     if (interrupted > 0) std::cerr << "lenslab serve: " << interrupted << " render(s) were interrupted; marked failed\n";
     restoreQueuedJobs();
-    collectRenders(jobs_, jobStore_, config_.retention, secondsSinceEpoch());
-    jobs_.setAfterJob([this] { collectRenders(jobs_, jobStore_, config_.retention, secondsSinceEpoch()); });
+    collectFinishedRenders();
+    jobs_.setAfterJob([this] { collectFinishedRenders(); });
     addHealthRoutes(http_.routes(), parts_);
     addLensRoutes(http_.routes(), parts_);
     addDiagramRoutes(http_.routes(), parts_);
@@ -67,6 +68,8 @@ void Service::restoreQueuedJobs() {
         }
     }
 }
+
+void Service::collectFinishedRenders() { collectRenders(jobs_, jobStore_, config_.retention, secondsSinceEpoch()); }
 
 int Service::start() { return http_.start(config_.host, config_.port); }
 

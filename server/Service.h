@@ -6,6 +6,7 @@
 
 #include "AccessLog.h"
 #include "DataFolderLock.h"
+#include "DataFolderQuota.h"
 #include "Database.h"
 #include "DiagramCache.h"
 #include "HttpServer.h"
@@ -31,6 +32,7 @@ public:
 
 private:
     void restoreQueuedJobs();
+    void collectFinishedRenders();  // by the retention policy
 
     ServiceConfig config_;
     AccessLog accessLog_;
@@ -43,6 +45,7 @@ private:
     std::unique_ptr<JobRenderer> renderer_;
     JobQueue jobs_;
     ReportJob report_;
+    DataFolderQuota quota_;
     ServiceParts parts_;
     HttpServer http_;
 };

@@ -57,6 +57,7 @@ struct ServiceConfig {
     RetentionPolicy retention;
     AccessPolicy access;
     int maxUploadedLenses = 500;
+    std::uintmax_t maxDataBytes = 10ull << 30;  // data folder at most; then uploads and renders get 507 (0: no quota)
     std::size_t diagramCacheBytes = 64u << 20;
     int httpThreads = 32;
     std::string mpiHostfile;     // non-empty: renders run through mpirun over these hosts

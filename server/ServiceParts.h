@@ -2,6 +2,7 @@
 // What the route handlers work with; owned by Service, which outlives the HTTP server.
 #include <httplib.h>
 
+#include "DataFolderQuota.h"
 #include "DiagramCache.h"
 #include "JobQueue.h"
 #include "LensStore.h"
@@ -18,6 +19,7 @@ struct ServiceParts {
     DiagramCache& diagrams;
     JobQueue& jobs;
     ReportJob& report;
+    DataFolderQuota& quota;  // checked before uploads and render submissions
     double startedAt;  // seconds since the epoch
 };
 

@@ -1,4 +1,6 @@
-// Talking to the service (docs/api.md) and telling the user what went wrong.
+// Talking to the service (docs/api.md) and telling the user what went wrong. Every request goes
+// through authorizedFetch, which adds the API token when one is set (token.js).
+import { tokenRefused, withToken } from "./token.js";
 
 export const $ = (id) => document.getElementById(id);
 
@@ -11,11 +13,18 @@ export function showMessage(text, kind = "error") {
 
 export function clearMessage() { $("message").hidden = true; }
 
+// fetch() with the API token; a 401 is also shown next to the token field.
+export async function authorizedFetch(path, options = {}) {
+  const response = await fetch(path, { ...options, headers: withToken(options.headers) });
+  if (response.status === 401) tokenRefused();
+  return response;
+}
+
 // Fetches JSON; throws an Error carrying the service's {"error"} text (and .status) or a description.
 export async function api(path, options = {}) {
   let response;
   try {
-    response = await fetch(path, options);
+    response = await authorizedFetch(path, options);
   } catch (e) {
     throw new Error("The lenslab service cannot be reached (" + e.message + "). Is it still running?");
   }

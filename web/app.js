@@ -1,13 +1,16 @@
 // lenslab web page: the lens workbench. Plain ES modules against the service's API (docs/api.md),
 // no build step and no external resources: lens.js (lenses and their controls), renders.js (renders
-// and their history), viewer.js (exposure, comparison, zoom), report.js (the report build).
+// and their history), viewer.js (exposure, comparison, zoom), report.js (the report build),
+// token.js (the API token field).
 import { showMessage } from "./api.js";
+import { setUpTokenField } from "./token.js";
 import { loadLenses, setUpLensPanel } from "./lens.js";
 import { followReport, setUpReport } from "./report.js";
 import { loadHistory, loadScenes, setUpRenderPanel } from "./renders.js";
 import { setUpViewer } from "./viewer.js";
 
 async function start() {
+  setUpTokenField();
   setUpLensPanel();
   setUpRenderPanel();
   setUpViewer();

@@ -1,6 +1,7 @@
 // Linear HDR pixels on the page: exposure scaling as the report does it (4N²/π times 2^stops),
 // sRGB encoding through a table (fast enough to re-map 1024x1024 pixels per input event), the
 // exposure that fits an image's 99th percentile, and the difference of two images.
+import { authorizedFetch } from "./api.js";
 
 // The report's normalisation: the camera weight averages the exit pupil's solid angle, about
 // π/(4N²) of the scene radiance, so scaling by its inverse shows every f-number at scene brightness.
@@ -20,7 +21,7 @@ for (let i = 0; i < 256; i++) {
 
 // A render's pixels: { width, height, rgb: Float32Array (linear, top row first), fstop }.
 export async function fetchPixels(url) {
-  const response = await fetch(url);
+  const response = await authorizedFetch(url);
   if (!response.ok) {
     const body = await response.json().catch(() => ({}));
     throw new Error(body.error || `${response.status} ${response.statusText}`);

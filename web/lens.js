@@ -1,7 +1,7 @@
 // The lens panel: the lens list and uploads, the selected lens's data and diagram, and its controls
 // driven like the course's lens viewer (↑/↓ f-number by 0.1, Shift+↑/↓ a full stop, m the diagram
 // mode, ←/→ the focus). Out-of-range f-numbers are refused with the lens's range, never clamped.
-import { $, api, clearMessage, fixed, showMessage } from "./api.js";
+import { $, api, authorizedFetch, clearMessage, fixed, showMessage } from "./api.js";
 
 const state = {
   lenses: [],
@@ -194,7 +194,7 @@ async function updateLensView() {
 
 async function loadDiagram(url, request) {
   try {
-    const response = await fetch(url);
+    const response = await authorizedFetch(url);
     if (!response.ok) {
       const body = await response.json().catch(() => ({}));
       throw new Error(body.error || response.status + " " + response.statusText);

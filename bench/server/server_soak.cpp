@@ -1,14 +1,18 @@
 // Soak test of `lenslab serve` on loopback: 16 keep-alive clients send a fixed mix of requests for
 // a set time (cached and never-seen diagrams, lists, render submissions) while the server's
 // resident memory, diagram cache size and data-folder size are sampled every 10 s. Memory must
-// level off: a steady climb under the same mix is a leak or unbounded growth.
-// usage: server_soak [SECONDS (default 1800)] [LENSLAB_BINARY]   (prints Markdown)
+// level off: a steady climb under the same mix is a leak or unbounded growth. A single kind of
+// request instead of the mix tells which kind a climb comes from.
+// usage: server_soak [SECONDS (default 1800)] [mixed|hits|misses|lists|renders] [LENSLAB_BINARY]
+// (prints Markdown)
 #include <httplib.h>
 
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <iostream>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -25,29 +29,51 @@ using namespace lenslab::bench;
 constexpr int kClients = 16;
 constexpr int kSampleSeconds = 10;
 
+enum class Kind { CachedDiagram, NewDiagram, LensListOrHealth, RenderList, RenderSubmission };
+
+// The mix, chosen by the request's index: 55% cached diagrams (24 parameter sets), 25% diagrams
+// never asked before (each one drawn), 10% lens list and health, 5% render list, 5% render
+// submissions (202, or 429 when the queue is full).
+Kind mixedKind(long i) {
+    const int slot = static_cast<int>(i % 20);
+    if (slot <= 10) return Kind::CachedDiagram;
+    if (slot <= 15) return Kind::NewDiagram;
+    if (slot <= 17) return Kind::LensListOrHealth;
+    return slot == 18 ? Kind::RenderList : Kind::RenderSubmission;
+}
+
+// "mixed" or one kind for every request; "lists" alternates the three listings.
+std::function<Kind(long)> parseMix(const std::string& name) {
+    if (name == "mixed") return mixedKind;
+    if (name == "hits") return [](long) { return Kind::CachedDiagram; };
+    if (name == "misses") return [](long) { return Kind::NewDiagram; };
+    if (name == "lists") return [](long i) { return i % 3 == 2 ? Kind::RenderList : Kind::LensListOrHealth; };
+    if (name == "renders") return [](long) { return Kind::RenderSubmission; };
+    throw std::invalid_argument("unknown mix '" + name + "': mixed, hits, misses, lists or renders");
+}
+
 struct Counters {
     std::atomic<long> requests{0}, errors{0}, drawn{0}, renders{0};
 };
 
-// One request of the mix, chosen by its index: 55% cached diagrams (24 parameter sets), 25%
-// diagrams never asked before (each one drawn), 10% lens list and health, 5% render list, 5%
-// render submissions (202, or 429 when the queue is full).
-void oneRequest(httplib::Client& client, int clientIndex, long i, Counters& counters) {
+void oneRequest(httplib::Client& client, int clientIndex, long i, Kind kind, Counters& counters) {
     static const std::vector<std::string> lenses = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
     static const std::vector<std::string> modes = {"exact", "thick", "overlay"};
-    const int slot = static_cast<int>(i % 20);
     const auto send = [&]() -> httplib::Result {
-        if (slot <= 10) {
-            const long k = (clientIndex * 7 + i) % 24;
-            return client.Get("/api/lenses/" + lenses[k % 4] + "/diagram.png?size=800x400&mode=" + modes[(k / 4) % 3]);
+        switch (kind) {
+            case Kind::CachedDiagram: {
+                const long k = (clientIndex * 7 + i) % 24;
+                return client.Get("/api/lenses/" + lenses[k % 4] + "/diagram.png?size=800x400&mode=" + modes[(k / 4) % 3]);
+            }
+            case Kind::NewDiagram: {
+                const long unique = ++counters.drawn;
+                return client.Get("/api/lenses/" + lenses[unique % 4] + "/diagram.png?size=800x400&mode=" +
+                                  modes[unique % 3] + "&focus=" + std::to_string(1000 + unique));
+            }
+            case Kind::LensListOrHealth: return client.Get(i % 2 == 0 ? "/api/lenses" : "/api/health");
+            case Kind::RenderList: return client.Get("/api/renders");
+            case Kind::RenderSubmission: break;
         }
-        if (slot <= 15) {
-            const long unique = ++counters.drawn;
-            return client.Get("/api/lenses/" + lenses[unique % 4] + "/diagram.png?size=800x400&mode=" + modes[unique % 3] +
-                              "&focus=" + std::to_string(1000 + unique));
-        }
-        if (slot <= 17) return client.Get(slot == 16 ? "/api/lenses" : "/api/health");
-        if (slot == 18) return client.Get("/api/renders");
         ++counters.renders;
         return client.Post("/api/renders", json{{"lens", "dgauss.50mm"}, {"spp", 4}, {"width", 64}, {"height", 48}}.dump(),
                            "application/json");
@@ -70,7 +96,8 @@ std::uintmax_t folderBytes(const std::string& folder) {
 
 int main(int argc, char** argv) {
     const int seconds = argc > 1 ? std::stoi(argv[1]) : 1800;
-    const std::string binary = argc > 2 ? argv[2] : LENSLAB_BINARY;
+    const auto kindOf = parseMix(argc > 2 ? argv[2] : "mixed");
+    const std::string binary = argc > 3 ? argv[3] : LENSLAB_BINARY;
     const ServerUnderTest server = startServer(binary, {"--renders", "1", "--max-queue", "8", "--keep-gb", "0.1"});
     Counters counters;
     std::atomic<bool> stop{false};
@@ -81,7 +108,7 @@ int main(int argc, char** argv) {
             client.set_keep_alive(true);
             client.set_tcp_nodelay(true);
             client.set_read_timeout(60);
-            for (long i = 0; !stop; ++i) oneRequest(client, c, i, counters);
+            for (long i = 0; !stop; ++i) oneRequest(client, c, i, kindOf(i), counters);
         });
 
     std::cout << "| t s | RSS MiB | requests | req/s since last | errors | diagrams drawn | render submissions | "

@@ -6,10 +6,10 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
 
-// Resolves with { server, base } once the service prints its listening line.
-export function startServer(binary, work) {
-  const server = spawn(binary, ["serve", "--port", "0", "--data", join(work, "data"), "--access-log", join(work, "access.log")],
-    { stdio: ["ignore", "pipe", "pipe"] });
+// Resolves with { server, base } once the service prints its listening line; `extra`: more flags.
+export function startServer(binary, work, extra = []) {
+  const server = spawn(binary, ["serve", "--port", "0", "--data", join(work, "data"), "--access-log", join(work, "access.log"),
+    ...extra], { stdio: ["ignore", "pipe", "pipe"] });
   return new Promise((resolve, reject) => {
     let output = "";
     const timer = setTimeout(() => reject(new Error("server did not start:\n" + output)), 30000);

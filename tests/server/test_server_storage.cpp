@@ -1,6 +1,7 @@
 // A full or broken data folder (issue 14): uploads that cannot be written are answered 507 with a
 // message the user can act on, never a path of the server's file system, and renders whose image
-// cannot be written fail with such a message too. The server is started with a file-size limit (RLIMIT_FSIZE, inherited across fork and
+// cannot be written fail with such a message too; a data-folder quota is enforced the same way.
+// The fixture's server is started with a file-size limit (RLIMIT_FSIZE, inherited across fork and
 // exec), under which writing past the limit fails as on a full disk.
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <thread>
 
 #include "ServerProcess.h"
 
@@ -98,4 +100,41 @@ TEST_F(ServerStorage, ALensWhoseFileCannotBeRemovedStaysAndTheClientHearsWhy) {
     EXPECT_EQ(refused.status, 503) << refused.raw;
     expectNoServerPath(refused.raw);
     EXPECT_EQ(get(c, "/api/lenses/" + id).status, 200);  // still listed, as it still is on disk
+}
+
+// --max-data-gb: once the data folder reaches its quota, uploads and render submissions are
+// answered 507 with the sizes and what to do (no server path), reads go on, and writes are taken
+// again once space is freed.
+TEST(ServerQuota, WritesAre507AtTheDataFolderQuotaAndReadsGoOn) {
+    TempDir data, scenes;
+    std::ofstream(scenes.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n";
+    const double quotaGiB = 4.0 / 1024;  // 4 MiB: the fresh folder (database, log) holds far less
+    ServerProcess server(LENSLAB_FAKE_SERVER, data.path() + "/data",
+                         {"--scenes", scenes.path(), "--max-data-gb", std::to_string(quotaGiB)});
+    auto c = server.client();
+    const Reply first = postRaw(c, "/api/lenses?name=first.dat", kSmallLensTable);
+    ASSERT_EQ(first.status, 201) << first.raw;
+
+    const std::string filler = data.path() + "/data/filler.bin";
+    std::ofstream(filler) << std::string(6 << 20, 'x');  // the folder filled past the quota
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // the last measurement expires
+    const Reply upload = postRaw(c, "/api/lenses?name=second.dat", kSmallLensTable);
+    EXPECT_EQ(upload.status, 507) << upload.raw;
+    const std::string message = upload.body.value("error", "");
+    EXPECT_NE(message.find("quota"), std::string::npos) << message;
+    EXPECT_NE(message.find("DELETE /api/renders/{id}"), std::string::npos) << message;
+    EXPECT_NE(message.find("of 4.19 MB"), std::string::npos) << message;
+    EXPECT_EQ(message.find(data.path()), std::string::npos) << message;
+    const Reply render = postJson(c, "/api/renders", {{"scene", "any"}, {"lens", "dgauss.50mm"}, {"width", 64}, {"height", 64}});
+    EXPECT_EQ(render.status, 507) << render.raw;
+
+    const Reply lenses = get(c, "/api/lenses");
+    ASSERT_EQ(lenses.status, 200);
+    EXPECT_NE(lenses.raw.find(first.body["id"].get<std::string>()), std::string::npos);
+    EXPECT_EQ(lenses.raw.find("second.dat"), std::string::npos);
+    EXPECT_EQ(get(c, "/api/lenses/" + first.body["id"].get<std::string>()).status, 200);
+
+    std::filesystem::remove(filler);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    EXPECT_EQ(postRaw(c, "/api/lenses?name=second.dat", kSmallLensTable).status, 201);
 }
