@@ -81,10 +81,12 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     // Three generations of names (docs/camera-conventions.md). The course's (specfile: fstop,
     // focaldistance, filmdiagonal; later filmdistance, aperture_diameter, filmdiag) have camera space
     // in millimetres; pbrt-v3/v4's lensfile puts it in metres (lens mm x 0.001), with focusdistance
-    // in those units measured from the film, a 1 mm opening and simple weighting by default.
+    // in those units measured from the film, a 1 mm opening and simple weighting by default; and its
+    // camera space starts at the film, where the course's starts at the front lens vertex.
     const bool pbrtStyle = p.has("lensfile");
     RealisticParams r;
     r.cameraUnitMm = pbrtStyle ? 1000 : 1;
+    r.originAtFilm = pbrtStyle;
     const std::string lensName = pbrtStyle ? p.getString("lensfile", "") : p.getString("specfile", "");
     if (lensName.empty() && !o.lensFile) p.fail("needs \"string specfile\" (or pbrt-v3's \"lensfile\")");
     // The scene's own lens: the one rendered, or (under an override) the one its filmdistance was set for.

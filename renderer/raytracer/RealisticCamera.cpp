@@ -50,6 +50,7 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     analysis_ = analyzeLens(params.lens, settings);
     filmZExact_ = analysis_.focus.imageZExact;
     filmZThick_ = analysis_.focus.imageZThick;
+    originZ_ = params.originAtFilm ? filmZ() : 0;
 
     const double pixelMm = params.filmDiagonalMm / diag;
     switch (params.mode) {
@@ -179,7 +180,7 @@ TraceResult RealisticCamera::traceShaped(const Ray& ray, double& weight) const {
 
 bool RealisticCamera::finish(const Ray& lensRay, double weight, CameraRay& out) const {
     const double unit = 1.0 / params_.cameraUnitMm;
-    const Vec3f o{float(lensRay.origin.x * unit), float(lensRay.origin.y * unit), float(lensRay.origin.z * unit)};
+    const Vec3f o{float(lensRay.origin.x * unit), float(lensRay.origin.y * unit), float((lensRay.origin.z - originZ_) * unit)};
     const Vec3f dir{float(lensRay.direction.x), float(lensRay.direction.y), float(lensRay.direction.z)};
     out.origin = transformPoint(cameraToWorld_, o);
     out.direction = normalize(transformVector(cameraToWorld_, dir));
@@ -294,7 +295,8 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"exitPupilDiameterMm", formatNumber(a.pupils.exit.diameter)},
             {"exposureTimeS", formatNumber(params_.exposureTime)},
             {"weighting", params_.simpleWeighting ? "simple (centre = 1)" : "radiometric (cos^4 A / d^2 * t)"},
-            {"cameraSpaceUnitMm", formatNumber(params_.cameraUnitMm)}};
+            {"cameraSpaceUnitMm", formatNumber(params_.cameraUnitMm)},
+            {"cameraSpaceOrigin", params_.originAtFilm ? "film" : "front vertex"}};
     if (params_.mode == LensMode::Auto) {
         // The prediction behind the split, per radius: the thick lens's worst film error in pixels
         // and its brightness against the exact lens's; and the share of the film it was allowed.

@@ -35,6 +35,8 @@ struct RealisticParams {
     LensSystem lens;                       // the table as read, in its checked layout
     LensSettings settings;                 // aperture and focus, checked by analyzeLens
     double cameraUnitMm = 1000;            // millimetres per camera-space unit (1: course, 1000: pbrt-v3)
+    // Where camera space's origin lies: the course puts the front lens vertex there, pbrt-v3 the film.
+    bool originAtFilm = false;
     ApertureShape aperture;                // pbrt-v4's shape of the stop's opening
     double filmDiagonalMm = 35;
     LensMode mode = LensMode::Exact;
@@ -105,6 +107,7 @@ private:
     double minFilmRadius_ = 0, maxFilmRadius_ = 0;
     LensAnalysis analysis_;
     double filmZExact_ = 0, filmZThick_ = 0;
+    double originZ_ = 0;             // mm, lens space: camera space's origin (front vertex or film)
     std::vector<ThickLensFilmError> errors_;
     LensModeMap modes_;
     double thickShare_ = 0;          // auto: thickShareOfCrop() of the allowed bands

@@ -77,15 +77,18 @@ TEST(CameraGenerations, CourseMillimetresAndLensfileMetresDrawTheSamePicture) {
     const std::string course = dir.write("course.pbrt", test::courseCamera("dgauss.50mm.dat", courseParams) + kWorld);
     const RenderOutput c = test::render(course, 48, 48, 16);
     EXPECT_EQ(c.metadata.at("cameraSpaceUnitMm"), "1");
-    // pbrt-v3 measures the focus from the film, in metres: the same plane of focus.
+    // pbrt-v3 measures the focus from the film, in metres: the same plane of focus. Its camera space
+    // starts at the film, so the camera moves back by the film's depth to stand where the course's did.
     const double filmZ = metadataNumber(c, "filmZMm");
-    const std::string pbrt = dir.write("pbrt.pbrt",
+    const std::string pbrt = dir.write("pbrt.pbrt", "Translate 0 0 " + num(-filmZ / 1000) + "\n" +
         lensfileCamera("dgauss.50mm.dat", "\"float aperturediameter\" " + num(stop) + " \"float focusdistance\" " +
                                               num((focusFromVertex - filmZ) / 1000) +
                                               " \"bool simpleweighting\" false\nFilm \"image\" \"float diagonal\" 30\n") +
         kWorld);
     const RenderOutput p = test::render(pbrt, 48, 48, 16);
     EXPECT_EQ(p.metadata.at("cameraSpaceUnitMm"), "1000");
+    EXPECT_EQ(p.metadata.at("cameraSpaceOrigin"), "film");
+    EXPECT_EQ(c.metadata.at("cameraSpaceOrigin"), "front vertex");
     EXPECT_NEAR(metadataNumber(p, "filmZMm"), filmZ, 1e-3);
     const Comparison d = compare(c.image, p.image);
     RecordProperty("mean_course", num(d.meanA));
