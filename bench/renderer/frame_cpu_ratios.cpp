@@ -1,8 +1,7 @@
 // The lens's share of a frame, as CPU ratios measured in one run: scenes/pbrt-v3-dgauss50.pbrt
-// (400x400, 16 spp, dgauss.50mm at a 10 mm stop) through the accurate camera, the approximate
-// (thick-lens) camera and a perspective camera of the same field of view, interleaved round by
-// round so that load from other processes falls on all three alike; then the accurate frame on 1
-// and 2 threads. CPU is user + system time of this process (getrusage), setup included.
+// (400x400, 16 spp, dgauss.50mm at a 10 mm stop) through the exact lens, the thick lens and a
+// perspective camera of the same field of view, interleaved round by round so that load from
+// other processes falls on all three alike; then the exact and perspective frames on 1 thread. CPU is user + system time of this process (getrusage), setup included.
 //   frame_cpu_ratios [rounds=3] [size=400] [spp=16]
 #include <sys/resource.h>
 
@@ -80,7 +79,7 @@ int main(int argc, char** argv) {
         {"perspective", settings(perspective, nullptr, 2)},
         {"exact", settings(scene, "exact", 2)},
         {"thick", settings(scene, "thick", 2)},
-        {"accurate, 1 thread", settings(scene, "exact", 1)},
+        {"exact, 1 thread", settings(scene, "exact", 1)},
         {"perspective, 1 thread", settings(perspective, nullptr, 1)}};
     std::map<std::string, std::vector<Cost>> costs;
     for (int r = 0; r < rounds; ++r)
