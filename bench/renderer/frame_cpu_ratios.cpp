@@ -1,10 +1,9 @@
 // The lens's share of a frame, as CPU ratios measured in one run: scenes/pbrt-v3-dgauss50.pbrt
 // (400x400, 16 spp, dgauss.50mm at a 10 mm stop) through the exact lens, the thick lens and a
 // perspective camera of the same field of view, interleaved round by round so that load from
-// other processes falls on all three alike; then the exact and perspective frames on 1 thread. CPU is user + system time of this process (getrusage), setup included.
+// other processes falls on all three alike; then the exact and perspective frames on 1 thread.
+// CPU is user + system time of this process (getrusage), setup included.
 //   frame_cpu_ratios [rounds=3] [size=400] [spp=16]
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,26 +15,20 @@
 #include <vector>
 
 #include "LensAnalysis.h"
+#include "ProcessCpuTime.h"
 #include "Render.h"
 
 namespace {
-
-double cpuSeconds() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    const auto s = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-    return s(u.ru_utime) + s(u.ru_stime);
-}
 
 struct Cost {
     double cpu = 0, wall = 0;
 };
 
 Cost timedRender(const lenslab::RenderSettings& s) {
-    const double cpu0 = cpuSeconds();
+    const double cpu0 = lenslab::bench::processCpuSeconds();
     const auto wall0 = std::chrono::steady_clock::now();
     lenslab::renderScene(s);
-    return {cpuSeconds() - cpu0, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()};
+    return {lenslab::bench::processCpuSeconds() - cpu0, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()};
 }
 
 // The scene with its realistic camera replaced by a perspective one seeing the same square film

@@ -1,24 +1,12 @@
 #include "FrameStudy.h"
 
-#include <sys/resource.h>
-
 #include <cmath>
 #include <stdexcept>
 
 #include "LensAnalysis.h"
+#include "ProcessCpuTime.h"
 
 namespace lenslab::tradeoff {
-
-namespace {
-
-double processCpuSeconds() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    const auto s = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-    return s(u.ru_utime) + s(u.ru_stime);
-}
-
-}  // namespace
 
 TimedFrame renderFrame(const LensCase& lens, const StopCase& stop, const std::string& mode, int width, int height, int spp,
                   int threads) {
@@ -34,10 +22,10 @@ TimedFrame renderFrame(const LensCase& lens, const StopCase& stop, const std::st
     s.height = height;
     s.spp = spp;
     s.threads = threads;
-    const double cpu0 = processCpuSeconds();
+    const double cpu0 = bench::processCpuSeconds();
     RenderOutput out = renderScene(s);
     TimedFrame f;
-    f.cpuSeconds = processCpuSeconds() - cpu0;
+    f.cpuSeconds = bench::processCpuSeconds() - cpu0;
     f.image = std::move(out.image);
     f.split = out.metadata.at("lensModelByFilmRadius");
     return f;
