@@ -52,7 +52,7 @@ mkdir -p "$out"
     -d half -o "$here/scenes/sky.exr"
 
 # The first integer given for parameter $2 in scene file $1 (the Film's resolutions).
-intParam() { grep -o "\"integer $2\" *\[\? *[0-9]\+" "$1" | grep -o '[0-9]\+$' | head -1; }
+intParam() { grep -o "\"integer $2\" *\[\? *[0-9]\+" "$1" | grep -o '[0-9]\+$' | head -1 || true; }
 
 # Runs a command with its output in log file $1; prints its CPU seconds (user + system) and wall
 # seconds. A failed render shows as a missing image, reported below.
@@ -80,6 +80,7 @@ echo "|---|---|---|---|---|---|"
 for scene in "${scenes[@]}"; do
     name=$(basename "$scene" .pbrt)
     xres=$(intParam "$scene" xresolution); yres=$(intParam "$scene" yresolution)
+    xres=${xres:-640} yres=${yres:-480}  # pbrt-v3's defaults
     height=$(( (yres * width + xres / 2) / xres ))
     copy=$(dirname "$scene")/.peer-$$-$name.pbrt
     sed -e "s/\"integer xresolution\" *\[\? *[0-9]\+ *\]\?/\"integer xresolution\" $width/" \

@@ -144,6 +144,7 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     r.exposureTime = exposureTime(p, scene.warnings);
     checkClipping(p, scene.warnings);
     r.simpleWeighting = p.getBool("simpleweighting", pbrtStyle);
+    r.pbrtExposure = pbrtStyle;
     r.aperture = apertureShape(scene, p);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
     return atCamera(p, [&]() -> std::unique_ptr<Camera> {

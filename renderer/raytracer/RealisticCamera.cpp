@@ -7,6 +7,7 @@
 #include "ExactTrace.h"
 #include "NumberText.h"
 #include "OpticsError.h"
+#include "PbrtPupilBox.h"
 #include "RayBatch.h"
 #include "Sampling.h"
 
@@ -90,6 +91,12 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         bounds_ = computeExitPupilBounds(analysis_.lens, filmZExact_, step, first, last, measure);
         const double centreWeight = params.simpleWeighting ? exactCentreWeight() : 0;
         weightScaleExact_ = params.simpleWeighting ? (centreWeight > 0 ? 1.0 / centreWeight : 0.0) : params.exposureTime;
+    }
+    if (params.simpleWeighting && params.pbrtExposure) {
+        // pbrt-v3's exposure: film-to-rear-vertex distance squared over its first pupil box's area.
+        const double boxArea = pbrtFirstPupilBoxArea(analysis_.lens, filmZ(), params.filmDiagonalMm);
+        const double d = analysis_.lens.rearZ() - filmZ();
+        weightScaleExact_ = weightScaleThick_ = boxArea > 0 ? d * d / boxArea : 0.0;
     }
 }
 
@@ -294,7 +301,9 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"exitPupilZMm", formatNumber(a.pupils.exit.z)},
             {"exitPupilDiameterMm", formatNumber(a.pupils.exit.diameter)},
             {"exposureTimeS", formatNumber(params_.exposureTime)},
-            {"weighting", params_.simpleWeighting ? "simple (centre = 1)" : "radiometric (cos^4 A / d^2 * t)"},
+            {"weighting", !params_.simpleWeighting ? "radiometric (cos^4 A / d^2 * t)"
+                          : params_.pbrtExposure ? "simple, pbrt-v3's exposure (d^2 / first pupil box)"
+                                                 : "simple (centre = 1)"},
             {"cameraSpaceUnitMm", formatNumber(params_.cameraUnitMm)},
             {"cameraSpaceOrigin", params_.originAtFilm ? "film" : "front vertex"}};
     if (params_.mode == LensMode::Auto) {

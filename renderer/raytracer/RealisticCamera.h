@@ -46,6 +46,8 @@ struct RealisticParams {
     std::array<double, 4> crop = {0, 1, 0, 1};
     double exposureTime = 1;               // seconds the shutter is open (> 0)
     bool simpleWeighting = false;          // pbrt-v3: weights normalised to 1 at the image centre
+    // With simpleWeighting: pbrt-v3's exposure (optics/PbrtPupilBox.h) instead of the centre at 1.
+    bool pbrtExposure = false;
 };
 
 // Parameters for a lens file at an f-number (nullopt: the widest) focused at focusDistanceMm from the

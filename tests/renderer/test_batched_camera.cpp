@@ -18,8 +18,9 @@ void expectBatchEqualsScalar(LensMode mode, const std::string& lens, std::option
     p.autoThresholdPixels = autoThresholdPixels;
     const int width = 96, height = 64;
     const RealisticCamera camera(p, Transform{}, width, height, 0.5);
-    if (mode == LensMode::Auto)
+    if (mode == LensMode::Auto) {
         EXPECT_TRUE(camera.lensModes().usesThick() && camera.lensModes().usesExact()) << camera.lensModes().describe();
+    }
     // A whole frame's samples, pixel by pixel, as the renderer draws them.
     std::vector<CameraSample> samples;
     for (int py = 0; py < height; py += 3)

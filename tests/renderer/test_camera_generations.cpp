@@ -12,6 +12,7 @@
 #include "ApertureShape.h"
 #include "CameraFactory.h"
 #include "LensAnalysis.h"
+#include "PbrtPupilBox.h"
 #include "RealisticCamera.h"
 #include "TestScenes.h"
 
@@ -103,6 +104,31 @@ TEST(CameraGenerations, CourseMillimetresAndLensfileMetresDrawTheSamePicture) {
     const std::string unscaled = dir.write("unscaled.pbrt",
         "Camera \"realistic\" \"string specfile\" \"" + test::lensPath("dgauss.50mm.dat") + "\" " + courseParams + kWorld);
     EXPECT_GT(compare(c.image, test::render(unscaled, 48, 48, 16).image).meanAbsDifference, 0.1 * d.meanA);
+}
+
+// pbrt-v3's simple weighting scales the radiometric weights by d^2 / A0 (film to rear vertex, its
+// first exit-pupil box): the two renders of one lensfile scene, same samples, differ by exactly that
+// factor everywhere, in both lens models; the course's names keep their centre at 1 instead.
+TEST(CameraGenerations, LensfileSimpleWeightingIsPbrtV3sExposure) {
+    test::TempDir dir;
+    for (const std::string mode : {"exact", "thick"}) {
+        SCOPED_TRACE(mode);
+        const auto scene = [&](const char* simple) {
+            return dir.write(std::string(simple) + mode + ".pbrt",
+                lensfileCamera("dgauss.50mm.dat", "\"float aperturediameter\" 10 \"float focusdistance\" 3 "
+                                                  "\"string mode\" \"" + mode + "\" \"bool simpleweighting\" " + simple) +
+                "\nFilm \"image\" \"float diagonal\" 35\n" + kWorld);
+        };
+        const RenderOutput simple = test::render(scene("true"), 24, 24, 4), radiometric = test::render(scene("false"), 24, 24, 4);
+        const double filmZ = metadataNumber(simple, "filmZMm");
+        const LensSystem lens = withStopDiameter(loadLensSystem(test::lensPath("dgauss.50mm.dat")), 10);
+        const double d = lens.rearZ() - filmZ, expected = d * d / pbrtFirstPupilBoxArea(lens, filmZ, 35);
+        EXPECT_NEAR(expected, 11.7, 0.3);  // (about 37 mm to the film)^2 / its ~117 mm^2 box
+        const Comparison c = compare(simple.image, radiometric.image);
+        EXPECT_GT(c.meanB, 0.001);
+        EXPECT_NEAR(c.meanA / c.meanB, expected, 1e-4 * expected);
+        EXPECT_NE(simple.metadata.at("weighting").find("pbrt-v3"), std::string::npos);
+    }
 }
 
 // The film at the distance the focus solve chose for D is the camera focused at D, ray for ray, in
