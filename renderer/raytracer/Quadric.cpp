@@ -110,7 +110,7 @@ void Quadric::groupNormalPartials(Vec3d p, Vec3d dpdu, Vec3d dpdv, Vec3f& dndu, 
     const double E = dot(dpdu, dpdu), F = dot(dpdu, dpdv), G = dot(dpdv, dpdv);
     const Vec3d n = cross(dpdu, dpdv);
     const double det = dot(n, n);  // E G - F^2
-    if (!(det > 0) || std::min(E, G) < 1e-16 * std::max(E, G)) {
+    if (!(det > 0) || std::min(E, G) < 1e-20 * std::max(E, G)) {
         dndu = dndv = {};
         return;
     }
