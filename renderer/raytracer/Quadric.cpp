@@ -104,8 +104,8 @@ Vec3f Quadric::groupNormal(Vec3d pObject, double& areaScale) const {
 // The unit normal's partials in the group's space, oriented as groupNormal. In object space the
 // Weingarten equations, as pbrt-v3: with the first fundamental form E, F, G and the second e, f, g,
 // dn/du = ((f F - e G) dp/du + (e F - f E) dp/dv) / (E G - F^2), and dn/dv likewise. Zero where one
-// partial all but vanishes (hits within rounding of the cone's apex, the paraboloid's vertex or a
-// sphere's pole off refine's nudge): e and f are rounding noise over a vanishing E there.
+// partial all but vanishes (hits within rounding of the cone's apex or the paraboloid's vertex):
+// e and f are rounding noise over a vanishing E there.
 void Quadric::groupNormalPartials(Vec3d p, Vec3d dpdu, Vec3d dpdv, Vec3f& dndu, Vec3f& dndv) const {
     const double E = dot(dpdu, dpdu), F = dot(dpdu, dpdv), G = dot(dpdv, dpdv);
     const Vec3d n = cross(dpdu, dpdv);

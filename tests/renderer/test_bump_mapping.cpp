@@ -43,7 +43,9 @@ SurfaceHit hitAlong(const std::string& world, Vec3f from, Vec3f direction) {
     return it.hit;
 }
 
-Vec3f shadingNormalAt(const std::string& world, Vec3f target) { return hitAlong(world, target + Vec3f{0, 0, 1}, {0, 0, -1}).ns; }
+Vec3f shadingNormalAt(const std::string& world, Vec3f target) {
+    return hitAlong(world, target + Vec3f{0, 0, 1}, {0, 0, -1}).ns;
+}
 
 TEST(BumpMapping, LinearRampTiltsTheShadingNormal) {
     const Vec3f n = shadingNormalAt(plane(matte("ramp")), {0.2f, 0.3f, 0});
@@ -73,7 +75,8 @@ TEST(BumpMapping, InstancedPlaneTiltsByItsWorldSlope) {
 
 // (On a mesh whose vertex normals vary, pbrt-v3's d dn/du may tilt even a constant displacement.)
 TEST(BumpMapping, ConstantDisplacementChangesNothing) {
-    for (const std::string& shape : {plane(matte("")), plane(matte(""), "\"normal N\" [0 0.1 1  0 0.1 1  0 0.1 1  0 0.1 1]"),
+    for (const std::string& shape : {plane(matte("")),
+                                     plane(matte(""), "\"normal N\" [0 0.1 1  0 0.1 1  0 0.1 1  0 0.1 1]"),
                                     matte("") + "\nTranslate 0 0 -1\nShape \"sphere\" \"float phimax\" 300"}) {
         const std::string bumped = std::string(shape).replace(shape.find(']') + 1, 0, " \"texture bumpmap\" \"flat\"");
         for (Vec3f at : {Vec3f{0.2f, 0.3f, 0}, Vec3f{-0.4f, 0.1f, 0}}) {

@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <tuple>
+#include <utility>
 
 #include "ShapeTestScenes.h"
 
@@ -43,7 +46,9 @@ void expectPartialsMatchUv(const std::string& world, bool reversed = false) {
             const SurfaceHit alongV = hitFromAbove(g, h.p + kEps * h.dpdv, h.ng).hit;
             EXPECT_NEAR(alongV.u - h.u, 0, 0.03 * kEps) << where;
             EXPECT_NEAR(alongV.v - h.v, kEps, 0.03 * kEps) << where;
-            for (const auto& [dp, dn, name] : {std::tuple{h.dpdu, h.dndu, "dn/du"}, std::tuple{h.dpdv, h.dndv, "dn/dv"}}) {
+            const std::tuple<Vec3f, Vec3f, const char*> steps[] = {{h.dpdu, h.dndu, "dn/du"},
+                                                                   {h.dpdv, h.dndv, "dn/dv"}};
+            for (const auto& [dp, dn, name] : steps) {
                 const Vec3f ahead = hitFromAbove(g, h.p + kEps * dp, h.ng).hit.ng;
                 const Vec3f behind = hitFromAbove(g, h.p - kEps * dp, h.ng).hit.ng;
                 const Vec3f difference = (ahead - behind) / (2 * kEps);
@@ -74,9 +79,11 @@ TEST(SurfacePartials, QuadricsUnderTransforms) {
     expectPartialsMatchUv("Scale 0.7 1.3 1\nShape \"disk\" \"float radius\" 2 \"float innerradius\" 0.5");
     expectPartialsMatchUv("Rotate 40 0 1 1\nScale 2 1 0.6\nShape \"cylinder\" \"float phimax\" 300");
     expectPartialsMatchUv("Scale 1.4 0.8 1.1\nShape \"cone\" \"float radius\" 1.5 \"float height\" 2");
-    expectPartialsMatchUv("Rotate 20 1 0 0\nScale 1 1.5 0.7\nShape \"paraboloid\" \"float radius\" 1 \"float zmin\" 0.2 \"float zmax\" 2");
+    expectPartialsMatchUv("Rotate 20 1 0 0\nScale 1 1.5 0.7\n"
+                          "Shape \"paraboloid\" \"float radius\" 1 \"float zmin\" 0.2 \"float zmax\" 2");
     expectPartialsMatchUv("Scale 0.8 1.2 1.5\nShape \"hyperboloid\" \"point p1\" [1 -1 -1] \"point p2\" [1 1 1]");
-    expectPartialsMatchUv("Scale 1 2 0.5\nReverseOrientation\nShape \"sphere\" \"float zmin\" -0.5 \"float zmax\" 0.8", true);
+    expectPartialsMatchUv("Scale 1 2 0.5\nReverseOrientation\nShape \"sphere\" \"float zmin\" -0.5 \"float zmax\" 0.8",
+                          true);
 }
 
 // A sphere of radius r has n = (p - centre) / r, so dn/du = dp/du / r and dn/dv = dp/dv / r: here a
@@ -106,7 +113,8 @@ TEST(SurfacePartials, SphereNormalTurnsAsDpOverRadius) {
 // vertex: the partials stay finite there, as dp/du and dp/dv do; the unit sphere's still dp/du, and
 // the cone's normal, which never turns along its rulings, gives no rounding noise as dn/dv.
 TEST(SurfacePartials, NormalPartialsStayFiniteAtPolesApexAndVertex) {
-    for (const std::string world : {"Translate 0 0 5\nShape \"sphere\"", "Translate 0 0 5\nRotate 180 1 0 0\nShape \"sphere\"",
+    for (const std::string world : {"Translate 0 0 5\nShape \"sphere\"",
+                                    "Translate 0 0 5\nRotate 180 1 0 0\nShape \"sphere\"",
                                     "Translate 0 0 3\nRotate 180 1 0 0\nShape \"cone\" \"float height\" 1",
                                     "Translate 0 0 3\nShape \"paraboloid\""}) {
         test::TempDir dir;
