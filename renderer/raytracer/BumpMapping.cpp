@@ -1,9 +1,8 @@
 // pbrt-v3's bump mapping: the surface displaced along its shading normal by a float texture d, whose
-// partials dp'/du = dp/du + (dd/du) n and dp'/dv = dp/dv + (dd/dv) n give the new shading normal.
-// dd/du and dd/dv are forward differences of the texture at the point and (u, v) shifted by pbrt-v3's
-// step for rays without differentials (lenslab's rays have none). pbrt-v3 also adds d dn/du, the
-// turning of the normal; lenslab's shapes give no dn/du, so that term (d over the radius of
-// curvature, small for a bump) is left out: bumps are exact on flat surfaces.
+// partials dp'/du = dp/du + (dd/du) n + d dn/du and dp'/dv = dp/dv + (dd/dv) n + d dn/dv give the new
+// shading normal (the last terms: the normal turns under the displaced point, by d over the radius
+// of curvature). dd/du and dd/dv are forward differences of the texture at the point and (u, v)
+// shifted by pbrt-v3's step for rays without differentials (lenslab's rays have none).
 #include "Material.h"
 
 namespace lenslab {
@@ -28,8 +27,8 @@ void Material::applyBump(SurfaceHit& h) const {
     const float alongV = displacement(*bump_, shifted);
     const float here = displacement(*bump_, h);
 
-    const Vec3f dpdu = h.dpdu + ((alongU - here) / kStep) * h.ns;
-    const Vec3f dpdv = h.dpdv + ((alongV - here) / kStep) * h.ns;
+    const Vec3f dpdu = h.dpdu + ((alongU - here) / kStep) * h.ns + here * h.dndu;
+    const Vec3f dpdv = h.dpdv + ((alongV - here) / kStep) * h.ns + here * h.dndv;
     const Vec3f n = cross(dpdu, dpdv);
     const float len = length(n);
     if (!(len > 0) || !allFinite(n)) return;  // no partials at this hit: nothing to tilt

@@ -34,6 +34,13 @@ protected:
         dpdu = azimuthalPartial(p);
         dpdv = {-r_ * std::cos(phi), -r_ * std::sin(phi), h_};
     }
+    // pbrt-v3's d2p/du dv = phimax (y, -x, 0) / (1 - v), again by the azimuth.
+    void secondPartials(Vec3d p, Vec3d& duu, Vec3d& duv, Vec3d& dvv) const override {
+        const double phi = azimuth(p.x, p.y);
+        duu = azimuthalSecondPartial(p);
+        duv = (phiMax_ * r_) * Vec3d{std::sin(phi), -std::cos(phi), 0};
+        dvv = {};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, 0};
         hi = {r_, r_, h_};

@@ -94,6 +94,7 @@ public:
         // runs along the normal (as pbrt-v3's curves).
         h.dpdu = float(segs_.size()) * tangent;
         h.dpdv = (2 * radiusAt(prim, hitU)) * cross(n, T);
+        h.dndu = h.dndv = {};  // pbrt-v3's curves give the normal no turning
     }
 
     // pbrt-v3 cannot sample curves either: they do not emit (the parser warns).

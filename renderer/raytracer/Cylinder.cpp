@@ -35,6 +35,10 @@ protected:
         dpdu = azimuthalPartial(p);
         dpdv = {0, 0, zMax_ - zMin_};
     }
+    void secondPartials(Vec3d p, Vec3d& duu, Vec3d& duv, Vec3d& dvv) const override {
+        duu = azimuthalSecondPartial(p);
+        duv = dvv = {};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, zMin_};
         hi = {r_, r_, zMax_};

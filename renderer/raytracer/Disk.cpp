@@ -39,6 +39,8 @@ protected:
         dpdu = azimuthalPartial(p);
         dpdv = (ri_ - r_) * Vec3d{std::cos(phi), std::sin(phi), 0};
     }
+    // The plane's normal never turns; pbrt-v3 gives the disk no dn/du and dn/dv either.
+    void secondPartials(Vec3d, Vec3d& duu, Vec3d& duv, Vec3d& dvv) const override { duu = duv = dvv = {}; }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, h_};
         hi = {r_, r_, h_};

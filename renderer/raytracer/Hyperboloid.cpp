@@ -57,6 +57,14 @@ protected:
         dpdu = azimuthalPartial(p);
         dpdv = {d.x * std::cos(phi) - d.y * std::sin(phi), d.x * std::sin(phi) + d.y * std::cos(phi), d.z};
     }
+    // The rulings are straight (d2p/dv2 = 0); d2p/du dv turns dp/dv about the axis.
+    void secondPartials(Vec3d p, Vec3d& duu, Vec3d& duv, Vec3d& dvv) const override {
+        Vec3d dpdu, dpdv;
+        partials(p, dpdu, dpdv);
+        duu = azimuthalSecondPartial(p);
+        duv = phiMax_ * Vec3d{-dpdv.y, dpdv.x, 0};
+        dvv = {};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-rMax_, -rMax_, zMin_};
         hi = {rMax_, rMax_, zMax_};

@@ -21,6 +21,12 @@ struct SurfaceHit {
     // surface's partials: pbrt-v3 issues #188 and #261, kept there and so here). Zero when the shape
     // gives none.
     Vec3f dpdu, dpdv;
+    // pbrt-v3's partials of the normal along u and v, which bump mapping needs for the displacement
+    // times the normal's turning: on quadrics those of ns itself (Weingarten equations; through a
+    // scaling transform and ReverseOrientation they stay the partials of the oriented unit normal,
+    // where pbrt-v3's are not), on meshes with shading normals those of the interpolated vertex
+    // normals; zero on flat shapes and curves, as in pbrt-v3.
+    Vec3f dndu, dndv;
     float u = 0, v = 0;
 };
 

@@ -36,6 +36,12 @@ protected:
         dpdu = azimuthalPartial(p);
         dpdv = (zMax_ - zMin_) * Vec3d{p.x / (2 * z), p.y / (2 * z), 1};
     }
+    void secondPartials(Vec3d p, Vec3d& duu, Vec3d& duv, Vec3d& dvv) const override {
+        const double z = std::max(p.z, 1e-9 * zMax_), dz = zMax_ - zMin_;
+        duu = azimuthalSecondPartial(p);
+        duv = (dz * phiMax_ / (2 * z)) * Vec3d{-p.y, p.x, 0};
+        dvv = (-dz * dz / (4 * z * z)) * Vec3d{p.x, p.y, 0};
+    }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, zMin_};
         hi = {r_, r_, zMax_};

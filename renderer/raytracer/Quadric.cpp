@@ -23,6 +23,8 @@ Vec3d apply(const Matrix44& m, Vec3d p, double w) {
 
 Vec3f toFloat(Vec3d v) { return {float(v.x), float(v.y), float(v.z)}; }
 
+Vec3d cross(Vec3d a, Vec3d b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+
 double determinant3(const Matrix44& a) {
     const auto& m = a.m;
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
@@ -97,6 +99,29 @@ Vec3f Quadric::groupNormal(Vec3d pObject, double& areaScale) const {
     len = std::sqrt(dot(g, g));
     areaScale = std::fabs(determinant3(objectToGroup_.forward)) * len;
     return toFloat((flip_ / len) * g);
+}
+
+// The unit normal's partials in the group's space, oriented as groupNormal. In object space the
+// Weingarten equations, as pbrt-v3: with the first fundamental form E, F, G and the second e, f, g,
+// dn/du = ((f F - e G) dp/du + (e F - f E) dp/dv) / (E G - F^2), and dn/dv likewise. Zero where one
+// partial all but vanishes (hits within rounding of the cone's apex or the paraboloid's vertex):
+// e and f are rounding noise over a vanishing E there.
+void Quadric::groupNormalPartials(Vec3d p, Vec3d dpdu, Vec3d dpdv, Vec3f& dndu, Vec3f& dndv) const {
+    const double E = dot(dpdu, dpdu), F = dot(dpdu, dpdv), G = dot(dpdv, dpdv);
+    const Vec3d n = cross(dpdu, dpdv);
+    const double det = dot(n, n);  // E G - F^2
+    if (!(det > 0) || std::min(E, G) < 1e-20 * std::max(E, G)) {
+        dndu = dndv = {};
+        return;
+    }
+    Vec3d duu, duv, dvv;
+    secondPartials(p, duu, duv, dvv);
+    const Vec3d unit = (1 / std::sqrt(det)) * n;
+    const double e = dot(unit, duu), f = dot(unit, duv), g = dot(unit, dvv);
+    const Vec3d nu = ((f * F - e * G) / det) * dpdu + ((e * F - f * E) / det) * dpdv;
+    const Vec3d nv = ((g * F - f * G) / det) * dpdu + ((f * F - g * E) / det) * dpdv;
+    dndu = flip_ * transformNormalPartial(objectToGroup_, toFloat(unit), toFloat(nu));
+    dndv = flip_ * transformNormalPartial(objectToGroup_, toFloat(unit), toFloat(nv));
 }
 
 void Quadric::measure() {
@@ -191,6 +216,7 @@ void Quadric::surface(Vec3f o, Vec3f d, float t, unsigned, float, float, Surface
     partials(p, dpdu, dpdv);
     h.dpdu = toFloat(apply(objectToGroup_.forward, dpdu, 0));
     h.dpdv = toFloat(apply(objectToGroup_.forward, dpdv, 0));
+    groupNormalPartials(p, dpdu, dpdv, h.dndu, h.dndv);
 }
 
 ShapeSample Quadric::samplePrimitive(std::size_t, float u1, float u2) const {

@@ -50,6 +50,8 @@ protected:
     virtual Vec3d normal(Vec3d p) const = 0;           // along dp/du x dp/dv, any length
     // pbrt-v3's dp/du and dp/dv at a point of the surface, of its own (u, v).
     virtual void partials(Vec3d p, Vec3d& dpdu, Vec3d& dpdv) const = 0;
+    // pbrt-v3's second partials d2p/du2, d2p/du dv and d2p/dv2 there, for the normal's turning.
+    virtual void secondPartials(Vec3d p, Vec3d& duu, Vec3d& duv, Vec3d& dvv) const = 0;
     virtual void bounds(Vec3d& lo, Vec3d& hi) const = 0;
     // A point drawn over the object-space surface, and its density per unit object-space area
     // (uniform unless a quadric says otherwise).
@@ -62,6 +64,8 @@ protected:
     Vec3f toGroup(Vec3d p) const;
     // dp/du of the azimuthal u = phi / phimax that every quadric has.
     Vec3d azimuthalPartial(Vec3d p) const { return {-phiMax_ * p.y, phiMax_ * p.x, 0}; }
+    // Its d2p/du2, the same for every quadric of revolution.
+    Vec3d azimuthalSecondPartial(Vec3d p) const { return {-phiMax_ * phiMax_ * p.x, -phiMax_ * phiMax_ * p.y, 0}; }
 
     // The nearest root of a t^2 + b t + c = 0 in (tMin, tMax) whose point passes accepts().
     bool nearestRoot(double a, double b, double c, Vec3d o, Vec3d d, double tMin, double tMax, double& t) const;
@@ -72,6 +76,7 @@ private:
     Vec3d toObject(Vec3f p) const;
     Vec3d toObjectVector(Vec3f v) const;
     Vec3f groupNormal(Vec3d pObject, double& areaScale) const;
+    void groupNormalPartials(Vec3d pObject, Vec3d dpdu, Vec3d dpdv, Vec3f& dndu, Vec3f& dndv) const;
 
     Transform objectToGroup_;
     float flip_;               // -1: ReverseOrientation xor a handedness swap

@@ -147,6 +147,8 @@ bool SceneGeometry::intersect(Vec3f o, Vec3f d, float tMax, Intersection& out) c
         e.shape->surface(transformPoint(toObject, o), transformVector(toObject, d), out.t, prim, rh.hit.u, rh.hit.v, h);
         h.p = transformPoint(inst.instanceToWorld, h.p);
         h.ng = normalize(transformNormal(inst.instanceToWorld, h.ng));
+        h.dndu = transformNormalPartial(inst.instanceToWorld, h.ns, h.dndu);
+        h.dndv = transformNormalPartial(inst.instanceToWorld, h.ns, h.dndv);
         h.ns = normalize(transformNormal(inst.instanceToWorld, h.ns));
         h.dpdu = transformVector(inst.instanceToWorld, h.dpdu);
         h.dpdv = transformVector(inst.instanceToWorld, h.dpdv);

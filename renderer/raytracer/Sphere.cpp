@@ -32,7 +32,9 @@ protected:
     }
     Vec3d refine(Vec3d p) const override {
         p = (r_ / std::sqrt(dot(p, p))) * p;
-        if (p.x == 0 && p.y == 0) p.x = 1e-5 * r_;  // phi is defined everywhere
+        // phi and the partials are defined everywhere: points within rounding of the axis (a rotated
+        // sphere's pole has x, y ~ 1e-32) are nudged off it.
+        if (std::hypot(p.x, p.y) < 1e-9 * r_) p.x = 1e-5 * r_;
         return p;
     }
     bool accepts(Vec3d p) const override {
@@ -41,10 +43,16 @@ protected:
     }
     Vec3d normal(Vec3d p) const override { return p; }
     void partials(Vec3d p, Vec3d& dpdu, Vec3d& dpdv) const override {
-        const double rho = std::hypot(p.x, p.y), cosTheta = std::clamp(p.z / r_, -1.0, 1.0);
-        const double sinTheta = std::sqrt(1 - cosTheta * cosTheta), dTheta = thetaZMax_ - thetaZMin_;
+        // r sin(theta) taken as rho, so that dp/dv stays tangent at refine's nudged poles too.
+        const double rho = std::hypot(p.x, p.y), dTheta = thetaZMax_ - thetaZMin_;
         dpdu = azimuthalPartial(p);
-        dpdv = dTheta * Vec3d{p.z * p.x / rho, p.z * p.y / rho, -r_ * sinTheta};
+        dpdv = dTheta * Vec3d{p.z * p.x / rho, p.z * p.y / rho, -rho};
+    }
+    void secondPartials(Vec3d p, Vec3d& duu, Vec3d& duv, Vec3d& dvv) const override {
+        const double rho = std::hypot(p.x, p.y), dTheta = thetaZMax_ - thetaZMin_;
+        duu = azimuthalSecondPartial(p);
+        duv = (dTheta * phiMax_ * p.z / rho) * Vec3d{-p.y, p.x, 0};
+        dvv = (-dTheta * dTheta) * p;
     }
     void bounds(Vec3d& lo, Vec3d& hi) const override {
         lo = {-r_, -r_, zMin_};

@@ -151,6 +151,14 @@ Vec3f transformNormal(const Transform& t, Vec3f n) {
             float(m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z)};
 }
 
+Vec3f transformNormalPartial(const Transform& t, Vec3f n, Vec3f dn) {
+    const Vec3f g = transformNormal(t, n), dg = transformNormal(t, dn);
+    const float len = length(g);
+    if (!(len > 0)) return {};
+    const Vec3f unit = g / len;
+    return (dg - dot(unit, dg) * unit) / len;
+}
+
 bool swapsHandedness(const Transform& t) {
     const auto& m = t.forward.m;
     const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -

@@ -30,6 +30,9 @@ Transform lookAt(const double eye[3], const double look[3], const double up[3]);
 Vec3f transformPoint(const Transform& t, Vec3f p);
 Vec3f transformVector(const Transform& t, Vec3f v);
 Vec3f transformNormal(const Transform& t, Vec3f n);  // by the inverse transpose
+// The partial dn of the unit normal n carried through t: that of normalize(transformNormal(t, n)).
+// pbrt-v3 stops at transformNormal(t, dn), which is the same only under rotations and translations.
+Vec3f transformNormalPartial(const Transform& t, Vec3f n, Vec3f dn);
 bool swapsHandedness(const Transform& t);
 
 }  // namespace lenslab

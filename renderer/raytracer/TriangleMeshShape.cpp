@@ -40,10 +40,15 @@ public:
         h.p = b0 * m_.p[i[0]] + b1 * m_.p[i[1]] + b2 * m_.p[i[2]];
         h.ng = orientedNormal(prim);
         h.ns = h.ng;
+        h.dndu = h.dndv = {};
         if (!m_.n.empty()) {
             const Vec3f ns = b0 * m_.n[i[0]] + b1 * m_.n[i[1]] + b2 * m_.n[i[2]];
             const float len = length(ns);
-            if (len > 0) h.ns = dot(ns, h.ng) >= 0 ? ns / len : -ns / len;  // SurfaceHit: ns on ng's side
+            const float side = dot(ns, h.ng) >= 0 ? 1.0f : -1.0f;  // SurfaceHit: ns on ng's side
+            if (len > 0) h.ns = (side / len) * ns;
+            normalPartials(prim, h.dndu, h.dndv);
+            h.dndu = side * h.dndu;
+            h.dndv = side * h.dndv;
         }
         if (!m_.uv.empty()) {
             h.u = b0 * m_.uv[2 * i[0]] + b1 * m_.uv[2 * i[1]] + b2 * m_.uv[2 * i[2]];
@@ -97,23 +102,51 @@ private:
     // those (u, v) span no area.
     void partials(std::size_t prim, Vec3f& dpdu, Vec3f& dpdv) const {
         const std::uint32_t* i = &m_.indices[3 * prim];
+        const CornerUv c = cornerUv(prim);
+        const Vec3f dp02 = m_.p[i[0]] - m_.p[i[2]], dp12 = m_.p[i[1]] - m_.p[i[2]];
+        if (!c.degenerate()) {
+            c.solve(dp02, dp12, dpdu, dpdv);
+            if (length(cross(dpdu, dpdv)) > 0) return;
+        }
+        const Vec3f n = cross(m_.p[i[2]] - m_.p[i[0]], m_.p[i[1]] - m_.p[i[0]]);
+        if (length(n) > 0) perpendiculars(normalize(n), dpdu, dpdv);
+    }
+
+    // pbrt-v3's dn/du and dn/dv of the interpolated vertex normals, the same way from the corners'
+    // (u, v); when those span no area, pbrt-v3's frame around (n2 - n0) x (n1 - n0), taken as it
+    // comes (not unit), or zero when the normals do not vary.
+    void normalPartials(std::size_t prim, Vec3f& dndu, Vec3f& dndv) const {
+        const std::uint32_t* i = &m_.indices[3 * prim];
+        const CornerUv c = cornerUv(prim);
+        if (!c.degenerate()) {
+            c.solve(m_.n[i[0]] - m_.n[i[2]], m_.n[i[1]] - m_.n[i[2]], dndu, dndv);
+            return;
+        }
+        const Vec3f dn = cross(m_.n[i[2]] - m_.n[i[0]], m_.n[i[1]] - m_.n[i[0]]);
+        if (dot(dn, dn) > 0) perpendiculars(dn, dndu, dndv);
+        else dndu = dndv = {};
+    }
+
+    // The (u, v) differences of corners 0 and 1 from corner 2, which turn differences of a
+    // quantity over the corners into its partials along u and v.
+    struct CornerUv {
+        float du02, dv02, du12, dv12;
+        float det() const { return du02 * dv12 - dv02 * du12; }
+        bool degenerate() const { return std::fabs(det()) < 1e-8f; }
+        void solve(Vec3f d02, Vec3f d12, Vec3f& ddu, Vec3f& ddv) const {
+            ddu = (dv12 * d02 - dv02 * d12) / det();
+            ddv = (du02 * d12 - du12 * d02) / det();
+        }
+    };
+    CornerUv cornerUv(std::size_t prim) const {
+        const std::uint32_t* i = &m_.indices[3 * prim];
         float uv[3][2] = {{0, 0}, {1, 0}, {1, 1}};
         if (!m_.uv.empty())
             for (int k = 0; k < 3; ++k) {
                 uv[k][0] = m_.uv[2 * i[k]];
                 uv[k][1] = m_.uv[2 * i[k] + 1];
             }
-        const float du02 = uv[0][0] - uv[2][0], dv02 = uv[0][1] - uv[2][1];
-        const float du12 = uv[1][0] - uv[2][0], dv12 = uv[1][1] - uv[2][1];
-        const Vec3f dp02 = m_.p[i[0]] - m_.p[i[2]], dp12 = m_.p[i[1]] - m_.p[i[2]];
-        const float det = du02 * dv12 - dv02 * du12;
-        if (std::fabs(det) >= 1e-8f) {
-            dpdu = (dv12 * dp02 - dv02 * dp12) / det;
-            dpdv = (du02 * dp12 - du12 * dp02) / det;
-            if (length(cross(dpdu, dpdv)) > 0) return;
-        }
-        const Vec3f n = cross(m_.p[i[2]] - m_.p[i[0]], m_.p[i[1]] - m_.p[i[0]]);
-        if (length(n) > 0) perpendiculars(normalize(n), dpdu, dpdv);
+        return {uv[0][0] - uv[2][0], uv[0][1] - uv[2][1], uv[1][0] - uv[2][0], uv[1][1] - uv[2][1]};
     }
 
     // pbrt-v3's shading tangents on a mesh with normals: unit, around the shading normal, from dp/du
@@ -130,7 +163,7 @@ private:
         }
     }
 
-    // pbrt-v3's CoordinateSystem: two unit vectors completing the unit n to a right-handed frame.
+    // pbrt-v3's CoordinateSystem: two vectors completing n to a right-handed frame (unit when n is).
     static void perpendiculars(Vec3f n, Vec3f& a, Vec3f& b) {
         a = std::fabs(n.x) > std::fabs(n.y) ? Vec3f{-n.z, 0, n.x} / std::sqrt(n.x * n.x + n.z * n.z)
                                             : Vec3f{0, n.z, -n.y} / std::sqrt(n.y * n.y + n.z * n.z);

@@ -1,6 +1,8 @@
 // pbrt-v3's "bumpmap": a plane displaced by a linear ramp d = a u tilts its shading normal by
 // atan(a / |dp/du|) against the ramp, and a diffuse plane under a distant light then shows
-// cos(light angle + tilt); a constant displacement changes nothing.
+// cos(light angle + tilt); a constant displacement changes no normal. On curved surfaces the
+// displacement times the normal's turning, d dn/du, joins dp/du: a sphere displaced by d keeps its
+// normal with tangents (1 + d / r) as long, and a ramp on a cylinder tilts by d over r + d.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,12 +35,16 @@ std::string matte(const std::string& bump) {
     return "Material \"matte\" \"rgb Kd\" [1 1 1]" + (bump.empty() ? "" : " \"texture bumpmap\" \"" + bump + "\"");
 }
 
-Vec3f shadingNormalAt(const std::string& world, Vec3f target) {
+SurfaceHit hitAlong(const std::string& world, Vec3f from, Vec3f direction) {
     test::TempDir dir;
     const auto g = test::geometryOf(dir, kTextures + world);
     Intersection it;
-    EXPECT_TRUE(trace(*g, target + Vec3f{0, 0, 1}, {0, 0, -1}, it)) << world;
-    return it.hit.ns;
+    EXPECT_TRUE(trace(*g, from, direction, it)) << world;
+    return it.hit;
+}
+
+Vec3f shadingNormalAt(const std::string& world, Vec3f target) {
+    return hitAlong(world, target + Vec3f{0, 0, 1}, {0, 0, -1}).ns;
 }
 
 TEST(BumpMapping, LinearRampTiltsTheShadingNormal) {
@@ -67,8 +73,10 @@ TEST(BumpMapping, InstancedPlaneTiltsByItsWorldSlope) {
     EXPECT_NEAR(std::acos(n.z), std::atan(kRamp / 2), 1e-4);
 }
 
+// (On a mesh whose vertex normals vary, pbrt-v3's d dn/du may tilt even a constant displacement.)
 TEST(BumpMapping, ConstantDisplacementChangesNothing) {
-    for (const std::string& shape : {plane(matte("")), plane(matte(""), "\"normal N\" [0 0.1 1  0 0 1  0.2 0 1  0 0 1]"),
+    for (const std::string& shape : {plane(matte("")),
+                                     plane(matte(""), "\"normal N\" [0 0.1 1  0 0.1 1  0 0.1 1  0 0.1 1]"),
                                     matte("") + "\nTranslate 0 0 -1\nShape \"sphere\" \"float phimax\" 300"}) {
         const std::string bumped = std::string(shape).replace(shape.find(']') + 1, 0, " \"texture bumpmap\" \"flat\"");
         for (Vec3f at : {Vec3f{0.2f, 0.3f, 0}, Vec3f{-0.4f, 0.1f, 0}}) {
@@ -76,6 +84,30 @@ TEST(BumpMapping, ConstantDisplacementChangesNothing) {
             EXPECT_NEAR(dot(a, b), 1, 1e-6) << bumped;
         }
     }
+}
+
+// The sphere of radius r displaced by d is the sphere of radius r + d: the same normal, and dp/du
+// and dp/dv longer by (1 + d / r) = 1.35 for d = 0.7 (the "flat" texture), r = 2.
+TEST(BumpMapping, ConstantDisplacementOnASphereLengthensItsTangents) {
+    const std::string sphere = "Translate 0 0 -2\nShape \"sphere\" \"float radius\" 2";
+    for (Vec3f at : {Vec3f{0.3f, 0.2f, 1}, Vec3f{-0.5f, 0.4f, 1}}) {
+        const SurfaceHit plain = hitAlong(matte("") + "\n" + sphere, at, {0, 0, -1});
+        const SurfaceHit bumped = hitAlong(matte("flat") + "\n" + sphere, at, {0, 0, -1});
+        EXPECT_NEAR(dot(bumped.ns, plain.ng), 1, 1e-6);
+        EXPECT_LT(length(bumped.dpdu - 1.35f * plain.dpdu), 1e-5f * length(plain.dpdu));
+        EXPECT_LT(length(bumped.dpdv - 1.35f * plain.dpdv), 1e-5f * length(plain.dpdv));
+    }
+}
+
+// A cylinder of radius r displaced by d(u) = a u has the radius r + d(phi) at phi = 2 pi u, so
+// dp'/du = 2 pi (r + d) e_phi + a e_r: the normal leans toward -e_phi by atan(a / (2 pi (r + d))).
+// At (0, r, 0), u = 1/4: r = 0.5, d = 0.125 give 7.26 degrees (9.04 without the d dn/du term).
+TEST(BumpMapping, RampOnACylinderTiltsByTheDisplacedRadius) {
+    const double r = 0.5, d = kRamp / 4, tilt = std::atan(kRamp / (2 * kPi * (r + d)));
+    const Vec3f n = hitAlong(matte("ramp") + "\nShape \"cylinder\" \"float radius\" 0.5", {0, 3, 0}, {0, -1, 0}).ns;
+    EXPECT_NEAR(std::asin(n.x), tilt, 1e-4);  // e_phi = -x here
+    EXPECT_NEAR(n.y, std::cos(tilt), 1e-4);
+    EXPECT_NEAR(n.z, 0, 1e-5);
 }
 
 // A mix has no bump map of its own, and those of its parts are not applied: a warning says so.
