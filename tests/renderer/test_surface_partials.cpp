@@ -127,7 +127,9 @@ TEST(SurfacePartials, NormalPartialsStayFiniteAtPolesApexAndVertex) {
             EXPECT_LT(length(h.dndu - h.dpdu), 1e-5f) << world;
             EXPECT_LT(length(h.dndv - h.dpdv), 1e-5f * length(h.dpdv)) << world;
         }
-        if (world.find("cone") != std::string::npos) EXPECT_LT(length(h.dndv), 1e-6f) << world;
+        if (world.find("cone") != std::string::npos) {
+            EXPECT_LT(length(h.dndv), 1e-6f) << world;
+        }
     }
 }
 
