@@ -24,4 +24,12 @@ inline float lum(const Image& im, int x, int y) {
     return (p[0] + p[1] + p[2]) / 3.0f;
 }
 
+// The mean of lum over the whole image.
+inline double meanLum(const Image& im) {
+    double sum = 0;
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) sum += lum(im, x, y);
+    return sum / (double(im.width) * im.height);
+}
+
 }  // namespace lenslab::test

@@ -20,11 +20,7 @@ float visibleFraction(const std::string& cut) {
         "Material \"matte\" \"rgb Kd\" [0 0 0]\n"
         "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point P\" [-1 -1 2  1 -1 2  1 1 2  -1 1 2]\n"
         "  \"float uv\" [0 0 1 0 1 1 0 1] " + cut + "\nWorldEnd\n");
-    const RenderOutput out = test::render(p, 32, 32, 4);
-    double sum = 0;
-    for (int y = 0; y < 32; ++y)
-        for (int x = 0; x < 32; ++x) sum += test::lum(out.image, x, y);
-    return float(sum / (32 * 32));
+    return float(test::meanLum(test::render(p, 32, 32, 4).image));
 }
 
 TEST(Cutouts, AlphaZeroAndAlphaTexturesLetRaysThrough) {

@@ -45,11 +45,7 @@ TEST(InfiniteLight, WhitePlaneUnderUniformSkyHasRadianceL) {
     const std::string scene = dir.write("sky.pbrt", std::string(test::kProbeHeader) +
         "Integrator \"path\" \"integer maxdepth\" 1\nWorldBegin\n"
         "LightSource \"infinite\" \"rgb L\" [0.35 0.35 0.35] \"rgb scale\" [2 2 2]\n" + kWhitePlane + "WorldEnd\n");
-    const RenderOutput out = test::render(scene, 8, 8, 64);
-    double sum = 0;
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) sum += test::lum(out.image, x, y);
-    EXPECT_NEAR(sum / 64, 0.7, 0.007);
+    EXPECT_NEAR(test::meanLum(test::render(scene, 8, 8, 64).image), 0.7, 0.007);
 }
 
 // An equirectangular map bright (2) on its upper half, the light-space +z hemisphere, dark below.
