@@ -66,6 +66,7 @@ LensTableRow parseRow(const std::string& content, const std::string& file, int l
     row.gap = parseNumber(fields[1], 1, file, line);
     row.index = parseNumber(fields[2], 2, file, line);
     row.diameter = parseNumber(fields[3], 3, file, line);
+    row.stop = row.radius == 0 && row.index == 0;
     if (row.gap < 0) throw LensTableError(file, line, "negative gap " + fields[1]);
     if (row.diameter <= 0)
         throw LensTableError(file, line, "diameter must be positive, found " + fields[3]);

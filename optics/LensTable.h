@@ -1,5 +1,6 @@
 #pragma once
 // The lens table as written in a .dat file, before any geometry is derived from it.
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -19,13 +20,32 @@ std::optional<TableLayout> parseLayoutName(const std::string& name);
 // the camera's setup short, and refuses generated or fuzzed tables of thousands of rows at once.
 constexpr int kMaxLensSurfaces = 256;
 
+// Even-asphere polynomial terms: coefficients of r^2, r^4, ..., r^16 (mm^-1, mm^-3, ..., mm^-15).
+constexpr int kAsphericTerms = 8;
+using AsphericCoefficients = std::array<double, kAsphericTerms>;
+
+// The Fraunhofer lines the lens designer's colour figures use (nm): F (hydrogen, blue), d (helium,
+// yellow; the default wavelength), C (hydrogen, red).
+constexpr double kWavelengthF = 486.1327;
+constexpr double kWavelengthD = 587.5618;
+constexpr double kWavelengthC = 656.2725;
+
 struct LensTableRow {
     double radius = 0;    // mm, 0 = flat; positive: centre of curvature on the film side
-    double gap = 0;       // mm, as written (meaning depends on the layout)
-    double index = 0;     // refractive index on the film side; 0 means air
+    double gap = 0;       // mm, as written (meaning depends on the layout); negative only after a mirror
+    double index = 0;     // refractive index on the film side at the d line; 0 means air
     double diameter = 0;  // clear aperture diameter, mm
     int line = 0;         // 1-based line in the source text
-    bool isStop() const { return radius == 0 && index == 0; }
+    bool stop = false;    // the aperture stop (a table's radius 0, N 0 row; a .zmx STOP)
+    // A real prescription's medium on the film side: a catalog glass name, or an Abbe number Vd that
+    // makes (index, abbe) a model glass. Neither: the index holds at every wavelength.
+    std::string glass;
+    double abbe = 0;
+    double conic = 0;                  // conic constant k (0 sphere, -1 paraboloid)
+    AsphericCoefficients aspheric{};   // even-asphere terms, all 0 for a conic or sphere
+    bool mirror = false;               // reflects instead of refracting
+    double obscurationDiameter = 0;    // central obscuration (mm); rays inside it are blocked
+    bool isStop() const { return stop; }
 };
 
 struct LensTable {
@@ -34,6 +54,12 @@ struct LensTable {
     std::vector<LensTableRow> rows;
     TableLayout layout = TableLayout::GapBefore;
     bool layoutDetected = true;  // false when an explicit override decided it
+    std::string format = "table";            // "table" (.dat) or "zmx"
+    double primaryWavelength = kWavelengthD; // nm: the file's primary wavelength, else the d line
+    std::vector<double> wavelengths;         // nm, as the file lists them (may be empty)
+    std::vector<std::string> catalogs;       // glass catalogs the file names (.zmx GCAT), searched first
+    std::optional<double> designFNumber;     // .zmx FNUM
+    std::optional<double> entrancePupilDiameter;  // .zmx ENPD, mm
 };
 
 // Every problem with a table: the message names the file, the line and the problem.

@@ -45,6 +45,7 @@ LensTable decodeTable(FuzzedDataProvider& in) {
         r.line = i + 1;
         r.gap = i == 0 || in.ConsumeIntegralInRange(0, 7) == 0 ? 0.0 : logUniform(in, 1e-3, 100);
         if (i == stop) {
+            r.stop = true;
             r.diameter = logUniform(in, 1e-3, 200);
         } else {
             const bool flat = in.ConsumeIntegralInRange(0, 4) == 0;
