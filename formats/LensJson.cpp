@@ -14,18 +14,34 @@ nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
     using nlohmann::json;
     const FirstOrder& fo = a.firstOrder;
     json surfaces = json::array();
-    for (const Surface& s : a.lens.surfaces)
-        surfaces.push_back({{"z", s.z},
-                            {"radius", s.radius},
-                            {"n", s.indexAfter},
-                            {"diameter", 2 * s.apertureRadius},
-                            {"is_stop", s.isStop},
-                            {"line", s.line}});
+    for (const Surface& s : a.lens.surfaces) {
+        const Medium& m = s.mediumAfter;
+        json surface = {{"z", s.z},
+                        {"radius", s.radius},
+                        {"n", s.indexAfter},
+                        {"diameter", 2 * s.apertureRadius},
+                        {"is_stop", s.isStop},
+                        {"line", s.line},
+                        {"glass", m.name},
+                        {"catalog", m.catalog},
+                        {"nd", refractiveIndex(m, kWavelengthD)},
+                        {"vd", isDispersive(m) ? json(abbeNumber(m)) : json(nullptr)},
+                        {"conic", s.conic},
+                        {"aspheric", s.aspheric},
+                        {"mirror", s.mirror}};
+        if (s.obscurationRadius > 0) surface["obscuration_diameter"] = 2 * s.obscurationRadius;
+        surfaces.push_back(surface);
+    }
+    const Chromatic& c = a.chromatic;
     return {
         {"name", a.lens.name},
         {"units", "mm"},
         {"convention", "origin at the front vertex, +z toward the scene, film at negative z"},
         {"layout", layoutName(a.lens.layout)},
+        {"format", a.lens.format},
+        {"wavelength_nm", a.lens.wavelength},
+        {"primary_wavelength_nm", a.lens.primaryWavelength},
+        {"dispersive", a.lens.isDispersive()},
         {"efl", fo.efl},
         {"efl_front", fo.eflFront},
         {"back_focal_distance", fo.backFocalDistance},
@@ -50,6 +66,17 @@ nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
           {"image_z_thick", a.focus.imageZThick},
           {"image_z_difference", a.focus.difference},
           {"rms_spot_radius", a.focus.rmsSpotRadius}}},
+        {"chromatic",
+         {{"efl_F", c.eflF},
+          {"efl_d", c.eflD},
+          {"efl_C", c.eflC},
+          {"image_z_F", c.imageZF},
+          {"image_z_d", c.imageZD},
+          {"image_z_C", c.imageZC},
+          {"longitudinal_colour_mm", c.longitudinalColour},
+          {"lateral_colour_mm", c.lateralColour},
+          {"lateral_colour_field_deg", c.lateralColourFieldDegrees},
+          {"lateral_colour_image_height", c.lateralColourImageHeight}}},
         {"surfaces", surfaces},
     };
 }

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include "NumberText.h"
+
 namespace lenslab {
 
 namespace {
@@ -19,11 +21,17 @@ std::string lensAnalysisText(const LensAnalysis& a) {
     const FirstOrder& fo = a.firstOrder;
     std::string out;
     char b[256];
-    std::snprintf(b, sizeof b, "%s  (%zu surfaces, %s layout)\n", a.lens.name.c_str(), a.lens.surfaces.size(),
-                  layoutName(a.lens.layout));
+    if (a.lens.format == "zmx")
+        std::snprintf(b, sizeof b, "%s  (%zu surfaces, Zemax file)\n", a.lens.name.c_str(), a.lens.surfaces.size());
+    else
+        std::snprintf(b, sizeof b, "%s  (%zu surfaces, %s layout)\n", a.lens.name.c_str(), a.lens.surfaces.size(),
+                      layoutName(a.lens.layout));
     out += b;
     for (const auto& c : a.lens.comments) out += "  # " + c + "\n";
-    out += "z in mm: origin at the front vertex, +z toward the scene, film at negative z\n\n";
+    out += "z in mm: origin at the front vertex, +z toward the scene, film at negative z\n";
+    std::snprintf(b, sizeof b, "wavelength %.2f nm%s\n\n", a.lens.wavelength,
+                  a.lens.isDispersive() ? "" : " (no dispersion: one index per medium)");
+    out += b;
     out += "First order\n";
     line(out, "effective focal length", fo.efl);
     line(out, "back focal distance", fo.backFocalDistance, "rear vertex to F'");
@@ -50,12 +58,29 @@ std::string lensAnalysisText(const LensAnalysis& a) {
     line(out, "film z, exact (best RMS)", a.focus.imageZExact);
     line(out, "exact - thick", a.focus.difference);
     line(out, "RMS spot radius at best", a.focus.rmsSpotRadius);
-    out += "\nSurfaces\n    #        z (mm)    radius (mm)        N   diameter (mm)\n";
+    const Chromatic& c = a.chromatic;
+    out += "\nColour (F 486.13, d 587.56, C 656.27 nm)\n";
+    line(out, "EFL at F", c.eflF);
+    line(out, "EFL at d", c.eflD);
+    line(out, "EFL at C", c.eflC);
+    line(out, "image z at F", c.imageZF, "paraxial image of the plane of focus");
+    line(out, "image z at d", c.imageZD);
+    line(out, "image z at C", c.imageZC);
+    line(out, "longitudinal colour", c.longitudinalColour, "image z C - F");
+    std::snprintf(b, sizeof b, "F - C chief ray at %.2f deg", c.lateralColourFieldDegrees);
+    line(out, "lateral colour", c.lateralColour, b);
+    out += "\nSurfaces\n    #        z (mm)    radius (mm)        N   diameter (mm)  glass\n";
     for (std::size_t i = 0; i < a.lens.surfaces.size(); ++i) {
         const Surface& s = a.lens.surfaces[i];
-        std::snprintf(b, sizeof b, "  %3zu  %12.4f  %13.4f  %7.4f  %14.4f%s\n", i + 1, s.z, s.radius, s.indexAfter,
-                      2 * s.apertureRadius, s.isStop ? "  stop" : "");
-        out += b;
+        std::string notes = s.mediumAfter.name.empty() ? "" : "  " + s.mediumAfter.name;
+        if (s.isStop) notes += "  stop";
+        if (s.mirror) notes += "  mirror";
+        if (s.conic != 0) notes += "  conic " + formatNumber(s.conic);
+        if (s.isAspheric()) notes += "  asphere";
+        if (s.obscurationRadius > 0) notes += "  obscuration " + formatNumber(2 * s.obscurationRadius) + " mm";
+        std::snprintf(b, sizeof b, "  %3zu  %12.4f  %13.4f  %7.4f  %14.4f", i + 1, s.z, s.radius, s.indexAfter,
+                      2 * s.apertureRadius);
+        out += b + notes + "\n";
     }
     return out;
 }

@@ -19,15 +19,19 @@ Ray marginalRayFromFPrime(const FirstOrder& fo, double sinTheta) {
     return {{0, 0, fo.zFPrime}, {0, sinTheta, std::sqrt(1.0 - sinTheta * sinTheta)}};
 }
 
-// Whether the cone of half-angle theta from F' passes the whole lens (stop at table size).
+// Whether the cone of half-angle theta from F' passes the whole lens (stop at table size). A central
+// obscuration takes out the middle of the cone, not its rim: it sets no f-number.
 bool conePasses(const LensSystem& lens, const FirstOrder& fo, double sinTheta) {
-    return traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene).ok();
+    TraceOptions options;
+    options.ignoreObscurations = true;
+    return traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options).ok();
 }
 
 // Height at the stop plane of the marginal ray traced from F' through the surfaces behind the stop.
 double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta, bool* blocked) {
     TraceOptions options;
     options.begin = lens.stopIndex + 1;
+    options.ignoreObscurations = true;
     const TraceResult r = traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options);
     *blocked = !r.ok();
     return std::fabs(heightAtZ(r.ray, lens.stop().z));

@@ -29,7 +29,7 @@ struct FieldRays {
         options.end = lens.stopIndex;
         options.ignoreApertures = true;
         const TraceResult r = traceRay(lens, at(vertexHeight), TraceDirection::SceneToFilm, options);
-        if (!r.ok() || !(r.ray.direction.z < 0)) return std::nullopt;
+        if (!r.ok() || !(r.ray.direction.z * lens.zDirectionAfter(lens.stopIndex - 1) > 0)) return std::nullopt;
         return heightAtZ(r.ray, lens.stop().z);
     }
 };

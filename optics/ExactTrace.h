@@ -15,6 +15,7 @@ struct TraceOptions {
     int begin = 0;
     int end = -1;
     bool ignoreApertures = false;     // for first-order (paraxial-limit) rays
+    bool ignoreObscurations = false;  // for the rim rays that set the f-number
     std::vector<Vec3>* path = nullptr;  // when set, receives the start and every surface hit
 };
 
@@ -24,6 +25,10 @@ struct TraceResult {
     int surface = -1;                   // the surface that blocked it
     bool ok() const { return blocked == BlockReason::None; }
 };
+
+// Surface i's constants for a trace in `direction` (the index ratio depends on it).
+template <class T>
+SurfaceConstants<T> surfaceConstants(const LensSystem& lens, int i, TraceDirection direction, const TraceOptions& options = {});
 
 // Traces `ray` (lens space, unit direction) through the surfaces. SceneToFilm rays travel toward -z
 // and meet the surfaces front to rear; FilmToScene rays travel toward +z, rear to front.

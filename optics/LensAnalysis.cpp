@@ -25,11 +25,22 @@ void refuseBoth(const std::optional<Setting>& a, const std::optional<Setting>& b
     if (a && b) throw SettingError(a->source + " and " + b->source + " both set the " + what + ": give one of them");
 }
 
+// The lens at the requested wavelength (or as it was built: at its primary wavelength).
+LensSystem atRequestedWavelength(const LensSystem& lens, const std::optional<Setting>& wavelength) {
+    if (!wavelength) return lens;
+    const double nm = wavelength->value;
+    if (!(nm >= kShortestWavelength && nm <= kLongestWavelength))
+        throw SettingError(wavelength->source + ": wavelength " + formatNumber(nm) + " nm lies outside " +
+                           formatNumber(kShortestWavelength) + "-" + formatNumber(kLongestWavelength) + " nm");
+    return atWavelength(lens, nm);
+}
+
 }  // namespace
 
-LensAnalysis analyzeLens(const LensSystem& table, const LensSettings& s) {
+LensAnalysis analyzeLens(const LensSystem& lensAsBuilt, const LensSettings& s) {
     refuseBoth(s.fstop, s.stopDiameter, "aperture");
     refuseBoth(s.focusDistance, s.filmDistance, "focus");
+    const LensSystem table = atRequestedWavelength(lensAsBuilt, s.wavelength);
     LensAnalysis a;
     a.firstOrder = computeFirstOrder(table);
     a.aperture = computeApertureRange(table, a.firstOrder);
@@ -58,6 +69,7 @@ LensAnalysis analyzeLens(const LensSystem& table, const LensSettings& s) {
         const double distance = s.focusDistance ? s.focusDistance->value : std::numeric_limits<double>::infinity();
         a.focus = blame(s.focusDistance, [&] { return focusAt(a.lens, a.firstOrder, a.pupils, distance); });
     }
+    a.chromatic = computeChromatic(a.lens, a.focus.infinity ? std::numeric_limits<double>::infinity() : a.focus.objectZ);
     return a;
 }
 

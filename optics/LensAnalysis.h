@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "Aperture.h"
+#include "Chromatic.h"
 #include "FirstOrder.h"
 #include "Focus.h"
 #include "LensSettings.h"
@@ -21,9 +22,10 @@ struct LensAnalysis {
     Pupils pupils;            // at this stop opening
     ThickLens thick;
     FocusResult focus;
+    Chromatic chromatic;      // F, d and C at this focus
 };
 
-// The one check of lens settings: the aperture within [the lens's widest, f/64] (or a stop diameter
+// The one check of lens settings: the wavelength within 360-830 nm, the aperture within [the lens's widest, f/64] (or a stop diameter
 // within the stop), the focus reachable, the film behind the rear vertex, at most one way of
 // giving each. Throws OpticsError whose message starts with the offending setting's source.
 LensAnalysis analyzeLens(const LensSystem& lens, const LensSettings& settings);

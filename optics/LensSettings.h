@@ -27,7 +27,12 @@ struct LensSettings {
     bool focusFromFilm = false;            // focusDistance measured from the film (pbrt-v3), not the front vertex
     FocusModel focusModel = FocusModel::Exact;
     std::optional<Setting> filmDistance;   // mm, rear vertex to film: placed, not focused
+    std::optional<Setting> wavelength;     // nm; none: the prescription's primary wavelength
 };
+
+// The wavelengths any front end accepts (nm): the visible range of the CIE observer.
+constexpr double kShortestWavelength = 360.0;
+constexpr double kLongestWavelength = 830.0;
 
 // The narrowest f-number any front end accepts: the same everywhere (f/64, the smallest stop of
 // large-format lenses). A lens slower than that at its widest has just its widest setting.

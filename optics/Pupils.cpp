@@ -13,7 +13,9 @@ namespace {
 Pupil imageOfStop(const LensSystem& lens, TraceDirection direction, int begin, int end, const char* which) {
     const Surface& stop = lens.stop();
     const double h = nearAxisHeight(lens);
-    const double dz = direction == TraceDirection::FilmToScene ? 1.0 : -1.0;
+    // Light leaving the stop toward the film, or (traced back) toward the scene; mirrors turn it.
+    const double dz = direction == TraceDirection::FilmToScene ? -lens.zDirectionAfter(lens.stopIndex - 1)
+                                                               : lens.zDirectionAfter(lens.stopIndex);
     Pupil p;
     try {
         // A ray from the stop centre crosses the axis (extended) at the image of the stop centre.

@@ -1,6 +1,8 @@
 #include "RayBatch.h"
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace lenslab {
 
@@ -21,27 +23,74 @@ Ray RayBatch::get(std::size_t i) const {
 
 namespace {
 
-// One surface for every ray. Rays are independent (ivdep) and the step uses selects instead of
-// branches, so this loop vectorises.
-void stepAll(std::size_t count, double* px, double* py, double* pz, double* vx, double* vy, double* vz,
-             std::uint8_t* why, std::int16_t* at, const Surface& s, double eta, std::int16_t index) {
-    const double zVertex = s.z, curvature = s.curvature, radius = 1.0 / curvature;
-    const double r2 = s.apertureRadius * s.apertureRadius;
-    const bool isStop = s.isStop;
+// Keeps the batch's state for rays that passed this surface and records the block of those it stopped.
+struct BatchArrays {
+    double *px, *py, *pz, *vx, *vy, *vz;
+    std::uint8_t* why;
+    std::int16_t* at;
+};
+
+inline void keep(const BatchArrays& a, std::size_t r, double x, double y, double z, double u, double v, double w,
+                 BlockReason b, std::int16_t index) {
+    const bool alive = a.why[r] == 0;
+    a.px[r] = alive ? x : a.px[r];
+    a.py[r] = alive ? y : a.py[r];
+    a.pz[r] = alive ? z : a.pz[r];
+    a.vx[r] = alive ? u : a.vx[r];
+    a.vy[r] = alive ? v : a.vy[r];
+    a.vz[r] = alive ? w : a.vz[r];
+    const auto code = static_cast<std::uint8_t>(b);
+    const bool stops = alive & (code != 0);
+    a.why[r] = stops ? code : a.why[r];
+    a.at[r] = stops ? index : a.at[r];
+}
+
+// One quadric surface for every ray. Rays are independent (ivdep) and the step uses selects instead
+// of branches, so this loop vectorises.
+template <bool kConic>
+void stepQuadric(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s, std::int16_t index) {
 #pragma GCC ivdep
     for (std::size_t r = 0; r < count; ++r) {
-        double x = px[r], y = py[r], z = pz[r], u = vx[r], v = vy[r], w = vz[r];
-        const auto b = static_cast<std::uint8_t>(stepThroughSurface(x, y, z, u, v, w, zVertex, curvature, radius, r2, eta, isStop));
-        const bool alive = why[r] == 0;
-        px[r] = alive ? x : px[r];
-        py[r] = alive ? y : py[r];
-        pz[r] = alive ? z : pz[r];
-        vx[r] = alive ? u : vx[r];
-        vy[r] = alive ? v : vy[r];
-        vz[r] = alive ? w : vz[r];
-        const bool stops = alive & (b != 0);
-        why[r] = stops ? b : why[r];
-        at[r] = stops ? index : at[r];
+        double x = a.px[r], y = a.py[r], z = a.pz[r], u = a.vx[r], v = a.vy[r], w = a.vz[r];
+        const BlockReason b = stepThroughQuadric<double, kConic>(x, y, z, u, v, w, s);
+        keep(a, r, x, y, z, u, v, w, b, index);
+    }
+}
+
+// One asphere for every ray: Newton's passes run over the whole batch (each vectorises), a ray's t
+// frozen once its own step converged, so every ray sees exactly the scalar trace's iterations.
+void stepAsphere(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s, std::int16_t index) {
+    thread_local std::vector<double> t;
+    thread_local std::vector<std::uint8_t> done;
+    t.resize(count);
+    done.assign(count, 0);
+    double* tt = t.data();
+    std::uint8_t* dn = done.data();
+#pragma GCC ivdep
+    for (std::size_t r = 0; r < count; ++r) {
+        tt[r] = asphereStart(a.px[r], a.py[r], a.pz[r] - s.zVertex, a.vx[r], a.vy[r], a.vz[r], s);
+        dn[r] = !std::isfinite(tt[r]);
+    }
+    for (int pass = 0; pass < kMaxAsphereIterations; ++pass) {
+        std::size_t open = 0;
+#pragma GCC ivdep
+        for (std::size_t r = 0; r < count; ++r) {
+            const double step = asphereNewtonStep(a.px[r], a.py[r], a.pz[r] - s.zVertex, a.vx[r], a.vy[r], a.vz[r], tt[r], s);
+            const bool moving = dn[r] == 0;
+            const double next = tt[r] + step;
+            tt[r] = moving ? next : tt[r];
+            // Converged (2), or stalled on a non-finite t (1, which finishAsphere reports as a miss).
+            const std::uint8_t state = asphereStepConverged(step, next) ? 2 : std::isfinite(next) ? 0 : 1;
+            dn[r] = moving ? state : dn[r];
+            open += dn[r] == 0;
+        }
+        if (open == 0) break;
+    }
+#pragma GCC ivdep
+    for (std::size_t r = 0; r < count; ++r) {
+        double x = a.px[r], y = a.py[r], z = a.pz[r], u = a.vx[r], v = a.vy[r], w = a.vz[r];
+        const BlockReason b = finishAsphere(x, y, z, u, v, w, tt[r], z - s.zVertex, dn[r] == 2, s);
+        keep(a, r, x, y, z, u, v, w, b, index);
     }
 }
 
@@ -53,14 +102,16 @@ void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection directio
     std::fill(batch.blocked.begin(), batch.blocked.end(), BlockReason::None);
     std::fill(batch.blockedAt.begin(), batch.blockedAt.end(), std::int16_t(-1));
     static_assert(sizeof(BlockReason) == 1 && static_cast<int>(BlockReason::None) == 0);
+    const BatchArrays arrays{batch.ox.data(), batch.oy.data(), batch.oz.data(), batch.dx.data(), batch.dy.data(),
+                             batch.dz.data(), reinterpret_cast<std::uint8_t*>(batch.blocked.data()), batch.blockedAt.data()};
     // Surface-major order: each surface's constants stay in registers across the ray loop.
     for (int k = 0; k < n; ++k) {
         const int i = toFilm ? k : n - 1 - k;
-        const Surface& s = lens.surfaces[i];
-        const double nScene = lens.indexBefore(i), nFilm = s.indexAfter;
-        stepAll(batch.size(), batch.ox.data(), batch.oy.data(), batch.oz.data(), batch.dx.data(), batch.dy.data(),
-                batch.dz.data(), reinterpret_cast<std::uint8_t*>(batch.blocked.data()), batch.blockedAt.data(), s,
-                toFilm ? nScene / nFilm : nFilm / nScene, static_cast<std::int16_t>(i));
+        const SurfaceConstants<double> s = surfaceConstants<double>(lens, i, direction);
+        const auto index = static_cast<std::int16_t>(i);
+        if (s.asphericTerms > 0) stepAsphere(batch.size(), arrays, s, index);
+        else if (s.conicFactor != 1) stepQuadric<true>(batch.size(), arrays, s, index);
+        else stepQuadric<false>(batch.size(), arrays, s, index);
     }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// One ray meeting one spherical (or flat) surface: intersection with the cap at the vertex, the
-// clear-aperture test, and vector refraction. Written once, on plain scalars, so that the scalar
-// trace, the structure-of-arrays batch trace and the float variant share the exact same math.
+// One ray meeting one surface: a sphere, a conic or an even asphere. Intersection with the cap at
+// the vertex, the clear-aperture and obscuration tests, and vector refraction (or reflection at a
+// mirror). Written once, on plain scalars, so that the scalar trace, the structure-of-arrays batch
+// trace and the float variant share the exact same math.
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -14,64 +15,180 @@ enum class BlockReason : std::uint8_t {
     OutsideAperture,          // hit beyond the element's clear aperture
     ClippedByStop,            // hit beyond the aperture stop's opening
     TotalInternalReflection,  // no refracted ray exists
+    Obscured,                 // hit inside a central obscuration (a reflex lens's secondary mirror)
 };
 
 const char* blockReasonName(BlockReason reason);
 
-// Advances the ray (p, d) to the surface with vertex at zVertex and the given curvature, and refracts
-// it from index ratio eta = n_from / n_to. The surface equation relative to the vertex,
-// c |q|^2 + 2 q_z = 0 with q = p - vertex (centre at z = vertex - radius), stays exact for flat and
-// nearly flat surfaces. Both roots are formed without cancellation (one from Vieta's product); the
-// hit is the nearest one ahead of the ray on the cap at the vertex, the hemisphere where the unit
-// normal c q + e_z points toward +z. On a block the ray is left untouched and the reason returned.
-// radius is 1 / curvature (infinite for a flat surface), taken by the caller once per surface: the
-// far root's division per ray would be one of the step's six divisions and square roots, which
-// bound the vectorised batch.
+// A surface's constants in the tracer's arithmetic. The surface, relative to its vertex q = p - vertex,
+// is qz + sag(r) = 0 with the even-asphere sag
+//     sag(r) = c r^2 / (1 + sqrt(1 - K c^2 r^2)) + sum_i a_i r^(2i),   K = 1 + conic,
+// positive toward the film for c > 0. Without polynomial terms it is the quadric
+// c (x^2 + y^2 + K qz^2) + 2 qz = 0, which stays exact for flat and nearly flat surfaces.
 template <class T>
-inline BlockReason stepThroughSurface(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T zVertex,
-                                      T curvature, T radius, T apertureRadius2, T eta, bool isStop) {
-    const T qz = pz - zVertex;
-    const T b = dz + curvature * (px * dx + py * dy + qz * dz);
-    const T c = curvature * (px * px + py * py + qz * qz) + T(2) * qz;
-    const T disc = b * b - curvature * c;
+struct SurfaceConstants {
+    T zVertex = 0;
+    T curvature = 0;
+    T radius = std::numeric_limits<T>::infinity();  // 1 / curvature, taken once per surface
+    T conicFactor = 1;                             // K = 1 + conic constant
+    T apertureRadius2 = std::numeric_limits<T>::infinity();
+    T obscurationRadius2 = 0;
+    T eta = 1;           // n_from / n_to
+    bool isStop = false;
+    bool mirror = false;
+    int asphericTerms = 0;  // how many of `aspheric` are used (0: a quadric)
+    T aspheric[8] = {};     // coefficients of r^2, r^4, ..., r^16
+};
+
+// The nearest intersection ahead of the ray with the quadric's cap at the vertex (where the normal
+// c q + K c qz e_z + e_z points toward +z). Both roots are formed without cancellation (one from
+// Vieta's product). For a sphere (K = 1) the far root needs no division per ray: q * radius.
+// Returns the parameter t; `missed` when no root on the cap lies ahead.
+template <class T, bool kConic>
+inline T intersectQuadric(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConstants<T>& s, bool& missed) {
+    const T c = s.curvature, K = kConic ? s.conicFactor : T(1);
+    const T b = dz + c * (px * dx + py * dy + K * qz * dz);
+    const T cc = c * (px * px + py * py + K * qz * qz) + T(2) * qz;
+    const T a = kConic ? c * (T(1) + (K - T(1)) * dz * dz) : c;
+    const T disc = b * b - a * cc;
     const T root = std::sqrt(disc > T(0) ? disc : T(0));
     const T q = -(b + (b < T(0) ? -root : root));
-    const T tNear = c / q;  // stays finite as curvature -> 0
-    // The other root. A flat surface has none: q * inf is +-inf (or NaN), which farOk rejects.
-    const T tFar = q * radius;
+    const T tNear = cc / q;  // stays finite as curvature -> 0
+    // The other root. A flat surface (or a paraboloid's axial ray) has none: it comes out +-inf or
+    // NaN, which farOk rejects.
+    const T tFar = kConic ? q / a : q * s.radius;
     const T tMin = T(-1e-9);
-    const bool nearOk = (tNear >= tMin) & (T(1) + curvature * (qz + tNear * dz) > T(0));
-    const bool farOk = (tFar >= tMin) & (tFar < T(1e30)) & (T(1) + curvature * (qz + tFar * dz) > T(0));
+    const bool nearOk = (tNear >= tMin) & (T(1) + K * c * (qz + tNear * dz) > T(0));
+    const bool farOk = (tFar >= tMin) & (tFar < T(1e30)) & (T(1) + K * c * (qz + tFar * dz) > T(0));
     const T t = nearOk & (!farOk | (tNear <= tFar)) ? tNear : tFar;
-    const T hx = px + t * dx, hy = py + t * dy, hqz = qz + t * dz;
-    const T nzCap = T(1) + curvature * hqz;
-    const bool missed = !(disc >= T(0)) | !(nearOk | farOk) | !(t < T(1e30));
-    const bool outside = hx * hx + hy * hy > apertureRadius2;
+    missed = !(disc >= T(0)) | !(nearOk | farOk) | !(t < T(1e30));
+    return t;
+}
 
-    // The normal c q + e_z is unit length on the sphere; normalising it anyway keeps refraction
-    // unit-length when rounding leaves the hit a little off a tiny, strongly curved surface.
-    // Orient it against the incoming ray. Everything below is selects rather than branches so that
-    // the batch loop vectorises; a blocked ray keeps its state.
-    const T nx = curvature * hx, ny = curvature * hy;
-    const T inv = T(1) / std::sqrt(nx * nx + ny * ny + nzCap * nzCap);
-    const T nDotD = (nx * dx + ny * dy + nzCap * dz) * inv;
+// The even asphere at squared height rho: its sag, g = sag'(r) / r (so the surface's gradient is
+// (g x, g y, 1)), and u = 1 - K c^2 rho, which must stay >= 0 (the sag is undefined beyond).
+template <class T>
+inline void asphereSag(T rho, const SurfaceConstants<T>& s, T& sag, T& g, T& u) {
+    const T c = s.curvature;
+    u = T(1) - s.conicFactor * c * c * rho;
+    const T root = std::sqrt(u > T(0) ? u : T(0));
+    T poly = 0, slope = 0;
+    for (int i = s.asphericTerms - 1; i >= 0; --i) {
+        poly = poly * rho + s.aspheric[i];
+        slope = slope * rho + T(2 * (i + 1)) * s.aspheric[i];
+    }
+    sag = c * rho / (T(1) + root) + poly * rho;
+    g = c / (root > T(0) ? root : std::numeric_limits<T>::min()) + slope;
+}
+
+// One Newton step toward the asphere along the ray from t: F(t) = qz(t) + sag(r(t)), F' = dz + g (x dx + y dy).
+// Returns the step taken (0 once F' vanishes; the caller's convergence test then fails).
+template <class T>
+inline T asphereNewtonStep(T px, T py, T qz, T dx, T dy, T dz, T t, const SurfaceConstants<T>& s) {
+    const T x = px + t * dx, y = py + t * dy, z = qz + t * dz;
+    T sag, g, u;
+    asphereSag(x * x + y * y, s, sag, g, u);
+    const T f = z + sag;
+    const T slope = dz + g * (x * dx + y * dy);
+    return slope != T(0) ? -f / slope : T(0);
+}
+
+// Newton has converged when its step is below this, relative to the distance travelled: far above
+// the rounding of F near the root (so rounding noise cannot stall it), far below any optical length.
+template <class T>
+inline bool asphereStepConverged(T step, T t) {
+    return std::fabs(step) <= T(1024) * std::numeric_limits<T>::epsilon() * (T(1) + std::fabs(t));
+}
+constexpr int kMaxAsphereIterations = 32;
+
+// Newton's start on an asphere: the base quadric's hit, or where the ray crosses the vertex plane
+// when the quadric has none.
+template <class T>
+inline T asphereStart(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConstants<T>& s) {
+    bool missed = false;
+    const T t = intersectQuadric<T, true>(px, py, qz, dx, dy, dz, s, missed);
+    return missed ? -qz / dz : t;
+}
+
+// After the intersection: the aperture and obscuration tests, then refraction (or reflection) about
+// the surface normal (nx, ny, nz), any length, pointing toward +z. Everything is selects rather than
+// branches so that the batch loop vectorises; a blocked ray keeps its state.
+template <class T>
+inline BlockReason bendAtHit(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz, bool missed, T nx, T ny, T nz,
+                             const SurfaceConstants<T>& s) {
+    const T hx = px + t * dx, hy = py + t * dy, hqz = qz + t * dz;
+    const T r2 = hx * hx + hy * hy;
+    const bool outside = r2 > s.apertureRadius2;
+    const bool obscured = r2 < s.obscurationRadius2;
+    // Normalising keeps refraction unit-length when rounding leaves the hit a little off a tiny,
+    // strongly curved surface. Orient the normal against the incoming ray.
+    const T inv = T(1) / std::sqrt(nx * nx + ny * ny + nz * nz);
+    const T nDotD = (nx * dx + ny * dy + nz * dz) * inv;
     const T sign = nDotD > T(0) ? T(-1) : T(1);
     const T cosi = -sign * nDotD;
+    const T eta = s.mirror ? T(1) : s.eta;
     const T k = T(1) - eta * eta * (T(1) - cosi * cosi);
-    const bool tir = !(k >= T(0));
-    const bool pass = !missed & !outside & !tir;
-    const T m = sign * inv * (eta * cosi - std::sqrt(k > T(0) ? k : T(0)));
+    const bool tir = !s.mirror & !(k >= T(0));
+    const bool pass = !missed & !outside & !obscured & !tir;
+    // Refraction: eta d + (eta cos i - cos t) n_oriented. Reflection: d + 2 cos i n_oriented.
+    const T m = sign * inv * (s.mirror ? T(2) * cosi : eta * cosi - std::sqrt(k > T(0) ? k : T(0)));
     px = pass ? hx : px;
     py = pass ? hy : py;
-    pz = pass ? hqz + zVertex : pz;
-    const T ex = eta * dx + m * nx, ey = eta * dy + m * ny, ez = eta * dz + m * nzCap;
+    pz = pass ? hqz + s.zVertex : pz;
+    const T ex = eta * dx + m * nx, ey = eta * dy + m * ny, ez = eta * dz + m * nz;
     dx = pass ? ex : dx;
     dy = pass ? ey : dy;
     dz = pass ? ez : dz;
-    return missed    ? BlockReason::MissedSurface
-           : outside ? (isStop ? BlockReason::ClippedByStop : BlockReason::OutsideAperture)
-           : tir     ? BlockReason::TotalInternalReflection
-                     : BlockReason::None;
+    return missed     ? BlockReason::MissedSurface
+           : outside  ? (s.isStop ? BlockReason::ClippedByStop : BlockReason::OutsideAperture)
+           : obscured ? BlockReason::Obscured
+           : tir      ? BlockReason::TotalInternalReflection
+                      : BlockReason::None;
+}
+
+// A quadric (sphere when kConic is false): intersection and bend in one step.
+template <class T, bool kConic = false>
+inline BlockReason stepThroughQuadric(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s) {
+    const T qz = pz - s.zVertex;
+    bool missed = false;
+    const T t = intersectQuadric<T, kConic>(px, py, qz, dx, dy, dz, s, missed);
+    const T c = s.curvature, K = kConic ? s.conicFactor : T(1);
+    const T hx = px + t * dx, hy = py + t * dy, hqz = qz + t * dz;
+    return bendAtHit(px, py, pz, dx, dy, dz, t, qz, missed, c * hx, c * hy, T(1) + K * c * hqz, s);
+}
+
+// The asphere's bend once Newton has its t (shared by the scalar and the batch trace).
+template <class T>
+inline BlockReason finishAsphere(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz, bool converged,
+                                 const SurfaceConstants<T>& s) {
+    const T hx = px + t * dx, hy = py + t * dy;
+    T sag, g, u;
+    asphereSag(hx * hx + hy * hy, s, sag, g, u);
+    const bool missed = !converged | !(t >= T(-1e-9)) | !(u >= T(0)) | !(t < T(1e30));
+    return bendAtHit(px, py, pz, dx, dy, dz, t, qz, missed, g * hx, g * hy, T(1), s);
+}
+
+// An even asphere: Newton from the base quadric's hit, converged per ray; a ray that does not
+// converge, or ends where the sag is undefined, missed the surface.
+template <class T>
+inline BlockReason stepThroughAsphere(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s) {
+    const T qz = pz - s.zVertex;
+    T t = asphereStart(px, py, qz, dx, dy, dz, s);
+    bool converged = false;
+    for (int i = 0; i < kMaxAsphereIterations && !converged && std::isfinite(t); ++i) {
+        const T step = asphereNewtonStep(px, py, qz, dx, dy, dz, t, s);
+        t += step;
+        converged = asphereStepConverged(step, t);
+    }
+    return finishAsphere(px, py, pz, dx, dy, dz, t, qz, converged, s);
+}
+
+// Any surface, for one ray.
+template <class T>
+inline BlockReason stepThroughSurface(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s) {
+    if (s.asphericTerms > 0) return stepThroughAsphere(px, py, pz, dx, dy, dz, s);
+    if (s.conicFactor != T(1)) return stepThroughQuadric<T, true>(px, py, pz, dx, dy, dz, s);
+    return stepThroughQuadric<T, false>(px, py, pz, dx, dy, dz, s);
 }
 
 }  // namespace lenslab

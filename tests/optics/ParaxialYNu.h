@@ -10,7 +10,7 @@ namespace lenslab::test {
 
 struct YNuSurface {
     double s = 0;          // position along +s (= -z)
-    double curvature = 0;  // in the +s frame
+    double curvature = 0;  // at the vertex (all a paraxial ray sees), in the +s frame
     double nBefore = 1, nAfter = 1;
 };
 
@@ -21,8 +21,8 @@ inline std::vector<YNuSurface> ynuSystem(const LensSystem& lens, int begin, int 
     for (int i = begin; i < end; ++i) {
         const Surface& x = lens.surfaces[i];
         const double nScene = i == 0 ? 1.0 : lens.surfaces[i - 1].indexAfter;
-        if (!reversed) out.push_back({-x.z, x.curvature, nScene, x.indexAfter});
-        else out.insert(out.begin(), {x.z, -x.curvature, x.indexAfter, nScene});
+        if (!reversed) out.push_back({-x.z, x.vertexCurvature(), nScene, x.indexAfter});
+        else out.insert(out.begin(), {x.z, -x.vertexCurvature(), x.indexAfter, nScene});
     }
     return out;
 }

@@ -66,8 +66,13 @@ template <class T = double>
 Step step(Ray r, double curvature, double apertureRadius, double eta, bool isStop = false) {
     T px = T(r.origin.x), py = T(r.origin.y), pz = T(r.origin.z);
     T dx = T(r.direction.x), dy = T(r.direction.y), dz = T(r.direction.z);
-    const BlockReason why = stepThroughSurface<T>(px, py, pz, dx, dy, dz, T(0), T(curvature), T(1) / T(curvature),
-                                                  T(apertureRadius * apertureRadius), T(eta), isStop);
+    SurfaceConstants<T> s;
+    s.curvature = T(curvature);
+    s.radius = T(1) / T(curvature);
+    s.apertureRadius2 = T(apertureRadius * apertureRadius);
+    s.eta = T(eta);
+    s.isStop = isStop;
+    const BlockReason why = stepThroughSurface<T>(px, py, pz, dx, dy, dz, s);
     return {{{px, py, pz}, {dx, dy, dz}}, why};
 }
 

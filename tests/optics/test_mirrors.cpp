@@ -1,0 +1,138 @@
+// Mirrors in the sequential trace: the law of reflection, a classical Cassegrain (parabolic primary,
+// hyperbolic secondary) imaging an axial point perfectly at the focal length its textbook formulas
+// give, the central obscuration, and the checks on a prescription's mirrors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ExactTrace.h"
+#include "FirstOrder.h"
+#include "LensAnalysis.h"
+
+using namespace lenslab;
+
+namespace {
+
+// Primary: concave paraboloid, R1 = -200 (focal length f1 = 100, focus 100 mm toward the scene).
+// Secondary 80 mm in front of it intercepts the cone 20 mm before the primary's focus; magnification
+// m = 5 puts the image s' = m s = 100 mm behind the secondary, i.e. 20 mm behind the primary. Mirror
+// equation: 1/s' - 1/s = -2/R2 gives |R2| = 2 s s' / (s' - s) = 50 (convex); the secondary conic for
+// a perfect axial image is -((m + 1)/(m - 1))^2 = -2.25; system focal length m f1 = 500.
+constexpr double kF1 = 100, kGap = 80, kM = 5;
+
+LensTable cassegrainTable(double secondaryConic, double obscuration) {
+    LensTable t;
+    t.name = "cassegrain";
+    t.layout = TableLayout::GapAfter;
+    t.format = "zmx";
+    LensTableRow primary;
+    primary.radius = -2 * kF1;
+    primary.conic = -1;
+    primary.gap = -kGap;  // back toward the scene after the mirror
+    primary.diameter = 100;
+    primary.mirror = true;
+    primary.stop = true;
+    primary.obscurationDiameter = obscuration;
+    primary.line = 1;
+    LensTableRow secondary;
+    const double s = kF1 - kGap, sPrime = kM * s;
+    secondary.radius = -2 * s * sPrime / (sPrime - s);
+    secondary.conic = secondaryConic;
+    secondary.diameter = 24;
+    secondary.mirror = true;
+    secondary.line = 2;
+    t.rows = {primary, secondary};
+    return t;
+}
+
+double rmsAxialSpot(const LensSystem& lens, double z, double radius, int* obscured = nullptr) {
+    double sum = 0;
+    int count = 0;
+    for (int i = -16; i <= 16; ++i)
+        for (int j = -16; j <= 16; ++j) {
+            const double x = radius * i / 16, y = radius * j / 16;
+            if (x * x + y * y > radius * radius) continue;
+            const TraceResult r = traceRay(lens, {{x, y, 10}, {0, 0, -1}}, TraceDirection::SceneToFilm);
+            if (r.blocked == BlockReason::Obscured && obscured) ++*obscured;
+            if (!r.ok()) continue;
+            const Vec3 p = pointAt(r.ray, (z - r.ray.origin.z) / r.ray.direction.z);
+            sum += p.x * p.x + p.y * p.y;
+            ++count;
+        }
+    return count ? std::sqrt(sum / count) : NAN;
+}
+
+}  // namespace
+
+TEST(Mirrors, ReflectionObeysTheLawOfReflection) {
+    const LensSystem lens = buildLensSystem(cassegrainTable(-2.25, 0));
+    const Ray in{{3, 30, 10}, normalize(Vec3{0.01, -0.02, -1})};
+    std::vector<Vec3> path;
+    TraceOptions o;
+    o.end = 1;
+    o.path = &path;
+    const TraceResult r = traceRay(lens, in, TraceDirection::SceneToFilm, o);
+    ASSERT_TRUE(r.ok());
+    const Vec3 hit = path[1];
+    // Paraboloid z = -(x^2 + y^2) / (2 R) about the vertex (R = -200): the normal from the gradient.
+    const Vec3 normal = normalize(Vec3{-hit.x / 200, -hit.y / 200, 1});
+    EXPECT_NEAR(hit.z, (hit.x * hit.x + hit.y * hit.y) / 400, 1e-12);
+    EXPECT_NEAR(dot(in.direction, normal), -dot(r.ray.direction, normal), 1e-14);
+    const Vec3 expected = in.direction - 2 * dot(in.direction, normal) * normal;
+    EXPECT_NEAR(length(expected - r.ray.direction), 0, 1e-14);
+    EXPECT_GT(r.ray.direction.z, 0);  // back toward the scene
+}
+
+TEST(Mirrors, ClassicalCassegrainImagesTheAxisPerfectlyAtItsTextbookFocalLength) {
+    const LensSystem lens = buildLensSystem(cassegrainTable(-((kM + 1) / (kM - 1)) * ((kM + 1) / (kM - 1)), 0));
+    const FirstOrder fo = computeFirstOrder(lens);
+    EXPECT_NEAR(fo.efl, kM * kF1, 1e-6);
+    // The image 20 mm behind the primary's vertex.
+    EXPECT_NEAR(fo.zFPrime, -(kM * (kF1 - kGap) - kGap), 1e-6);
+    EXPECT_LT(rmsAxialSpot(lens, fo.zFPrime, 45), 1e-6 * fo.efl);
+    // With a spherical secondary the same telescope has spherical aberration.
+    const LensSystem spherical = buildLensSystem(cassegrainTable(0, 0));
+    EXPECT_GT(rmsAxialSpot(spherical, fo.zFPrime, 45), 1e-3 * fo.efl);
+}
+
+TEST(Mirrors, CentralObscurationBlocksTheMiddleOfTheBundle) {
+    const LensSystem lens = buildLensSystem(cassegrainTable(-2.25, 30));
+    int obscured = 0;
+    rmsAxialSpot(lens, -20, 45, &obscured);
+    // Points of the 33 x 33 grid (step 45/16) inside radius 15: count them here.
+    int inside = 0;
+    for (int i = -16; i <= 16; ++i)
+        for (int j = -16; j <= 16; ++j) inside += std::hypot(45.0 * i / 16, 45.0 * j / 16) < 15;
+    EXPECT_EQ(obscured, inside);
+    EXPECT_EQ(std::string(blockReasonName(BlockReason::Obscured)), "central obscuration");
+}
+
+TEST(Mirrors, AnalysisOfAReflexLensIsFinite) {
+    const LensAnalysis a = analyzeLens(buildLensSystem(cassegrainTable(-2.25, 30)), std::nullopt, 1e9);
+    EXPECT_NEAR(a.firstOrder.efl, 500, 1e-5);
+    EXPECT_NEAR(a.fstop, 5.0, 0.05);  // 100 mm aperture, f = 500
+    EXPECT_TRUE(std::isfinite(a.pupils.exit.z));
+    EXPECT_TRUE(std::isfinite(a.focus.imageZExact));
+}
+
+TEST(Mirrors, AnOddNumberOfMirrorsIsRefused) {
+    LensTable t = cassegrainTable(-2.25, 0);
+    t.rows.pop_back();
+    t.rows[0].gap = 0;
+    try {
+        buildLensSystem(t);
+        FAIL();
+    } catch (const LensTableError& e) {
+        EXPECT_NE(std::string(e.what()).find("even number of mirrors"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Mirrors, ObscurationAsLargeAsTheApertureIsRefused) {
+    try {
+        buildLensSystem(cassegrainTable(-2.25, 100));
+        FAIL();
+    } catch (const LensTableError& e) {
+        EXPECT_EQ(e.line(), 1);
+        EXPECT_NE(std::string(e.what()).find("obscuration"), std::string::npos) << e.what();
+    }
+}
