@@ -134,7 +134,8 @@ void readGcat(Reader& r, const Line& l) { r.catalogs.insert(r.catalogs.end(), l.
 void readWavm(Reader& r, const Line& l) {
     const int slot = r.integer(l, 0);
     if (slot != int(r.wavelengths.size()) + 1)
-        r.fail(l.number, "WAVM " + l.fields[0] + " out of order: expected slot " + std::to_string(r.wavelengths.size() + 1));
+        r.fail(l.number, "WAVM " + l.fields[0] + " out of order: expected slot " +
+                             std::to_string(r.wavelengths.size() + 1));
     const double um = r.number(l, 1);
     if (um <= 0) r.fail(l.number, "WAVM wavelength must be positive (micrometres), found " + l.fields[1]);
     r.wavelengths.push_back({um, l.fields.size() > 2 ? r.number(l, 2) : 1.0});
@@ -225,14 +226,16 @@ void readCircularAperture(Reader& r, const Line& l) {
     s.obscurationRadius = r.number(l, 0);
     s.apertureRadius = r.number(l, 1);
     if (s.apertureRadius <= 0 || s.obscurationRadius < 0 || s.obscurationRadius >= s.apertureRadius)
-        r.fail(l.number, l.keyword + " needs 0 <= minimum radius < maximum radius, found " + l.fields[0] + " " + l.fields[1]);
+        r.fail(l.number, l.keyword + " needs 0 <= minimum radius < maximum radius, found " + l.fields[0] + " " +
+                             l.fields[1]);
 }
 
 // OBSC minRadius maxRadius: a central obscuration when the minimum is 0.
 void readObsc(Reader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     if (r.number(l, 0) != 0)
-        r.fail(l.number, "annular obscurations (OBSC with a minimum radius) are not supported; only central ones (OBSC 0 radius)");
+        r.fail(l.number,
+               "annular obscurations (OBSC with a minimum radius) are not supported; only central ones (OBSC 0 radius)");
     s.obscurationRadius = r.number(l, 1);
     if (s.obscurationRadius < 0) r.fail(l.number, "OBSC radius must not be negative, found " + l.fields[1]);
 }
@@ -241,7 +244,8 @@ void readObsc(Reader& r, const Line& l) {
 void refuseIfNonZero(Reader& r, const Line& l, std::size_t firstValue, const std::string& what) {
     r.surface(l);
     for (std::size_t i = firstValue; i < l.fields.size(); ++i)
-        if (r.number(l, i) != 0) r.fail(l.number, what + " (" + l.keyword + ") are not supported; " + kSupported + " on one axis");
+        if (r.number(l, i) != 0)
+            r.fail(l.number, what + " (" + l.keyword + ") are not supported; " + kSupported + " on one axis");
 }
 
 void readDecenterOrTilt(Reader& r, const Line& l) { refuseIfNonZero(r, l, 0, "tilts and decenters"); }
@@ -250,7 +254,8 @@ void readScbd(Reader& r, const Line& l) { refuseIfNonZero(r, l, 2, "surface tilt
 void readObdc(Reader& r, const Line& l) { refuseIfNonZero(r, l, 0, "decentered apertures"); }
 
 void refuseGrin(Reader& r, const Line& l) {
-    r.fail(l.number, "gradient-index media (GRIN) are not supported; " + std::string(kSupported) + " with homogeneous glass");
+    r.fail(l.number,
+           "gradient-index media (GRIN) are not supported; " + std::string(kSupported) + " with homogeneous glass");
 }
 
 void refuseNonCircularAperture(Reader& r, const Line& l) {
@@ -296,7 +301,8 @@ AsphericCoefficients asphericTerms(const Reader& r, const RawSurface& s) {
     if (s.type != "EVENASPH") return a;  // a STANDARD surface has no parameters: Zemax keeps stale ones
     for (const auto& t : s.parms) {
         if (t.index < 1 || t.index > kAsphericTerms) {
-            if (t.value != 0) r.fail(t.line, "EVENASPH has PARM 1..8 (r^2 .. r^16); PARM " + std::to_string(t.index) + " is not one");
+            if (t.value != 0)
+                r.fail(t.line, "EVENASPH has PARM 1..8 (r^2 .. r^16); PARM " + std::to_string(t.index) + " is not one");
             continue;
         }
         a[t.index - 1] = t.value * std::pow(r.millimetresPerUnit, 1 - 2 * t.index);
@@ -340,7 +346,9 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const Len
     row.aspheric = asphericTerms(r, s);
     // The clear aperture is DIAM (Zemax's semi-diameter); a circular aperture overrides it, and the
     // mechanical semi-diameter stands in where DIAM is 0.
-    const double semi = s.apertureRadius > 0 ? s.apertureRadius : s.semiDiameter > 0 ? s.semiDiameter : s.mechanicalSemiDiameter;
+    const double semi = s.apertureRadius > 0 ? s.apertureRadius
+                        : s.semiDiameter > 0 ? s.semiDiameter
+                                             : s.mechanicalSemiDiameter;
     row.diameter = 2 * semi * u;
     row.obscurationDiameter = 2 * s.obscurationRadius * u;
     if (!(row.diameter > 0) || !std::isfinite(row.diameter))
