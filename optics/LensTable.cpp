@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "ZemaxFile.h"
+
 namespace lenslab {
 
 const char* layoutName(TableLayout layout) {
@@ -30,9 +32,8 @@ LensTableError::LensTableError(const std::string& file, int line, const std::str
 namespace {
 
 const std::string kUtf8ByteOrderMark = "\xef\xbb\xbf";
-constexpr std::size_t kMaxCommentBytes = 4096;
 
-const char* const kColumnNames[4] = {"radius", "gap", "N", "diameter"};
+const char* const kColumnNames[5] = {"radius", "gap", "N", "diameter", "glass or Vd"};
 
 std::vector<std::string> splitFields(const std::string& s) {
     std::vector<std::string> fields;
@@ -54,11 +55,31 @@ double parseNumber(const std::string& field, int column, const std::string& file
     return v;
 }
 
+bool isNumber(const std::string& field) {
+    char* end = nullptr;
+    std::strtod(field.c_str(), &end);
+    return end != field.c_str() && *end == '\0';
+}
+
+// The optional fifth column names the glass behind the surface: a number is its Abbe number Vd
+// (column 3's N and Vd make a model glass), anything else a catalog glass name.
+void parseGlass(LensTableRow& row, const std::string& field, const std::string& file, int line) {
+    if (row.index == 0 || row.index == 1)
+        throw LensTableError(file, line, "column 5 (glass or Vd) '" + field +
+                                             "' on an air or stop row: only a glass (N > 1) has a name or an Abbe number");
+    if (!isNumber(field)) {
+        row.glass = field;
+        return;
+    }
+    row.abbe = parseNumber(field, 4, file, line);
+    if (row.abbe <= 0) throw LensTableError(file, line, "Abbe number Vd must be positive, found " + field);
+}
+
 LensTableRow parseRow(const std::string& content, const std::string& file, int line) {
     auto fields = splitFields(content);
-    if (fields.size() != 4)
+    if (fields.size() != 4 && fields.size() != 5)
         throw LensTableError(file, line,
-                             "expected 4 columns (radius, gap, N, diameter), found " +
+                             "expected 4 or 5 columns (radius, gap, N, diameter, optional glass or Vd), found " +
                                  std::to_string(fields.size()));
     LensTableRow row;
     row.line = line;
@@ -72,6 +93,7 @@ LensTableRow parseRow(const std::string& content, const std::string& file, int l
         throw LensTableError(file, line, "diameter must be positive, found " + fields[3]);
     if (row.index != 0 && row.index < 1)
         throw LensTableError(file, line, "refractive index " + fields[2] + " is below 1 (use 0 or 1 for air)");
+    if (fields.size() == 5) parseGlass(row, fields[4], file, line);
     return row;
 }
 
@@ -95,10 +117,20 @@ TableLayout decideLayout(const LensTable& t, std::optional<TableLayout> override
                          "(gap-after) is 0; pass --layout gap-before or gap-after");
 }
 
+// A .zmx file's thickness is always the gap to the next surface.
+LensTable parseZemaxTable(const std::string& bytes, const std::string& name, std::optional<TableLayout> layout) {
+    if (layout == TableLayout::GapBefore)
+        throw LensTableError(name, 0, "a Zemax file's DISZ is the gap to the next surface: the gap-before layout does not apply");
+    LensTable table = parseZemax(bytes, name);
+    table.layoutDetected = !layout.has_value();
+    return table;
+}
+
 }  // namespace
 
 LensTable parseLensTable(const std::string& text, const std::string& name,
                          std::optional<TableLayout> layout) {
+    if (looksLikeZemax(text)) return parseZemaxTable(text, name, layout);
     LensTable table;
     table.name = name;
     std::istringstream in(text);
@@ -118,7 +150,6 @@ LensTable parseLensTable(const std::string& text, const std::string& name,
                 auto b = comment.find_first_not_of(" \t");
                 auto e = comment.find_last_not_of(" \t\"");
                 table.comments.push_back(b == std::string::npos ? "" : comment.substr(b, e - b + 1));
-                // The description travels with every lens listing: bounded, so one table cannot bloat them all.
                 commentBytes += table.comments.back().size();
                 if (commentBytes > kMaxCommentBytes)
                     throw LensTableError(name, lineNo, "the comment lines before the table are longer than " +

@@ -1,6 +1,7 @@
 #pragma once
 // The lens table as written in a .dat file, before any geometry is derived from it.
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,10 @@ std::optional<TableLayout> parseLayoutName(const std::string& name);
 // per-surface structure (exit-pupil search, traces, the blocking surface's int16 index) small and
 // the camera's setup short, and refuses generated or fuzzed tables of thousands of rows at once.
 constexpr int kMaxLensSurfaces = 256;
+
+// The description (comment lines) travels with every lens listing: bounded, so one file cannot
+// bloat them all.
+constexpr std::size_t kMaxCommentBytes = 4096;
 
 // Even-asphere polynomial terms: coefficients of r^2, r^4, ..., r^16 (mm^-1, mm^-3, ..., mm^-15).
 constexpr int kAsphericTerms = 8;

@@ -89,8 +89,31 @@ TEST(LensTable, FlatRefractingSurfaceIsNotAStop) {
     EXPECT_EQ(lens.stopIndex, 2);
 }
 
-TEST(LensTableErrors, WrongColumnCount) { expectError("50 0 1.5\n", 1, "expected 4 columns (radius, gap, N, diameter), found 3"); }
-TEST(LensTableErrors, TooManyColumns) { expectError("50 0 1.5 20\n-50 5 1 20 7\n", 2, "found 5"); }
+TEST(LensTableErrors, WrongColumnCount) {
+    expectError("50 0 1.5\n", 1, "expected 4 or 5 columns (radius, gap, N, diameter, optional glass or Vd), found 3");
+}
+TEST(LensTableErrors, TooManyColumns) { expectError("50 0 1.5 20\n-50 5 1.6 20 7 8\n", 2, "found 6"); }
+
+// The optional fifth column: a number is the glass's Abbe number Vd, anything else its catalog name.
+TEST(LensTable, FifthColumnNamesTheGlass) {
+    const LensTable t = parseLensTable("50 0 1.5168 20 64.17\n-50 5 1.6477 20 SF2\n-80 1 1 20\n0 5 0 10\n", "glass.dat");
+    EXPECT_DOUBLE_EQ(t.rows[0].abbe, 64.17);
+    EXPECT_EQ(t.rows[0].glass, "");
+    EXPECT_EQ(t.rows[1].glass, "SF2");
+    EXPECT_EQ(t.rows[1].abbe, 0);
+    EXPECT_DOUBLE_EQ(t.rows[1].index, 1.6477);  // N stays column 3
+    EXPECT_EQ(t.rows[2].glass, "");
+    EXPECT_EQ(t.format, "table");
+    EXPECT_TRUE(t.rows[3].stop);
+    EXPECT_EQ(buildLensSystem(t).surfaces.size(), 4u);
+}
+TEST(LensTableErrors, AbbeNumberNotPositive) {
+    expectError("50 0 1.5 20 0\n", 1, "Abbe number Vd must be positive, found 0");
+    expectError("50 0 1.5 20 -30\n", 1, "Abbe number Vd must be positive, found -30");
+}
+TEST(LensTableErrors, AbbeNumberNotFinite) { expectError("50 0 1.5 20 inf\n", 1, "column 5 (glass or Vd) is not a finite number"); }
+TEST(LensTableErrors, FifthColumnOnAir) { expectError("50 0 1.5 20\n-50 5 1 20 60\n", 2, "on an air or stop row"); }
+TEST(LensTableErrors, FifthColumnOnStop) { expectError("50 0 1.5 20\n0 5 0 10 N-BK7\n", 2, "on an air or stop row"); }
 TEST(LensTableErrors, NotANumber) { expectError("50 0 1.5 20\n-50 five 1 20\n", 2, "column 2 (gap) is not a finite number: 'five'"); }
 TEST(LensTableErrors, NotFinite) { expectError("50 0 1.5 20\n-50 5 1 nan\n", 2, "column 4 (diameter) is not a finite number"); }
 TEST(LensTableErrors, NegativeDiameter) { expectError("50 0 1.5 -20\n", 1, "diameter must be positive"); }
@@ -146,7 +169,9 @@ TEST(LensTable, BundledTablesMatchThePublishedFigures) {
     }
     EXPECT_EQ(checked, 10);
     for (const auto& e : std::filesystem::directory_iterator(dir))
-        if (e.path().extension() == ".dat") EXPECT_TRUE(lenses.count(e.path().stem().string())) << e.path() << " has no published figure";
+        if (e.path().extension() == ".dat") {
+            EXPECT_TRUE(lenses.count(e.path().stem().string())) << e.path() << " has no published figure";
+        }
 }
 
 namespace {

@@ -1,0 +1,55 @@
+// libFuzzer target: arbitrary bytes as a Zemax .zmx file, parsed directly and through the
+// content dispatch of parseLensTable. Refusals must be LensTableError with a message; an accepted
+// table must hold what the geometry builder relies on. Anything else escaping, a crash or a
+// sanitizer report is a finding.
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "FuzzCheck.h"
+#include "LensTable.h"
+#include "ZemaxFile.h"
+
+using namespace lenslab;
+using lenslab::fuzz::check;
+
+namespace {
+
+void checkTable(const LensTable& t) {
+    check(t.format == "zmx" && t.layout == TableLayout::GapAfter, "a .zmx is a gap-after zmx table");
+    check(!t.rows.empty() && t.rows.size() <= std::size_t(kMaxLensSurfaces), "1..kMaxLensSurfaces rows");
+    int stops = 0, mirrors = 0;
+    for (const LensTableRow& r : t.rows) {
+        stops += r.stop;
+        mirrors += r.mirror;
+        check(std::isfinite(r.radius) && std::isfinite(r.gap) && std::isfinite(r.conic), "finite geometry");
+        for (double a : r.aspheric) check(std::isfinite(a), "finite aspheric terms");
+        check(r.diameter > 0 && std::isfinite(r.diameter), "positive finite diameter");
+        check(r.obscurationDiameter >= 0 && r.obscurationDiameter < r.diameter, "obscuration inside the aperture");
+        check(r.index == 0 || r.index >= 1, "index 0 (air) or >= 1");
+        check(r.abbe >= 0 && std::isfinite(r.abbe), "finite Abbe number >= 0");
+        check(r.gap >= 0 || mirrors % 2 == 1, "negative gaps only after an odd number of mirrors");
+        check(r.line >= 1, "rows name their line");
+    }
+    check(stops == 1, "exactly one stop");
+    for (double w : t.wavelengths) check(w > 0 && std::isfinite(w), "positive finite wavelengths");
+    check(t.primaryWavelength > 0 && std::isfinite(t.primaryWavelength), "a positive primary wavelength");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string bytes(reinterpret_cast<const char*>(data), size);
+    try {
+        checkTable(parseZemax(bytes, "fuzz.zmx"));
+    } catch (const LensTableError& e) {
+        check(!e.problem().empty(), "a refusal says why");
+    }
+    try {
+        const LensTable t = parseLensTable(bytes, "fuzz.zmx");
+        check(looksLikeZemax(bytes) == (t.format == "zmx"), "dispatch by content");
+    } catch (const LensTableError& e) {
+        check(!e.problem().empty(), "a refusal says why");
+    }
+    return 0;
+}

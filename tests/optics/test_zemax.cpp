@@ -1,0 +1,368 @@
+// The Zemax .zmx reader: every field in its place and unit, the encodings, the dispatch by
+// content, and every refusal with its file:line. The files in data/ are the project's own.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "LensTable.h"
+#include "ZemaxFile.h"
+
+using namespace lenslab;
+
+namespace {
+
+std::string dataPath(const std::string& file) { return std::string(LENSLAB_SOURCE_DIR) + "/tests/optics/data/" + file; }
+
+std::string readBytes(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    EXPECT_TRUE(f) << path;
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+LensTable readData(const std::string& file) { return readLensTable(dataPath(file)); }
+
+// UTF-8 -> UTF-16 with a byte order mark, as Windows programs save text.
+std::string toUtf16(const std::string& utf8, bool littleEndian) {
+    std::string out;
+    const auto put = [&](std::uint32_t u) {
+        const char hi = char(u >> 8), lo = char(u & 0xff);
+        out += littleEndian ? lo : hi;
+        out += littleEndian ? hi : lo;
+    };
+    put(0xfeff);
+    for (std::size_t i = 0; i < utf8.size();) {
+        const auto b = std::uint8_t(utf8[i]);
+        const int extra = b < 0x80 ? 0 : b < 0xe0 ? 1 : b < 0xf0 ? 2 : 3;
+        std::uint32_t c = extra == 0 ? b : b & (0x3f >> extra);
+        for (int k = 1; k <= extra; ++k) c = (c << 6) | (std::uint8_t(utf8[i + k]) & 0x3f);
+        i += extra + 1;
+        if (c >= 0x10000) {
+            put(0xd800 + ((c - 0x10000) >> 10));
+            put(0xdc00 + ((c - 0x10000) & 0x3ff));
+        } else {
+            put(c);
+        }
+    }
+    return out;
+}
+
+void expectSameRows(const LensTable& a, const LensTable& b, double tolerance) {
+    ASSERT_EQ(a.rows.size(), b.rows.size());
+    for (std::size_t i = 0; i < a.rows.size(); ++i) {
+        EXPECT_NEAR(a.rows[i].radius, b.rows[i].radius, tolerance) << "row " << i;
+        EXPECT_NEAR(a.rows[i].gap, b.rows[i].gap, tolerance) << "row " << i;
+        EXPECT_NEAR(a.rows[i].diameter, b.rows[i].diameter, tolerance) << "row " << i;
+        EXPECT_EQ(a.rows[i].index, b.rows[i].index) << "row " << i;
+        EXPECT_EQ(a.rows[i].abbe, b.rows[i].abbe) << "row " << i;
+        EXPECT_EQ(a.rows[i].stop, b.rows[i].stop) << "row " << i;
+    }
+}
+
+// A singlet with one line of the header (line 2) and one line of SURF 1 (line 13) to vary.
+std::string singlet(const std::string& surfaceLine = "  CONI 0", const std::string& headerLine = "MODE SEQ") {
+    return "VERS 140124\n" + headerLine + "\nUNIT MM\n"  // 1-3
+           "SURF 0\n  CURV 0\n  DISZ INFINITY\n"         // 4-6
+           "SURF 1\n  STOP\n  CURV 0.02\n  DISZ 5\n  GLAS N-BK7 0 0 1.5168 64.17\n  DIAM 10\n" +  // 7-12
+           surfaceLine + "\n"                                                                    // 13
+           "SURF 2\n  CURV -0.02\n  DISZ 40\n  DIAM 10\n"                                        // 14-17
+           "SURF 3\n  CURV 0\n  DISZ 0\n";                                                       // 18-20
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+}
+
+void expectError(const std::string& bytes, int line, const std::string& problemPart) {
+    try {
+        parseZemax(bytes, "bad.zmx");
+        FAIL() << "no error for:\n" << bytes;
+    } catch (const LensTableError& e) {
+        EXPECT_EQ(e.file(), "bad.zmx");
+        EXPECT_EQ(e.line(), line) << e.what();
+        EXPECT_NE(e.problem().find(problemPart), std::string::npos) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind("bad.zmx:" + std::to_string(line) + ": ", 0), 0u) << e.what();
+    }
+}
+
+}  // namespace
+
+TEST(Zemax, DoubleGaussRowsEqualTheLensTable) {
+    const LensTable dat = readLensTable(std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss.50mm.dat");
+    const LensTable zmx = readData("dgauss.50mm.zmx");
+    EXPECT_EQ(zmx.format, "zmx");
+    EXPECT_EQ(zmx.layout, TableLayout::GapAfter);
+    EXPECT_TRUE(zmx.layoutDetected);
+    ASSERT_EQ(zmx.rows.size(), dat.rows.size());
+    for (std::size_t i = 0; i < dat.rows.size(); ++i) {
+        const LensTableRow &d = dat.rows[i], &z = zmx.rows[i];
+        EXPECT_NEAR(z.radius, d.radius, 1e-9) << "row " << i;
+        if (i + 1 < dat.rows.size()) {
+            EXPECT_NEAR(z.gap, d.gap, 1e-12) << "row " << i;
+        }
+        EXPECT_EQ(z.index, d.index == 1 ? 0 : d.index) << "row " << i;  // the table writes air as 1
+        EXPECT_NEAR(z.diameter, d.diameter, 1e-12) << "row " << i;      // DIAM is half of it
+        EXPECT_EQ(z.stop, d.stop) << "row " << i;
+    }
+    // The table's last gap is 0 (the film is placed later); the .zmx keeps the design's image distance.
+    EXPECT_DOUBLE_EQ(zmx.rows.back().gap, 36.1059);
+}
+
+TEST(Zemax, DoubleGaussHeaderFields) {
+    const LensTable t = readData("dgauss.50mm.zmx");
+    ASSERT_EQ(t.comments.size(), 3u);
+    EXPECT_EQ(t.comments[0], "Double Gauss 50 mm \xc6\x92/2 \xe2\x80\x94 \xc3\x98 25.2 mm");  // NAME first
+    EXPECT_EQ(t.comments[1], "lenslab test file: lenses/dgauss.50mm.dat written as a Zemax prescription.");
+    // Zemax lists 24 wavelength slots; the unused ones (0.55 um, weight 1) after the last used are dropped.
+    ASSERT_EQ(t.wavelengths.size(), 3u);
+    EXPECT_NEAR(t.wavelengths[0], 486.1327, 1e-9);  // micrometres in the file, nm here
+    EXPECT_NEAR(t.wavelengths[2], 656.2725, 1e-9);
+    EXPECT_NEAR(t.primaryWavelength, 587.5618, 1e-9);  // PWAV 2
+    EXPECT_EQ(t.catalogs, (std::vector<std::string>{"SCHOTT", "OHARA"}));
+    ASSERT_TRUE(t.entrancePupilDiameter);
+    EXPECT_NEAR(*t.entrancePupilDiameter, 25, 1e-12);
+    EXPECT_FALSE(t.designFNumber);
+    // Model glasses: nd and Vd from the GLAS line, no catalog name; the line is the SURF's.
+    EXPECT_EQ(t.rows[0].glass, "");
+    EXPECT_DOUBLE_EQ(t.rows[0].abbe, 47.2);
+    EXPECT_EQ(t.rows[1].abbe, 0);
+    EXPECT_FALSE(t.rows[0].mirror);
+    const std::string text = readBytes(dataPath("dgauss.50mm.zmx"));
+    int surf1Line = 1;
+    for (std::size_t i = 0; i < text.find("SURF 1\r\n"); ++i) surf1Line += text[i] == '\n';
+    EXPECT_EQ(t.rows[0].line, surf1Line);
+}
+
+TEST(Zemax, InchesReadAsTheSameMillimetres) {
+    const LensTable mm = readData("dgauss.50mm.zmx");
+    const LensTable in = readData("dgauss.50mm.inches.zmx");
+    expectSameRows(mm, in, 1e-9);
+    EXPECT_NEAR(mm.rows.back().gap, in.rows.back().gap, 1e-9);
+    EXPECT_NEAR(*in.entrancePupilDiameter, 25, 1e-9);
+}
+
+TEST(Zemax, Utf16WithByteOrderMarkReadsAsUtf8) {
+    const std::string utf8 = readBytes(dataPath("dgauss.50mm.zmx"));
+    const LensTable a = parseZemax(utf8, "a.zmx");
+    for (bool littleEndian : {true, false}) {
+        const std::string utf16 = toUtf16(utf8, littleEndian);
+        EXPECT_TRUE(looksLikeZemax(utf16));
+        const LensTable b = parseLensTable(utf16, "b.zmx");  // dispatched by content
+        EXPECT_EQ(b.format, "zmx");
+        expectSameRows(a, b, 0);
+        EXPECT_EQ(a.comments, b.comments);  // non-ASCII NAME, and a NOTE beyond the BMP (surrogates)
+        for (std::size_t i = 0; i < a.rows.size(); ++i) EXPECT_EQ(a.rows[i].line, b.rows[i].line);
+    }
+    // A UTF-8 byte order mark is skipped too.
+    expectSameRows(a, parseLensTable("\xef\xbb\xbf" + utf8, "c.zmx"), 0);
+}
+
+TEST(Zemax, EvenAsphereSinglet) {
+    const LensTable t = readData("evenasph-singlet.zmx");
+    ASSERT_EQ(t.rows.size(), 2u);
+    const LensTableRow& a = t.rows[0];
+    EXPECT_DOUBLE_EQ(a.radius, 25);
+    EXPECT_DOUBLE_EQ(a.gap, 6);
+    EXPECT_DOUBLE_EQ(a.conic, -0.6);
+    const AsphericCoefficients expected = {1.0e-4, -2.5e-6, 3.0e-9, -4.0e-12, 5.0e-15, -6.0e-18, 7.0e-21, -8.0e-24};
+    for (int i = 0; i < kAsphericTerms; ++i) EXPECT_DOUBLE_EQ(a.aspheric[i], expected[i]) << "PARM " << i + 1;
+    // A catalog glass: the name, and nd from the GLAS line; its Vd is the catalog's business.
+    EXPECT_EQ(a.glass, "N-BK7");
+    EXPECT_DOUBLE_EQ(a.index, 1.5168);
+    EXPECT_EQ(a.abbe, 0);
+    EXPECT_DOUBLE_EQ(a.diameter, 20);
+    EXPECT_TRUE(a.stop);
+    const LensTableRow& b = t.rows[1];
+    EXPECT_DOUBLE_EQ(b.radius, -200);
+    EXPECT_DOUBLE_EQ(b.diameter, 18);  // CLAP's 9 overrides DIAM 9.5 (and MEMA 11)
+    EXPECT_EQ(b.index, 0);
+    EXPECT_EQ(b.aspheric, AsphericCoefficients{});
+    EXPECT_FALSE(b.stop);
+    EXPECT_EQ(*t.designFNumber, 2.5);
+    ASSERT_EQ(t.wavelengths.size(), 1u);
+    EXPECT_NEAR(t.wavelengths[0], 587.5618, 1e-9);
+}
+
+TEST(Zemax, ModelGlassesInCentimetres) {
+    const LensTable t = readData("model-doublet.cm.zmx");
+    ASSERT_EQ(t.rows.size(), 3u);
+    EXPECT_DOUBLE_EQ(t.rows[0].radius, 62.5);  // CURV 0.16 per cm
+    EXPECT_DOUBLE_EQ(t.rows[0].gap, 6);
+    EXPECT_DOUBLE_EQ(t.rows[0].diameter, 26);
+    EXPECT_DOUBLE_EQ(t.rows[0].index, 1.5168);  // ___BLANK: a model glass
+    EXPECT_DOUBLE_EQ(t.rows[0].abbe, 64.17);
+    EXPECT_EQ(t.rows[0].glass, "");
+    EXPECT_NEAR(t.rows[1].radius, -1000.0 / 24, 1e-12);
+    EXPECT_DOUBLE_EQ(t.rows[1].index, 1.6477);  // solve flag 1: a model glass whatever its name
+    EXPECT_DOUBLE_EQ(t.rows[1].abbe, 33.85);
+    EXPECT_EQ(t.rows[1].glass, "");
+    EXPECT_DOUBLE_EQ(t.rows[2].diameter, 27);  // DIAM 0: the mechanical semi-diameter stands in
+    EXPECT_DOUBLE_EQ(t.rows[2].gap, 95);
+    EXPECT_EQ(t.rows[2].index, 0);
+    EXPECT_DOUBLE_EQ(*t.entrancePupilDiameter, 25);
+    EXPECT_TRUE(t.wavelengths.empty());
+    EXPECT_EQ(t.primaryWavelength, kWavelengthD);  // no WAVM: the d line
+}
+
+TEST(Zemax, MirrorsAndObscuration) {
+    const LensTable t = readData("cassegrain-obscured.zmx");
+    ASSERT_EQ(t.rows.size(), 3u);
+    EXPECT_DOUBLE_EQ(t.rows[0].obscurationDiameter, 30);  // OBSC 0 15: radius 15
+    EXPECT_DOUBLE_EQ(t.rows[0].diameter, 100);
+    EXPECT_FALSE(t.rows[0].mirror);
+    EXPECT_TRUE(t.rows[1].mirror);
+    EXPECT_TRUE(t.rows[1].stop);
+    EXPECT_DOUBLE_EQ(t.rows[1].radius, -400);
+    EXPECT_DOUBLE_EQ(t.rows[1].conic, -1);
+    EXPECT_DOUBLE_EQ(t.rows[1].gap, -150);  // back toward the object after the mirror
+    EXPECT_EQ(t.rows[1].index, 0);          // a mirror in air leaves the ray in air
+    EXPECT_EQ(t.rows[1].glass, "");
+    EXPECT_TRUE(t.rows[2].mirror);
+    EXPECT_DOUBLE_EQ(t.rows[2].gap, 200);
+    EXPECT_DOUBLE_EQ(t.rows[2].conic, -3.5);
+}
+
+TEST(Zemax, ManginMirrorKeepsTheGlassItReflectsIn) {
+    const std::string text = replaced(singlet(), "SURF 2\n  CURV -0.02\n  DISZ 40\n",
+                                      "SURF 2\n  CURV -0.02\n  DISZ -5\n  GLAS MIRROR 0 0 1.5 40\n");
+    const LensTable t = parseZemax(replaced(text, "SURF 3\n  CURV 0\n  DISZ 0\n",
+                                            "SURF 3\n  CURV 0.02\n  DISZ -30\n  DIAM 10\nSURF 4\n  CURV 0\n  DISZ 0\n"),
+                                   "mangin.zmx");
+    ASSERT_EQ(t.rows.size(), 3u);
+    EXPECT_TRUE(t.rows[1].mirror);
+    EXPECT_EQ(t.rows[1].glass, "N-BK7");
+    EXPECT_DOUBLE_EQ(t.rows[1].index, 1.5168);
+    EXPECT_EQ(t.rows[2].index, 0);
+    EXPECT_DOUBLE_EQ(t.rows[2].gap, -30);
+}
+
+TEST(Zemax, AsphericTermsScaleAsLengthToOneMinusTwoI) {
+    std::string text = replaced(singlet("  PARM 1 2\n  PARM 2 3\n  PARM 8 5"), "UNIT MM", "UNIT IN");
+    text = replaced(text, "  STOP\n", "  STOP\n  TYPE EVENASPH\n");
+    const LensTable t = parseZemax(text, "in.zmx");
+    const double in = 25.4;
+    EXPECT_NEAR(t.rows[0].aspheric[0], 2 / in, 1e-15);               // r^2: length^-1
+    EXPECT_NEAR(t.rows[0].aspheric[1] / (3 / std::pow(in, 3)), 1, 1e-14);   // r^4: length^-3
+    EXPECT_NEAR(t.rows[0].aspheric[7] / (5 / std::pow(in, 15)), 1, 1e-14);  // r^16: length^-15
+    EXPECT_DOUBLE_EQ(t.rows[0].radius, 50 * in);
+    EXPECT_DOUBLE_EQ(t.rows[0].gap, 5 * in);
+    EXPECT_DOUBLE_EQ(t.rows[0].diameter, 20 * in);
+    const LensTable m = parseZemax(replaced(singlet(), "UNIT MM", "UNIT M X W"), "m.zmx");
+    EXPECT_DOUBLE_EQ(m.rows[1].gap, 40000);
+    // A STANDARD surface has no parameters: stale PARM lines do not make it aspheric.
+    EXPECT_EQ(parseZemax(singlet("  PARM 2 3"), "std.zmx").rows[0].aspheric, AsphericCoefficients{});
+}
+
+TEST(Zemax, SurfaceWithoutTypeIsStandardAndIgnoredLinesAreIgnored) {
+    const LensTable t = parseZemax(singlet("  FIMP \n  HIDE 0 0 0\n  MIRR 2 0\n  SLAB 3\n  POPS 0 0 1\n  COMM x\n  DECX 0\n  TILT 0"
+                                           "\n  SCBD 1 0 0 0 0 0\n  OBDC 0 0"),
+                                   "ok.zmx");
+    ASSERT_EQ(t.rows.size(), 2u);
+    EXPECT_EQ(t.rows[1].line, 23);
+}
+
+TEST(Zemax, DispatchIsByContentNotByName) {
+    EXPECT_TRUE(looksLikeZemax(readBytes(dataPath("dgauss.50mm.zmx"))));
+    EXPECT_TRUE(looksLikeZemax("\n\n  SURF 0\n"));
+    EXPECT_FALSE(looksLikeZemax(readBytes(std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss.50mm.dat")));
+    EXPECT_FALSE(looksLikeZemax("50 0 1.5 20\n"));
+    EXPECT_FALSE(looksLikeZemax(""));
+    // A .zmx saved under a .dat name is still read as Zemax.
+    const std::string path = testing::TempDir() + "lenslab-zemax-as.dat";
+    std::ofstream(path, std::ios::binary) << readBytes(dataPath("evenasph-singlet.zmx"));
+    EXPECT_EQ(readLensTable(path).format, "zmx");
+    EXPECT_EQ(readLensTable(path, TableLayout::GapAfter).layoutDetected, false);
+    std::remove(path.c_str());
+    EXPECT_EQ(parseLensTable("50 0 1.5 20\n0 5 0 10\n", "t.dat").format, "table");
+}
+
+TEST(ZemaxErrors, GapBeforeLayoutDoesNotApply) {
+    try {
+        parseLensTable(singlet(), "x.zmx", TableLayout::GapBefore);
+        FAIL();
+    } catch (const LensTableError& e) {
+        EXPECT_NE(e.problem().find("gap-before layout does not apply"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ZemaxErrors, CoordinateBreak) { expectError(singlet("  TYPE COORDBRK"), 13, "coordinate breaks (TYPE COORDBRK"); }
+TEST(ZemaxErrors, Decenter) { expectError(singlet("  DECY 0.5"), 13, "tilts and decenters (DECY) are not supported"); }
+TEST(ZemaxErrors, Tilt) { expectError(singlet("  TILT 3"), 13, "tilts and decenters (TILT)"); }
+TEST(ZemaxErrors, SurfaceTiltData) { expectError(singlet("  SCBD 1 0 0 0 0 90 0 0"), 13, "(SCBD)"); }
+TEST(ZemaxErrors, DecenteredAperture) { expectError(singlet("  OBDC 0 190.6"), 13, "decentered apertures (OBDC)"); }
+TEST(ZemaxErrors, GradientIndexType) { expectError(singlet("  TYPE GRINSUR1"), 13, "gradient-index surfaces (TYPE GRINSUR1)"); }
+TEST(ZemaxErrors, GradientIndexLine) { expectError(singlet("  GRIN 1 2 3"), 13, "gradient-index media (GRIN)"); }
+TEST(ZemaxErrors, OddAsphere) { expectError(singlet("  TYPE ODDASPHE"), 13, "odd aspheres (TYPE ODDASPHE) are not supported"); }
+TEST(ZemaxErrors, OtherTypeIsNamedWithWhatIsSupported) {
+    expectError(singlet("  TYPE TOROIDAL"), 13, "surface type TOROIDAL is not supported; lenslab reads sequential, "
+                                                "rotationally symmetric systems of STANDARD and EVENASPH surfaces");
+}
+TEST(ZemaxErrors, RectangularAperture) { expectError(singlet("  SQAP 4 2 0"), 13, "rectangular and elliptical apertures (SQAP)"); }
+TEST(ZemaxErrors, AnnularObscuration) { expectError(singlet("  OBSC 1 2 0"), 13, "annular obscurations"); }
+TEST(ZemaxErrors, ObscurationCoveringTheAperture) { expectError(singlet("  OBSC 0 10 0"), 7, "covers the whole clear aperture"); }
+TEST(ZemaxErrors, NonSequential) { expectError(singlet("  CONI 0", "MODE NSC"), 2, "only sequential files (MODE SEQ)"); }
+TEST(ZemaxErrors, UnknownUnit) { expectError(replaced(singlet(), "UNIT MM", "UNIT FT"), 3, "UNIT FT is not one of MM, CM, IN, M"); }
+TEST(ZemaxErrors, SurfaceWithoutCurv) { expectError(replaced(singlet(), "  CURV -0.02\n", ""), 14, "SURF 2 has no CURV"); }
+TEST(ZemaxErrors, NotANumber) { expectError(singlet("  CONI abc"), 13, "CONI value 1 is not a finite number: 'abc'"); }
+TEST(ZemaxErrors, NotFinite) {
+    expectError(singlet("  CONI nan"), 13, "not a finite number");
+    expectError(singlet("  CONI 1e999"), 13, "not a finite number");
+    expectError(replaced(singlet(), "DISZ 40", "DISZ INFINITY"), 16, "INFINITY only on the object surface");
+    expectError(replaced(singlet(), "CURV 0.02", "CURV 1e-320"), 9, "the radius is not a finite number");
+    expectError(replaced(replaced(singlet(), "UNIT MM", "UNIT M"), "DISZ 40", "DISZ 1e306"), 16,
+                "DISZ must be a finite thickness");  // finite in metres, not in millimetres
+}
+TEST(ZemaxErrors, Empty) {
+    expectError("", 1, "empty file");
+    expectError("\r\n  \r\n", 1, "empty file");
+}
+TEST(ZemaxErrors, NoLensSurfaces) { expectError("VERS 1\nSURF 0\n  CURV 0\nSURF 1\n  CURV 0\n", 5, "no lens surfaces"); }
+TEST(ZemaxErrors, TwoStops) { expectError(singlet("  STOP"), 13, "a second STOP; the first is on line 8"); }
+TEST(ZemaxErrors, NoStop) { expectError(replaced(singlet(), "  STOP\n", ""), 4, "no STOP"); }
+TEST(ZemaxErrors, StopOnTheObject) {
+    expectError(replaced(replaced(singlet(), "  STOP\n", ""), "SURF 0\n", "SURF 0\n  STOP\n"), 5,
+                "the object surface (SURF 0) cannot be the stop");
+}
+TEST(ZemaxErrors, SurfacesOutOfOrder) { expectError(replaced(singlet(), "SURF 2", "SURF 5"), 14, "SURF 5 out of order: expected SURF 2"); }
+TEST(ZemaxErrors, NegativeThicknessWithoutMirror) { expectError(replaced(singlet(), "DISZ 40", "DISZ -40"), 16, "allowed only after a mirror"); }
+TEST(ZemaxErrors, NoSemiDiameter) { expectError(replaced(singlet(), "  DIAM 10\nSURF 3", "SURF 3"), 14, "SURF 2 has no positive semi-diameter"); }
+TEST(ZemaxErrors, ModelGlassWithoutAbbeNumber) { expectError(singlet("  GLAS ___BLANK 1 0 1.5"), 13, "a model glass needs nd >= 1 and Vd >= 0"); }
+TEST(ZemaxErrors, IndexBelowOne) { expectError(singlet("  GLAS F2 0 0 0.5 30"), 13, "nd 0.5 is below 1"); }
+TEST(ZemaxErrors, PrimaryWavelengthMissing) { expectError(singlet("  CONI 0", "WAVM 1 0.55 1\nPWAV 3"), 3, "PWAV 3 names no WAVM wavelength (1..1)"); }
+TEST(ZemaxErrors, AsphereTermOutOfRange) { expectError(singlet("  TYPE EVENASPH\n  PARM 9 1"), 14, "PARM 9 is not one"); }
+TEST(ZemaxErrors, SurfaceLineBeforeAnySurface) { expectError(singlet("  CONI 0", "CURV 0.5"), 2, "CURV before the first SURF"); }
+
+TEST(ZemaxErrors, TooManySurfaces) {
+    std::string text = "MODE SEQ\nSURF 0\n  CURV 0\n  DISZ INFINITY\n";
+    int lines = 4;
+    const auto addLensSurface = [&](int i) {
+        text += "SURF " + std::to_string(i) + "\n" + (i == 1 ? "  STOP\n" : "") + "  CURV 0\n  DISZ 1\n  DIAM 5\n";
+        lines += i == 1 ? 5 : 4;
+    };
+    for (int i = 1; i <= kMaxLensSurfaces; ++i) addLensSurface(i);
+    EXPECT_EQ(parseZemax(text + "SURF 257\n  CURV 0\n", "max.zmx").rows.size(), std::size_t(kMaxLensSurfaces));
+    // SURF 258 is the first that makes 257 lens surfaces (257 being no longer the image).
+    addLensSurface(kMaxLensSurfaces + 1);
+    expectError(text + "SURF 258\n", lines + 1, "too many surfaces: a lens may have at most 256 surfaces");
+}
+
+TEST(ZemaxErrors, BrokenUtf16) {
+    const std::string utf16 = toUtf16(singlet(), true);
+    expectError(utf16 + "x", 21, "odd number of bytes");  // the file's 20 lines end with a newline
+    // A high surrogate followed by a plain character on line 3.
+    std::string broken = utf16;
+    const std::size_t unit = 2 + 2 * singlet().find("UNIT");
+    broken[unit] = '\x00';
+    broken[unit + 1] = '\xd8';
+    expectError(broken, 3, "a high surrogate without a low one");
+    broken[unit + 1] = '\xdc';
+    expectError(broken, 3, "a low surrogate without a high one");
+    expectError(std::string("\xff\xfe\x00\xd8", 4), 1, "a high surrogate without a low one");  // at the very end
+}
