@@ -56,9 +56,10 @@ Medium mediumOf(const LensTable& table, const LensTableRow& r) {
             msg += "; give its nd and Vd instead to use a model glass";
             throw LensTableError(table.name, r.line, msg);
         }
-        // A table's N that disagrees with the glass named beside it is a typo in one of them.
+        // A table's N that disagrees with the glass named beside it is a typo in one of them. A .zmx
+        // file's GLAS line carries whatever nd its writer left there (often a placeholder): its name rules.
         constexpr double kIndexTolerance = 2e-3;
-        if (r.index > 1 && std::fabs(r.index - found.glass->nd) > kIndexTolerance) {
+        if (table.format != "zmx" && r.index > 1 && std::fabs(r.index - found.glass->nd) > kIndexTolerance) {
             std::ostringstream msg;
             msg.precision(6);
             msg << "N " << r.index << " contradicts " << found.glass->name << " (" << found.glass->catalog
@@ -72,7 +73,7 @@ Medium mediumOf(const LensTable& table, const LensTableRow& r) {
             throw LensTableError(table.name, r.line, "an Abbe number needs a refractive index above 1 beside it");
         return modelGlass(r.index, r.abbe);
     }
-    return r.index == 0 ? air() : constantIndex(r.index);
+    return r.index == 0 || r.index == 1 ? air() : constantIndex(r.index);
 }
 
 void checkSagDefined(const LensTable& table, const LensTableRow& r, const Surface& s) {
