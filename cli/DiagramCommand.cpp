@@ -26,14 +26,15 @@ void parseSize(const std::string& text, DiagramOptions& options) {
 
 int runDiagramCommand(const std::vector<std::string>& args) {
     ArgParser p("diagram",
-                "FILE -o OUT.png [--mode exact|thick|overlay] [--fstop N] [--focus MM|inf] [--field MM] [--rays N]\n"
-                "        [--size WxH] [--backend osmesa|egl|auto]",
+                "FILE -o OUT.png [--mode exact|thick|overlay] [--colour] [--fstop N] [--focus MM|inf] [--wavelength NM]\n"
+                "        [--field MM] [--rays N] [--size WxH] [--backend osmesa|egl|auto]",
                 "Draws the lens cross-section (front to the left) with ray fans traced from the film on the axis\n"
                 "and at a field height, the stop at the chosen f-number, F, F', P, P', the pupils and the film,\n"
                 "offscreen with OpenGL, and writes a PNG.");
-    p.positional("FILE", "lens table (.dat)");
+    p.positional("FILE", "lens table (.dat) or Zemax prescription (.zmx)");
     p.option("-o", "OUT.png", "the PNG to write");
     p.option("--mode", "M", "exact (real rays), thick (thick-lens rays) or overlay (both); default exact");
+    p.flag("--colour", "exact fans at the F, d and C lines in blue, yellow and red (the colour spread)");
     declareLensFlags(p);
     p.option("--field", "MM", "film height of the off-axis fan in mm; 0 for the axial fan only (default: automatic)");
     p.option("--rays", "N", "rays per fan (default 9)");
@@ -49,6 +50,7 @@ int runDiagramCommand(const std::vector<std::string>& args) {
     if (p.has("--mode")) options.mode = parseDiagramMode(p.get("--mode"));
     if (p.has("--backend")) options.backend = parseDiagramBackend(p.get("--backend"));
     options.lens = lensFlags(p);
+    options.colourFans = p.has("--colour");
     options.fieldHeight = p.number("--field");
     if (const auto rays = p.integer("--rays")) {
         if (*rays < 1 || *rays > std::numeric_limits<int>::max())

@@ -1,5 +1,5 @@
 // GET /api/lenses/{id}/diagram.png: the lens cross-section drawn on request and cached by its
-// parameters (lens, mode, f-number, focus, field height, size).
+// parameters (lens, mode, f-number, focus, wavelength, colour fans, field height, size).
 #include <cstdio>
 #include <sstream>
 
@@ -38,6 +38,10 @@ DiagramOptions diagramOptions(const httplib::Request& req) {
         throw HttpError(400, e.what());
     }
     o.lens = queryLensSettings(req);
+    if (const auto colour = queryText(req, "colour")) {
+        if (*colour != "0" && *colour != "1") throw HttpError(400, "colour must be 0 or 1");
+        o.colourFans = *colour == "1";
+    }
     o.fieldHeight = queryNumber(req, "field", 0, 100);
     std::tie(o.width, o.height) = diagramSize(req);
     return o;
@@ -48,7 +52,8 @@ std::string cacheKey(const std::string& lensId, const DiagramOptions& o) {
     key.precision(17);
     key << lensId << "|" << static_cast<int>(o.mode) << "|" << (o.lens.fstop ? o.lens.fstop->value : 0.0) << "|"
         << (o.lens.focusDistance ? o.lens.focusDistance->value : std::numeric_limits<double>::infinity())
-        << "|" << (o.fieldHeight ? *o.fieldHeight : -1.0) << "|" << o.width << "x" << o.height;
+        << "|" << (o.fieldHeight ? *o.fieldHeight : -1.0) << "|" << o.width << "x" << o.height << "|"
+        << (o.lens.wavelength ? o.lens.wavelength->value : 0.0) << "|" << o.colourFans;
     return key.str();
 }
 

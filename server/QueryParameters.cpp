@@ -46,6 +46,7 @@ LensSettings queryLensSettings(const httplib::Request& req) {
     LensSettings s;
     if (const auto fstop = queryNumber(req, "fstop", -kAny, kAny)) s.fstop = Setting{*fstop, "query parameter fstop"};
     if (const auto focus = queryDistance(req, "focus", -kAny, kAny)) s.focusDistance = Setting{*focus, "query parameter focus"};
+    if (const auto nm = queryNumber(req, "wavelength", -kAny, kAny)) s.wavelength = Setting{*nm, "query parameter wavelength"};
     return s;
 }
 

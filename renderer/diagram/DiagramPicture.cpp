@@ -26,11 +26,11 @@ const char* modeName(DiagramMode mode) {
     return "";
 }
 
-const char* modeCaption(DiagramMode mode) {
+const char* modeCaption(DiagramMode mode, bool colourFans) {
     switch (mode) {
-        case DiagramMode::Exact: return "exact rays";
+        case DiagramMode::Exact: return colourFans ? "exact rays at F, d, C" : "exact rays";
         case DiagramMode::Thick: return "thick-lens rays";
-        case DiagramMode::Overlay: return "exact and thick-lens rays";
+        case DiagramMode::Overlay: return colourFans ? "exact rays at F, d, C and thick-lens rays" : "exact and thick-lens rays";
     }
     return "";
 }
@@ -153,9 +153,28 @@ struct Composer {
               small, kCardinal, leftEdge ? TextAnchor::Left : TextAnchor::Right);
     }
 
+    static Rgba rayColour(const FanRay& ray) {
+        if (ray.model == RayModel::Thick) return kThickRay;
+        if (ray.wavelength == kWavelengthF) return kLineF;
+        if (ray.wavelength == kWavelengthD) return kLineD;
+        if (ray.wavelength == kWavelengthC) return kLineC;
+        return kExactRay;
+    }
+
+    void mirrors(const LensOutline& outline) {
+        std::vector<Point2> points;
+        for (const auto& line : outline.mirrors) {
+            points.clear();
+            for (const ZY& p : line) points.push_back(at(p));
+            addPolyline(pic.shapes, points, 4 * lw, kMirror);
+        }
+        for (const Obscuration& o : outline.obscurations)
+            addLine(pic.shapes, at({o.z, o.radius}), at({o.z, -o.radius}), 5 * lw, kStop);
+    }
+
     void rays(const std::vector<FanRay>& fans) {
         for (const FanRay& ray : fans) {
-            const Rgba colour = ray.model == RayModel::Exact ? kExactRay : kThickRay;
+            const Rgba colour = rayColour(ray);
             std::vector<Point2> points;
             for (const ZY& p : ray.points) points.push_back(at(p));
             for (const auto& piece : clipPolyline(points, pic.content))
@@ -178,7 +197,7 @@ struct Composer {
         const std::string lens = lensName + "   EFL " + formatFixed(a.firstOrder.efl, 2) + " mm   f/" + formatFNumber(a.fstop);
         const double room = pic.width - pic.content.left;
         label({pic.content.left, 1.35 * em},
-              firstFitting({lens + "   focus " + focus + "   " + modeCaption(options.mode),
+              firstFitting({lens + "   focus " + focus + "   " + modeCaption(options.mode, options.colourFans),
                             lens + "   focus " + focus + "   " + modeName(options.mode), lens},
                            em, room),
               em, kText, TextAnchor::Left);
@@ -213,7 +232,12 @@ struct Composer {
             label({x + 2.2 * small, baseline}, text, small, kText, TextAnchor::Left);
             x += 2.2 * small + textWidth(text, small) + 1.2 * small;
         };
-        if (exact) entry(kExactRay, words[0]);
+        if (exact && options.colourFans) {
+            for (const auto& [colour, name] : {std::pair{kLineF, "F 486 nm"}, {kLineD, "d 588 nm"}, {kLineC, "C 656 nm"}})
+                entry(colour, name);
+        } else if (exact) {
+            entry(kExactRay, words[0]);
+        }
         if (thick) entry(kThickRay, words[1]);
         addCross(pic.shapes, {x + 0.5 * small, mid}, 3.5 * lw, 1.6 * lw, kBlockMark);
         label({x + 1.3 * small, baseline}, words[2], small, kText, TextAnchor::Left);
@@ -294,7 +318,7 @@ DiagramPicture composeDiagram(const LensAnalysis& a, const std::string& lensName
     // where it departs from them.
     if (options.mode != DiagramMode::Exact) pic.rays = traceRayFans(a, RayModel::Thick, setup);
     if (options.mode != DiagramMode::Thick) {
-        std::vector<FanRay> exact = traceRayFans(a, RayModel::Exact, setup);
+        std::vector<FanRay> exact = options.colourFans ? traceColourFans(a, setup) : traceRayFans(a, RayModel::Exact, setup);
         pic.rays.insert(pic.rays.end(), exact.begin(), exact.end());
     }
 
@@ -311,6 +335,7 @@ DiagramPicture composeDiagram(const LensAnalysis& a, const std::string& lensName
         if (m->kind == Marker::PrincipalPlane) c.principalPlane(m->z, planeHalf, m->name);
     c.axis();
     c.lensLines(outline);
+    c.mirrors(outline);
     c.stop(outline.stop);
     c.film(filmZ, filmHalf);
     c.rays(pic.rays);

@@ -14,6 +14,12 @@ constexpr Rgba kCardinal{165, 35, 140, 255};       // F, F', P, P'
 constexpr Rgba kPupil{20, 140, 70, 255};
 constexpr Rgba kExactRay{25, 95, 215, 255};        // blue
 constexpr Rgba kThickRay{235, 115, 10, 255};       // orange
+constexpr Rgba kMirror{70, 70, 80, 255};           // a reflecting surface, drawn heavy
+// The Fraunhofer lines' fans: F (486 nm) cyan-blue, d (588 nm) a yellow dark enough on white, C
+// (656 nm) red; each far enough from the exact rays' blue and the block mark's red to be told apart.
+constexpr Rgba kLineF{0, 150, 190, 255};
+constexpr Rgba kLineD{185, 150, 0, 255};
+constexpr Rgba kLineC{235, 45, 0, 255};
 constexpr Rgba kBlockMark{205, 25, 25, 255};       // the cross where a ray is stopped
 constexpr Rgba kText{25, 25, 25, 255};
 constexpr Rgba kNote{95, 95, 95, 255};

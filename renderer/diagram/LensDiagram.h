@@ -20,6 +20,7 @@ struct DiagramOptions {
     LensSettings lens;                  // aperture and focus (default: widest, at infinity)
     std::optional<double> fieldHeight;  // mm on the film for the off-axis fan; nullopt: automatic
     int rays = 9;                       // rays per fan
+    bool colourFans = false;            // exact fans at the F, d and C lines, in their colours
     int width = 1200, height = 600;     // pixels
     DiagramBackendKind backend = DiagramBackendKind::OSMesa;
 };

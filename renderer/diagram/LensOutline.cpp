@@ -57,8 +57,10 @@ LensOutline buildLensOutline(const LensSystem& lens) {
     for (int i = 0; i < n; ++i) {
         const Surface& s = lens.surfaces[i];
         out.maxRadius = std::max(out.maxRadius, s.apertureRadius);
-        if (s.isStop) continue;
-        out.lines.push_back(arc(s));
+        if (s.obscurationRadius > 0) out.obscurations.push_back({s.z - sag(s, s.obscurationRadius), s.obscurationRadius});
+        // A stop on a flat surface between two airs is a diaphragm only: the blades show it.
+        if (s.isStop && s.vertexCurvature() == 0 && !s.mirror && s.indexAfter == lens.indexBefore(i)) continue;
+        (s.mirror ? out.mirrors : out.lines).push_back(arc(s));
         if (s.indexAfter != 1.0 && i + 1 < n) out.glass.push_back(element(s, lens.surfaces[i + 1], out.lines));
     }
     // The blades reach past the neighbouring elements so the stop reads as a diaphragm.

@@ -25,9 +25,17 @@ struct StopBlades {
     double outerRadius = 0;    // where the blades end in the drawing
 };
 
+// A central obscuration (a reflex lens's secondary mirror mount) drawn as a bar across the axis.
+struct Obscuration {
+    double z = 0;
+    double radius = 0;
+};
+
 struct LensOutline {
     std::vector<GlassElement> glass;
-    std::vector<std::vector<ZY>> lines;  // arcs, flat steps and edges
+    std::vector<std::vector<ZY>> lines;    // arcs, flat steps and edges
+    std::vector<std::vector<ZY>> mirrors;  // reflecting surfaces' arcs
+    std::vector<Obscuration> obscurations;
     StopBlades stop;
     double maxRadius = 0;                // largest clear aperture, stop blades included
 };

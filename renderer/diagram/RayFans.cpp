@@ -78,11 +78,27 @@ std::vector<FanRay> traceRayFans(const LensAnalysis& analysis, RayModel model, c
     return rays;
 }
 
+std::vector<FanRay> traceColourFans(const LensAnalysis& analysis, const FanSetup& setup) {
+    std::vector<FanRay> rays;
+    LensAnalysis atLine = analysis;
+    for (double nm : {kWavelengthC, kWavelengthD, kWavelengthF}) {
+        atLine.lens = atWavelength(analysis.lens, nm);
+        for (FanRay& ray : traceRayFans(atLine, RayModel::Exact, setup)) {
+            ray.wavelength = nm;
+            rays.push_back(std::move(ray));
+        }
+    }
+    return rays;
+}
+
 double automaticFieldHeight(const LensAnalysis& analysis, double filmZ) {
     const double exitZ = analysis.pupils.exit.z;
+    // A reflex lens's obscuration takes every chief ray: the field is set by the rims.
+    TraceOptions options;
+    options.ignoreObscurations = true;
     auto chiefPasses = [&](double h) {
         const Ray r = filmRay({filmZ, -h}, {exitZ, 0});
-        return traceRay(analysis.lens, r, TraceDirection::FilmToScene).ok();
+        return traceRay(analysis.lens, r, TraceDirection::FilmToScene, options).ok();
     };
     // March out to the first blocked height, then bisect the edge.
     const double step = 0.02 * std::abs(analysis.firstOrder.efl);

@@ -16,6 +16,7 @@ struct FanRay {
     RayModel model = RayModel::Exact;
     bool offAxis = false;    // from the field point rather than the axis
     bool blocked = false;    // the last point is where the lens stopped it
+    double wavelength = 0;   // nm, for the F, d and C fans; 0: the analysis's own wavelength
 };
 
 struct FanSetup {
@@ -29,6 +30,10 @@ struct FanSetup {
 constexpr double kFanOverfill = 1.2;
 
 std::vector<FanRay> traceRayFans(const LensAnalysis& analysis, RayModel model, const FanSetup& setup);
+
+// The exact fans at the F, d and C lines (the same film points, each line's indices), so the colour
+// spread shows where they leave the lens.
+std::vector<FanRay> traceColourFans(const LensAnalysis& analysis, const FanSetup& setup);
 
 // Film height for the off-axis fan when none is given: 70% of the largest height whose chief ray
 // (aimed at the centre of the exit pupil) still passes the real lens.

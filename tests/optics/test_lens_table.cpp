@@ -168,7 +168,7 @@ TEST(LensTable, BundledTablesMatchThePublishedFigures) {
         lenses.insert(lens);
         ++checked;
     }
-    EXPECT_EQ(checked, 16);
+    EXPECT_EQ(checked, 18);
     for (const auto& e : std::filesystem::directory_iterator(dir))
         if (e.path().extension() == ".dat" || e.path().extension() == ".zmx") {
             EXPECT_TRUE(lenses.count(e.path().stem().string())) << e.path() << " has no published figure";

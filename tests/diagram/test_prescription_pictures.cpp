@@ -1,0 +1,91 @@
+// Diagrams of real prescriptions, read back as pixels: the F, d and C fans in their colours, an
+// asphere drawn along its true profile (not its base sphere), mirrors and a central obscuration.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "DiagramStyle.h"
+#include "DiagramTestSupport.h"
+
+namespace lenslab::test {
+namespace {
+
+using namespace diagram_style;
+
+int pixelsShowing(const RgbaImage& image, Rgba colour) {
+    int count = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            count += showsColour(pixelAt(image, {double(x), double(y)}), colour, 0.6);
+    return count;
+}
+
+// Whether `colour` shows within a pixel of p.
+bool showsNear(const RgbaImage& image, Point2 p, Rgba colour) {
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            if (showsColour(pixelAt(image, {p.x + dx, p.y + dy}), colour, 0.5)) return true;
+    return false;
+}
+
+LensSystem lensFile(const std::string& relative) { return loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/" + relative); }
+
+}  // namespace
+
+TEST(PrescriptionPictures, ColourFansDrawTheThreeLinesAndOnlyWhenAsked) {
+    const LensSystem lens = lensFile("lenses/us2015-0092100-ex1-55mm.zmx");
+    DiagramOptions o;
+    o.lens.fstop = Setting{2.8, "test"};
+    o.colourFans = true;
+    const RgbaImage colour = renderDiagram(lens, o);
+    // Drawn C, d, F: where the fans coincide F covers the others; they show where the glass spreads
+    // them, d (between the two) least.
+    EXPECT_GT(pixelsShowing(colour, kLineF), 1000);
+    EXPECT_GT(pixelsShowing(colour, kLineC), 15);
+    EXPECT_GT(pixelsShowing(colour, kLineD), 15);
+    EXPECT_LT(pixelsShowing(colour, kExactRay), 50);  // the legend's colours only, no plain exact rays
+    o.colourFans = false;
+    const RgbaImage plain = renderDiagram(lens, o);
+    EXPECT_GT(pixelsShowing(plain, kExactRay), 1000);
+    EXPECT_EQ(pixelsShowing(plain, kLineC), 0);
+}
+
+TEST(PrescriptionPictures, AnAsphereIsDrawnAlongItsTrueProfile) {
+    // Biconvex lens whose front is a strong even asphere: at 14 mm its sag is 0.6 mm less than its
+    // base sphere's, about 9 pixels in this picture.
+    LensTable t = parseLensTable("40 6 1.6 30\n-120 2 0 30\n0 30 0 20\n", "asphere.dat", TableLayout::GapAfter);
+    t.rows[0].conic = -0.8;
+    t.rows[0].aspheric = {0, -2e-5, 3e-8, -1e-11, 0, 0, 0, 0};
+    const LensSystem lens = buildLensSystem(t);
+    DiagramOptions o;
+    o.fieldHeight = 0.0;
+    const DiagramPicture picture = layoutDiagram(lens, o);
+    const RgbaImage image = renderDiagram(lens, o);
+    Surface sphere = lens.surfaces[0];
+    sphere.conic = 0;
+    sphere.aspheric = {};
+    const double h = 14;
+    const Point2 onAsphere = picture.view.toPicture({-sag(lens.surfaces[0], h), h});
+    const Point2 onSphere = picture.view.toPicture({-sag(sphere, h), h});
+    ASSERT_GT(std::fabs(onAsphere.x - onSphere.x), 6);
+    EXPECT_TRUE(showsNear(image, onAsphere, kLensLine));
+    EXPECT_FALSE(showsNear(image, onSphere, kLensLine));
+}
+
+TEST(PrescriptionPictures, MirrorsAndTheObscurationAreDrawn) {
+    const LensSystem lens = lensFile("tests/optics/data/cassegrain-obscured.zmx");
+    DiagramOptions o;
+    const DiagramPicture picture = layoutDiagram(lens, o);
+    const RgbaImage image = renderDiagram(lens, o);
+    // The primary mirror's arc at half its height, heavy and grey.
+    const Surface& primary = lens.surfaces[1];
+    ASSERT_TRUE(primary.mirror);
+    const double h = 0.5 * primary.apertureRadius;
+    EXPECT_TRUE(showsNear(image, picture.view.toPicture({primary.z - sag(primary, h), h}), kMirror));
+    // The obscuration: a dark bar across the axis on the first surface, 15 mm either side.
+    const Surface& window = lens.surfaces[0];
+    ASSERT_EQ(window.obscurationRadius, 15);
+    for (double y : {-10.0, 10.0}) EXPECT_TRUE(showsNear(image, picture.view.toPicture({window.z, y}), kStop)) << y;
+}
+
+}  // namespace lenslab::test
