@@ -169,6 +169,22 @@ LensTable parseLensTable(const std::string& text, const std::string& name,
     return table;
 }
 
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+bool isLensFileName(const std::string& name) { return endsWith(name, ".dat") || endsWith(name, ".zmx"); }
+
+std::string lensFileStem(const std::string& name) {
+    std::string base = name.substr(name.find_last_of('/') + 1);
+    if (isLensFileName(base)) base.resize(base.size() - 4);
+    return base;
+}
+
 LensTable readLensTable(const std::string& path, std::optional<TableLayout> layout) {
     std::ifstream f(path, std::ios::binary);
     if (!f) throw LensTableError(path, 0, "cannot open the file");

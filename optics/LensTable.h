@@ -85,6 +85,11 @@ private:
 LensTable parseLensTable(const std::string& text, const std::string& name,
                          std::optional<TableLayout> layout = std::nullopt);
 
+// Whether a file name is a lens prescription lenslab reads (".dat" tables, ".zmx" Zemax files), and
+// its name without that extension ("lenses/dgauss.50mm.dat" -> "dgauss.50mm").
+bool isLensFileName(const std::string& name);
+std::string lensFileStem(const std::string& name);
+
 // Reads and parses a file. Throws LensTableError (also for unreadable files).
 LensTable readLensTable(const std::string& path, std::optional<TableLayout> layout = std::nullopt);
 

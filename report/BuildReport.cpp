@@ -32,12 +32,12 @@ std::vector<LensSource> resolveLenses(const ReportOptions& o) {
     if (o.lenses.empty()) {
         std::error_code ec;
         for (fs::directory_iterator it(o.lensDir, ec), end; !ec && it != end; it.increment(ec))
-            if (it->path().extension() == ".dat") lenses.push_back({it->path().stem().string(), it->path().string()});
+            if (isLensFileName(it->path().string())) lenses.push_back({it->path().stem().string(), it->path().string()});
         std::sort(lenses.begin(), lenses.end(), [](const LensSource& a, const LensSource& b) { return a.id < b.id; });
     }
     for (const std::string& name : o.lenses) {
-        const fs::path asId = fs::path(o.lensDir) / (name + ".dat");
-        const fs::path path = fs::is_regular_file(asId) ? asId : fs::path(name);
+        const fs::path table = fs::path(o.lensDir) / (name + ".dat"), zemax = fs::path(o.lensDir) / (name + ".zmx");
+        const fs::path path = fs::is_regular_file(table) ? table : fs::is_regular_file(zemax) ? zemax : fs::path(name);
         if (!fs::is_regular_file(path))
             throw std::runtime_error("lens '" + name + "' is neither a bundled lens id nor a lens table file");
         lenses.push_back({path.stem().string(), path.string()});

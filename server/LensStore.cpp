@@ -105,7 +105,7 @@ void LensStore::loadBundled(const std::string& folder) {
     std::error_code ec;
     std::vector<fs::path> files;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
-        if (it->path().extension() == ".dat" && isSafeIdentifier(it->path().stem().string()))
+        if (isLensFileName(it->path().string()) && isSafeIdentifier(it->path().stem().string()))
             files.push_back(it->path());
     std::sort(files.begin(), files.end());
     for (const fs::path& file : files) {

@@ -173,14 +173,27 @@ function scheduleUpdate() {
   state.updateTimer = setTimeout(updateLensView, 150);
 }
 
-const lensQuery = () => `fstop=${fstopParameter()}&focus=${currentFocus()}`;
+// The wavelength box: empty is the lens's own primary wavelength; out-of-range values are marked and
+// nothing is asked for until they are corrected (null).
+function wavelengthParameter() {
+  const input = $("wavelength");
+  const text = input.value.trim();
+  const nm = Number(text);
+  const ok = text === "" || (isFinite(nm) && nm >= 360 && nm <= 830);
+  input.setAttribute("aria-invalid", String(!ok));
+  $("wavelength-note").classList.toggle("bad", !ok);
+  return !ok ? null : text !== "" ? `&wavelength=${nm}` : "";
+}
+
+const lensQuery = () => `fstop=${fstopParameter()}&focus=${currentFocus()}${wavelengthParameter()}`;
+const colourParameter = () => ($("colour-fans").checked ? "&colour=1" : "");
 
 async function updateLensView() {
-  if (!state.lensId) return;
+  if (!state.lensId || wavelengthParameter() === null) return;
   const id = encodeURIComponent(state.lensId);
   const request = ++state.dataRequest;
   $("diagram-status").textContent = "Drawing the diagram…";
-  loadDiagram(`/api/lenses/${id}/diagram.png?mode=${currentMode()}&${lensQuery()}&size=1000x500`, request);
+  loadDiagram(`/api/lenses/${id}/diagram.png?mode=${currentMode()}&${lensQuery()}${colourParameter()}&size=1000x500`, request);
   try {
     const lens = await api(`/api/lenses/${id}?${lensQuery()}`);
     if (request !== state.dataRequest) return;
@@ -252,7 +265,36 @@ function showLensData(lens) {
     ["Film z, thick-lens model", fixed(lens.focus.image_z_thick)],
     ["Exact − thick", fixed(lens.focus.image_z_difference, 4)],
   ];
-  const body = $("lens-data").tBodies[0];
+  fillRows("lens-data", rows);
+  showColour(lens);
+  const surfaces = $("lens-surfaces").tBodies[0];
+  surfaces.replaceChildren();
+  lens.surfaces.forEach((s, i) => {
+    const tr = surfaces.insertRow();
+    const name = i + (s.is_stop ? " (stop)" : "") + (s.mirror ? " mirror" : "");
+    const glass = s.mirror ? "" : s.glass === "air" ? "" : s.glass + (s.catalog ? ` (${s.catalog})` : "");
+    const terms = (s.aspheric || []).map((a, k) => (a ? `r${2 * k + 2}: ${a.toExponential(4)}` : "")).filter(Boolean).join(", ");
+    for (const v of [name, fixed(s.z), s.radius === 0 ? "flat" : fixed(s.radius), fixed(s.n, 5), fixed(s.diameter, 2), glass,
+                     s.mirror || s.n === 1 ? "" : fixed(s.nd, 5), s.vd ? fixed(s.vd, 2) : "", s.conic ? fixed(s.conic, 4) : "", terms])
+      tr.insertCell().textContent = v;
+  });
+}
+
+function showColour(lens) {
+  const c = lens.chromatic;
+  const rows = [
+    ["Wavelength of the data above", `${fixed(lens.wavelength_nm, 2)} nm` + (lens.dispersive ? "" : " (no dispersion: one index per glass)")],
+    ["EFL at F, d, C", `${fixed(c.efl_F)}, ${fixed(c.efl_d)}, ${fixed(c.efl_C)}`],
+    ["Image z at F, d, C", `${fixed(c.image_z_F)}, ${fixed(c.image_z_d)}, ${fixed(c.image_z_C)}`],
+    ["Longitudinal colour (C − F)", fixed(c.longitudinal_colour_mm, 4)],
+    [`Lateral colour (F − C) at ${fixed(c.lateral_colour_field_deg, 1)}°`, fixed(c.lateral_colour_mm, 4)],
+  ];
+  fillRows("lens-colour", rows);
+}
+
+// A two-column table of [name, value] rows.
+function fillRows(tableId, rows) {
+  const body = $(tableId).tBodies[0];
   body.replaceChildren();
   for (const [name, value] of rows) {
     const tr = body.insertRow();
@@ -261,13 +303,6 @@ function showLensData(lens) {
     tr.append(th);
     tr.insertCell().textContent = value;
   }
-  const surfaces = $("lens-surfaces").tBodies[0];
-  surfaces.replaceChildren();
-  lens.surfaces.forEach((s, i) => {
-    const tr = surfaces.insertRow();
-    for (const v of [i + (s.is_stop ? " (stop)" : ""), fixed(s.z), s.radius === 0 ? "flat" : fixed(s.radius), fixed(s.n, 4), fixed(s.diameter, 2)])
-      tr.insertCell().textContent = v;
-  });
 }
 
 async function deleteLens() {
@@ -317,6 +352,8 @@ export function setUpLensPanel() {
     scheduleUpdate();
   });
   for (const radio of document.querySelectorAll('input[name="mode"]')) radio.addEventListener("change", scheduleUpdate);
+  $("colour-fans").addEventListener("change", scheduleUpdate);
+  $("wavelength").addEventListener("input", scheduleUpdate);
   $("lens-controls").addEventListener("submit", (e) => e.preventDefault());
   $("delete-lens").addEventListener("click", deleteLens);
   document.addEventListener("keydown", onKey);

@@ -16,15 +16,6 @@ namespace {
 constexpr int kMinWidth = 320, kMinHeight = 200, kMaxSide = 8192;
 constexpr int kMaxRays = 201;
 
-// "lenses/dgauss.50mm.dat" -> "dgauss.50mm".
-std::string displayName(const std::string& name) {
-    std::string base = name.substr(name.find_last_of('/') + 1);
-    const std::string suffix = ".dat";
-    if (base.size() > suffix.size() && base.compare(base.size() - suffix.size(), suffix.size(), suffix) == 0)
-        base.resize(base.size() - suffix.size());
-    return base;
-}
-
 void validate(const DiagramOptions& o) {
     if (o.width < kMinWidth || o.height < kMinHeight || o.width > kMaxSide || o.height > kMaxSide)
         throw DiagramError("diagram size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
@@ -55,7 +46,7 @@ DiagramBackendKind parseDiagramBackend(const std::string& name) {
 std::vector<std::uint8_t> drawLensDiagramPng(const LensSystem& lens, const DiagramOptions& options) {
     validate(options);
     const LensAnalysis analysis = analyzeLens(lens, options.lens);
-    const DiagramPicture picture = composeDiagram(analysis, displayName(lens.name), options);
+    const DiagramPicture picture = composeDiagram(analysis, lensFileStem(lens.name), options);
     std::vector<std::uint8_t> pixels = CanvasLease(options.backend)
                                            .canvas()
                                            .rasterise(picture.shapes, picture.width, picture.height, diagram_style::kBackground);

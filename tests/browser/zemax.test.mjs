@@ -1,0 +1,110 @@
+// Browser test of a real prescription on the web page: a Zemax file, saved as UTF-16 with a byte
+// order mark as Zemax writes it, is uploaded through the file picker; the page shows its glasses,
+// conics and aspheric terms, the colour block with the numbers the API gives, and a diagram whose
+// colour fans (F, d, C) appear when the box is ticked. A wavelength outside 360-830 nm is marked in
+// its field and never sent. Screenshot: tests/browser/artifacts/zemax-lens.png.
+// usage: node zemax.test.mjs LENSLAB_BINARY SOURCE_DIR
+import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { dirname, join } from "node:path";
+import { fileURLToPath } from "node:url";
+import { launchBrowser, startServer, stopServer } from "./serve.mjs";
+
+const [binary, sourceDir] = process.argv.slice(2);
+if (!binary || !sourceDir) {
+  console.error("usage: node zemax.test.mjs LENSLAB_BINARY SOURCE_DIR");
+  process.exit(2);
+}
+const artifacts = join(dirname(fileURLToPath(import.meta.url)), "artifacts");
+mkdirSync(artifacts, { recursive: true });
+const work = mkdtempSync(join(tmpdir(), "lenslab-zemax-"));
+
+function check(condition, message) {
+  if (!condition) throw new Error("check failed: " + message);
+  console.log("ok -", message);
+}
+
+// Pixels of the diagram image close to an RGB colour (the C line's red: 235, 45, 0).
+const diagramPixelsNear = (page, rgb) => page.$eval("#diagram", (img, rgb) => {
+  const canvas = document.createElement("canvas");
+  canvas.width = img.naturalWidth;
+  canvas.height = img.naturalHeight;
+  const ctx = canvas.getContext("2d");
+  ctx.drawImage(img, 0, 0);
+  const data = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
+  let count = 0;
+  for (let i = 0; i < data.length; i += 4)
+    if (Math.abs(data[i] - rgb[0]) < 25 && Math.abs(data[i + 1] - rgb[1]) < 25 && Math.abs(data[i + 2] - rgb[2]) < 25) ++count;
+  return count;
+}, rgb);
+
+async function main() {
+  const source = readFileSync(join(sourceDir, "lenses", "us2015-0092100-ex1-55mm.zmx"), "utf8");
+  const upload = join(work, "sony-55.zmx");
+  writeFileSync(upload, Buffer.from("\ufeff" + source, "utf16le"));
+  const { server, base } = await startServer(binary, work);
+  const context = await launchBrowser({ width: 1280, height: 900 });
+  const page = context.pages()[0] || await context.newPage();
+  const diagramUrls = [];
+  try {
+    page.setDefaultTimeout(30000);
+    page.on("request", (r) => { if (r.url().includes("/diagram.png")) diagramUrls.push(r.url()); });
+    await page.goto(base);
+    await page.waitForSelector("body[data-ready]");
+    await page.setInputFiles("#lens-file", upload);
+    await page.waitForFunction(() => document.querySelector("#lens-title").textContent.startsWith("upload-"));
+    await page.waitForSelector("#message.info");
+    // The uploaded lens's own tables (not the previous lens's): its model glasses show.
+    await page.waitForFunction(() => document.querySelector("#lens-surfaces tbody").textContent.includes("model 1.58144"));
+    const id = await page.textContent("#lens-title");
+
+    const surfaces = await page.$$eval("#lens-surfaces tbody tr", (rows) => rows.map((r) => [...r.cells].map((c) => c.textContent)));
+    check(surfaces.length === 15, `the UTF-16 .zmx upload reads 15 surfaces (got ${surfaces.length})`);
+    const aspheric = surfaces.filter((cells) => cells[9].includes("r4:"));
+    check(aspheric.length === 5, `five surfaces list their aspheric terms (got ${aspheric.length})`);
+    check(surfaces.some((cells) => cells[5].startsWith("model 1.58144/40.9")), "model glasses are named by nd/Vd");
+
+    const api = await (await page.request.get(`${base}api/lenses/${id}?fstop=${await page.inputValue("#fstop-input")}&focus=inf`)).json();
+    if (api.efl === undefined) throw new Error("the lens API answered " + JSON.stringify(api));
+    check(Math.abs(api.efl - 53.61) < 0.005, `the API's EFL ${api.efl.toFixed(4)} is the patent's 53.61`);
+    const colour = Object.fromEntries(await page.$$eval("#lens-colour tbody tr", (rows) => rows.map((r) => [r.cells[0].textContent, r.querySelector("td").textContent])));
+    const longitudinal = Number(colour["Longitudinal colour (C − F)"]);
+    check(Math.abs(longitudinal - api.chromatic.longitudinal_colour_mm) < 1e-4 && longitudinal !== 0,
+          `the page's longitudinal colour ${longitudinal} mm is the API's`);
+    check(colour["EFL at F, d, C"].split(", ").map(Number).every((v, k) => Math.abs(v - [api.chromatic.efl_F, api.chromatic.efl_d, api.chromatic.efl_C][k]) < 1e-3),
+          `EFL at F, d, C: ${colour["EFL at F, d, C"]}`);
+
+    await page.waitForFunction(() => { const img = document.querySelector("#diagram"); return img.src.startsWith("blob:") && img.complete && img.naturalWidth > 0; });
+    const plainRed = await diagramPixelsNear(page, [235, 45, 0]);
+    const before = diagramUrls.length;
+    const oldSrc = await page.getAttribute("#diagram", "src");
+    const answered = page.waitForResponse((r) => r.url().includes("colour=1"));
+    await page.check("#colour-fans");
+    await answered;
+    await page.waitForFunction((old) => { const img = document.querySelector("#diagram"); return img.src !== old && img.complete && img.naturalWidth > 0; }, oldSrc);
+    const colourRed = await diagramPixelsNear(page, [235, 45, 0]);
+    check(diagramUrls.slice(before).some((u) => u.includes("colour=1")), "ticking the box asks for the colour fans");
+    check(plainRed === 0 && colourRed > 20, `C-line red pixels in the diagram: ${plainRed} plain, ${colourRed} with colour fans`);
+
+    await page.fill("#wavelength", "486.1327");
+    await page.waitForFunction(() => document.querySelector("#lens-colour tbody").textContent.includes("486.13 nm"));
+    const efl = Number(await page.$eval("#lens-data tbody tr td", (td) => td.textContent));
+    check(Math.abs(efl - api.chromatic.efl_F) < 1e-3, `at 486.13 nm the first-order table shows the F line's EFL ${efl}`);
+    const sent = diagramUrls.length;
+    await page.fill("#wavelength", "1550");
+    await page.waitForTimeout(600);
+    check(await page.getAttribute("#wavelength", "aria-invalid") === "true", "1550 nm is marked invalid in its field");
+    check(diagramUrls.length === sent, "and nothing is asked for while it is invalid");
+    check((await page.textContent("#lens-colour tbody")).includes("486.13 nm"), "the data stay those of the last valid wavelength");
+    await page.screenshot({ path: join(artifacts, "zemax-lens.png"), fullPage: true });
+  } finally {
+    await context.close();
+    await stopServer(server);
+    rmSync(work, { recursive: true, force: true });
+  }
+}
+
+main().catch((e) => {
+  console.error(e);
+  process.exit(1);
+});
