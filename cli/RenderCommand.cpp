@@ -129,6 +129,7 @@ RenderSettings renderSettings(const ArgParser& p) {
     const LensSettings flags = lensFlags(p);
     s.camera.fstop = flags.fstop;
     s.camera.focusDistance = flags.focusDistance;
+    s.camera.wavelength = flags.wavelength;
     if (auto v = p.number("--filmdiag")) s.camera.filmDiagonal = *v;
     if (p.has("--mode")) s.camera.mode = p.get("--mode");
     return s;

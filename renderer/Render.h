@@ -22,6 +22,7 @@ struct CameraOverrides {
     std::optional<TableLayout> lensLayout; // the layout lensFile was checked with (uploads)
     std::optional<Setting> fstop;
     std::optional<Setting> focusDistance;  // front vertex to the plane of focus
+    std::optional<Setting> wavelength;     // nm: the lens traced at one wavelength (default its primary)
     std::optional<double> filmDiagonal;
     std::optional<std::string> mode;       // "exact" | "thick" | "auto"
 };

@@ -133,6 +133,7 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
         s.focusDistance = Setting{distance, s.filmDistance->source + " (where the scene's own lens focuses)"};
         s.filmDistance.reset();
     }
+    s.wavelength = o.wavelength;
     const double sceneDiagonal = p.has("filmdiag") ? p.getFloat("filmdiag", 35) : p.getFloat("filmdiagonal", scene.film.diagonalMm);
     r.filmDiagonalMm = o.filmDiagonal.value_or(sceneDiagonal);
     const std::string mode = o.mode.value_or(p.getString("mode", "exact"));
@@ -173,7 +174,7 @@ std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverride
                                    double filmMarginPixels, const std::atomic<bool>* cancel) {
     const ParamSet& p = scene.camera.params;
     if (scene.camera.type == "realistic") return makeRealistic(scene, o, width, height, filmMarginPixels, cancel);
-    if (o.lensFile || o.fstop || o.focusDistance || o.filmDiagonal || o.mode)
+    if (o.lensFile || o.fstop || o.focusDistance || o.wavelength || o.filmDiagonal || o.mode)
         throw SceneError(scene.file + ": the lens overrides need a Camera \"realistic\"; this scene has a " +
                          scene.camera.type + " camera");
     if (scene.camera.type == "environment") {
