@@ -15,12 +15,8 @@ constexpr double kTwoPi = 6.28318530717958647692;
 // for a distant object the plane through the origin across the incoming light) to the sphere.
 class OpticalPaths {
 public:
-    OpticalPaths(const LensSystem& lens, const FieldAim& aim) : lens_(lens), aim_(aim) {}
-
-    void setSphere(Vec3 centre, double radius) {
-        centre_ = centre;
-        radius_ = radius;
-    }
+    OpticalPaths(const LensSystem& lens, const FieldAim& aim, Vec3 centre, double radius)
+        : lens_(lens), aim_(aim), centre_(centre), radius_(radius) {}
 
     // The path of the ray through pupil point (px, py), with the ray leaving the lens; nullopt when blocked.
     std::optional<double> toSphere(double px, double py, bool ignoreApertures = false) {
@@ -32,7 +28,6 @@ public:
         options.ignoreApertures = ignoreApertures;
         const TraceResult out = traceRay(lens_, *in, TraceDirection::SceneToFilm, options);
         if (!out.ok()) return std::nullopt;
-        lastRay_ = out.ray;
         double opl = std::isinf(aim_.field.objectZ) ? dot(in->direction, in->origin) : 0.0;
         for (std::size_t k = 0; k + 1 < path_.size(); ++k)
             opl += lens_.indexBefore(static_cast<int>(k)) * length(path_[k + 1] - path_[k]);
@@ -44,15 +39,13 @@ public:
         if (!(disc >= 0)) return std::nullopt;
         return opl + lens_.surfaces.back().indexAfter * (-b - std::sqrt(disc));
     }
-    const Ray& lastRay() const { return lastRay_; }
 
 private:
     const LensSystem& lens_;
     const FieldAim& aim_;
     Vec3 centre_;
-    double radius_ = 0;
+    double radius_;
     std::vector<Vec3> path_;
-    Ray lastRay_;
 };
 
 }  // namespace
@@ -69,14 +62,16 @@ std::optional<WavefrontMap> wavefrontMap(const LensSystem& lens, const FieldAim&
     if (!aperture || aperture->x == 0 || aperture->y == 0) return std::nullopt;
     map.aperture = *aperture;
 
-    OpticalPaths paths(lens, aim);
-    paths.setSphere({0, 0, 0}, 0);
-    if (!paths.toSphere(0, 0, true)) return std::nullopt;
-    const Ray chief = paths.lastRay();
-    const std::optional<Vec3> centre = pointOnPlane(chief, imageZ), pupil = pointOnPlane(chief, exitPupilZ);
+    const std::optional<Ray> chiefIn = aimedRay(lens, aim, 0, 0);
+    if (!chiefIn) return std::nullopt;
+    TraceOptions unclipped;
+    unclipped.ignoreApertures = true;
+    const TraceResult chief = traceRay(lens, *chiefIn, TraceDirection::SceneToFilm, unclipped);
+    if (!chief.ok()) return std::nullopt;
+    const std::optional<Vec3> centre = pointOnPlane(chief.ray, imageZ), pupil = pointOnPlane(chief.ray, exitPupilZ);
     if (!centre || !pupil) return std::nullopt;
     map.chiefImage = {centre->x, centre->y};
-    paths.setSphere(*centre, length(*centre - *pupil));
+    OpticalPaths paths(lens, aim, *centre, length(*centre - *pupil));
     const std::optional<double> chiefPath = paths.toSphere(0, 0, true);
     if (!chiefPath) return std::nullopt;
 
