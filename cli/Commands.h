@@ -6,6 +6,7 @@
 namespace lenslab {
 
 int runLensCommand(const std::vector<std::string>& args);
+int runAnalyzeCommand(const std::vector<std::string>& args);
 int runDiagramCommand(const std::vector<std::string>& args);
 int runServeCommand(const std::vector<std::string>& args);
 int runRenderCommand(const std::vector<std::string>& args);

@@ -12,19 +12,6 @@ namespace lenslab {
 
 namespace {
 
-// The paraxial image of the axial point at objectZ: near-axis rays from it (or parallel to the axis,
-// for an object at infinity) cross the axis there in the limit of small heights.
-double paraxialImageZ(const LensSystem& lens, const FirstOrder& fo, double objectZ) {
-    if (std::isinf(objectZ)) return fo.zFPrime;
-    const double zVertex = lens.frontZ();
-    return paraxialLimit(
-        [&](double y) {
-            const Ray in{{0, 0, objectZ}, normalize(Vec3{0, y, zVertex - objectZ})};
-            return axisCrossingZ(traceNearAxis(lens, in, TraceDirection::SceneToFilm));
-        },
-        nearAxisHeight(lens));
-}
-
 // Height of the chief ray of a field on the plane z; with `clipped`, only when it passes every clear
 // aperture.
 std::optional<double> chiefHeight(const LensSystem& lens, double fieldDegrees, double z, bool clipped = true) {
@@ -37,10 +24,25 @@ std::optional<double> chiefHeight(const LensSystem& lens, double fieldDegrees, d
     return heightAtZ(out.ray, z);
 }
 
-// The largest field angle (below 85 degrees) whose chief ray at the lens's wavelength passes:
-// bisection between a passing and a failing field.
-double largestField(const LensSystem& lens, double z) {
+}  // namespace
+
+double paraxialImageZ(const LensSystem& lens, const FirstOrder& fo, double objectZ) {
+    // Near-axis rays from the object (or parallel to the axis, for an object at infinity) cross the
+    // axis there in the limit of small heights.
+    if (std::isinf(objectZ)) return fo.zFPrime;
+    const double zVertex = lens.frontZ();
+    return paraxialLimit(
+        [&](double y) {
+            const Ray in{{0, 0, objectZ}, normalize(Vec3{0, y, zVertex - objectZ})};
+            return axisCrossingZ(traceNearAxis(lens, in, TraceDirection::SceneToFilm));
+        },
+        nearAxisHeight(lens));
+}
+
+double largestChiefRayField(const LensSystem& lens) {
+    // Bisection between a passing and a failing field.
     constexpr double kWidest = 85.0;
+    const double z = lens.rearZ();
     if (chiefHeight(lens, kWidest, z)) return kWidest;
     double lo = 0, hi = kWidest;
     for (int it = 0; it < 20; ++it) {
@@ -49,8 +51,6 @@ double largestField(const LensSystem& lens, double z) {
     }
     return lo;
 }
-
-}  // namespace
 
 Chromatic computeChromatic(const LensSystem& lens, double objectZ) {
     Chromatic out;
@@ -73,7 +73,7 @@ Chromatic computeChromatic(const LensSystem& lens, double objectZ) {
     out.imageZD = paraxialImageZ(d, foD, objectZ);
     out.imageZC = paraxialImageZ(c, foC, objectZ);
     out.longitudinalColour = out.imageZC - out.imageZF;
-    const double field = largestField(d, out.imageZD);
+    const double field = largestChiefRayField(d);
     out.lateralColourFieldDegrees = field;
     if (field > 0) {
         const std::optional<double> hD = chiefHeight(d, field, out.imageZD);

@@ -2,6 +2,7 @@
 // Colour as the lens designer first checks it: the first-order data at the F, d and C lines, the
 // longitudinal colour (where red and blue focus on the axis) and the lateral colour (how far apart
 // red and blue images of an off-axis point land).
+#include "FirstOrder.h"
 #include "LensSystem.h"
 
 namespace lenslab {
@@ -22,5 +23,12 @@ struct Chromatic {
 // `objectZ` is the plane of focus (lens convention; +infinity for an object at infinity). Throws
 // OpticsError when a near-axis ray cannot pass at one of the three wavelengths.
 Chromatic computeChromatic(const LensSystem& lens, double objectZ);
+
+// The paraxial image of the axial point at objectZ (lens convention; +infinity: F'), mm.
+double paraxialImageZ(const LensSystem& lens, const FirstOrder& fo, double objectZ);
+
+// The largest field angle (degrees, below 85) whose chief ray at the lens's wavelength passes every
+// clear aperture: the lens's own field of view as traced.
+double largestChiefRayField(const LensSystem& lens);
 
 }  // namespace lenslab

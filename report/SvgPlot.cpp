@@ -120,7 +120,7 @@ void drawSeries(std::ostringstream& out, const PlotSeries& s, const char* colour
     if (markers)
         for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
             if (x.shows(s.x[i]) && y.shows(s.y[i]))
-                out << "<circle cx=\"" << num(x(s.x[i])) << "\" cy=\"" << num(y(s.y[i])) << "\" r=\"3.5\" fill=\""
+                out << "<circle cx=\"" << num(x(s.x[i])) << "\" cy=\"" << num(y(s.y[i])) << "\" r=\"" << num(s.markerRadius) << "\" fill=\""
                     << colour << "\"/>\n";
 }
 

@@ -14,6 +14,7 @@ struct PlotSeries {
     std::vector<double> x, y;  // a non-finite value breaks the line there
     SeriesStyle style = SeriesStyle::Line;
     bool dashed = false;
+    double markerRadius = 3.5;  // user units; dense scatters (spot diagrams) want smaller dots
 };
 
 struct PlotAxis {

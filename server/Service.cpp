@@ -45,6 +45,7 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
     jobs_.setAfterJob([this] { collectFinishedRenders(); });
     addHealthRoutes(http_.routes(), parts_);
     addLensRoutes(http_.routes(), parts_);
+    addAnalysisRoutes(http_.routes(), parts_);
     addDiagramRoutes(http_.routes(), parts_);
     addRenderRoutes(http_.routes(), parts_);
     addReportRoutes(http_.routes(), parts_);

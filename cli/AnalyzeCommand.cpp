@@ -1,0 +1,94 @@
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "AnalysisInputsText.h"
+#include "AnalysisJson.h"
+#include "AnalysisPlots.h"
+#include "ArgParser.h"
+#include "Commands.h"
+#include "LensDesignAnalysis.h"
+#include "LensFlags.h"
+#include "NumberText.h"
+
+namespace lenslab {
+
+namespace {
+
+DesignAnalysisInputs analysisFlags(const ArgParser& p) {
+    DesignAnalysisInputs in;
+    in.lens = lensFlags(p);
+    in.wavelengthsSource = "--wavelengths";
+    in.fieldsSource = "--fields";
+    in.maxFrequencySource = "--max-frequency";
+    try {
+        if (p.has("--wavelengths")) in.wavelengths = parseWavelengthList(p.get("--wavelengths"), "--wavelengths");
+        if (p.has("--fields")) {
+            const FieldList fields = parseFieldList(p.get("--fields"), "--fields");
+            in.fields = fields.values;
+            in.fieldsInDegrees = fields.degrees;
+        }
+    } catch (const InputListError& e) {
+        throw UsageError(std::string("analyze: ") + e.what());
+    }
+    if (const auto max = p.number("--max-frequency")) in.maxFrequency = *max;
+    return in;
+}
+
+void printSummary(const LensDesignAnalysis& a) {
+    std::cout << a.lens.lens.name << " at f/" << formatFNumber(a.lens.fstop) << ", image plane z "
+              << formatFixed(a.imageZ, 4) << " mm, largest field " << formatFixed(a.largestFieldDegrees, 2) << " deg\n";
+    std::cout << "field (deg)  wavelength (nm)  RMS spot (um)  geo spot (um)  RMS wavefront (waves)\n";
+    for (const FieldAnalysis& f : a.fields)
+        for (std::size_t j = 0; j < f.spots.size(); ++j)
+            std::cout << formatFixed(f.fieldDegrees, 2) << "  " << formatFixed(f.spots[j].wavelength, 1) << "  "
+                      << formatFixed(f.spots[j].rmsRadius * 1000, 2) << "  " << formatFixed(f.spots[j].geometricRadius * 1000, 2)
+                      << "  " << formatFixed(f.rmsWavefrontWaves[j], 3) << "\n";
+    std::cout << "field (deg)  distortion (%)  relative illumination\n";
+    for (const FieldAnalysis& f : a.fields)
+        std::cout << formatFixed(f.fieldDegrees, 2) << "  " << formatFixed(f.distortionPercent, 3) << "  "
+                  << formatFixed(f.relativeIllumination, 3) << "\n";
+    std::cout << "wavelength (nm)  chromatic focal shift (mm, + toward the lens)\n";
+    for (const FocalShiftSample& s : a.focalShift)
+        std::cout << formatFixed(s.wavelength, 1) << "  " << formatFixed(s.shift, 5) << "\n";
+}
+
+void writeOutputFolder(const LensDesignAnalysis& a, const std::string& folder) {
+    std::filesystem::create_directories(folder);
+    auto write = [&](const std::string& name, const std::string& text) {
+        std::ofstream out(std::filesystem::path(folder) / name, std::ios::binary);
+        out << text;
+        if (!out) throw std::runtime_error("cannot write " + (std::filesystem::path(folder) / name).string());
+    };
+    write("analysis.json", designAnalysisJson(a).dump(1) + "\n");
+    for (const NamedSvg& plot : designAnalysisPlots(a)) write(plot.name + ".svg", plot.svg + "\n");
+}
+
+}  // namespace
+
+int runAnalyzeCommand(const std::vector<std::string>& args) {
+    ArgParser p("analyze",
+                "LENS [--fstop N] [--focus MM|inf] [--wavelengths F,d,C|NM,...] [--fields 0,0.7,1|DEGdeg,...] [--json] [-o DIR]",
+                "The lens designer's analysis on the film plane focused at the d line: spot diagrams, ray fans,\n"
+                "geometric and diffraction MTF per field; field curvature, distortion, relative illumination and\n"
+                "chromatic focal shift. Fields are fractions of the largest field whose chief ray passes, or degrees\n"
+                "with 'deg'. -o writes analysis.json and SVG plots into DIR.");
+    p.positional("LENS", "lens table (.dat) or Zemax file (.zmx)");
+    declareLensFlags(p);
+    p.option("--wavelengths", "LIST", "F, d, C or nm, comma-separated (default F,d,C; at most 16)");
+    p.option("--fields", "LIST", "fractions of the largest field, or degrees with 'deg' (default 0,0.7,1; at most 16)");
+    p.option("--max-frequency", "LPMM", "the MTF's largest frequency (default: the diffraction cutoff 1/(lambda N))");
+    p.flag("--json", "print the analysis as one JSON object");
+    p.option("-o", "DIR", "write analysis.json and the plots (SVG) into DIR");
+    if (!p.parse(args)) {
+        std::cout << p.help();
+        return 0;
+    }
+    const LensDesignAnalysis a = analyzeLensDesign(loadLensSystem(p.arg(0)), analysisFlags(p));
+    if (p.has("--json")) std::cout << designAnalysisJson(a).dump(2) << "\n";
+    else printSummary(a);
+    if (p.has("-o")) writeOutputFolder(a, p.get("-o"));
+    return 0;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,122 @@
+#include "AnalysisJson.h"
+
+#include <cmath>
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::json;
+
+json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+json numbers(const std::vector<double>& values) {
+    json a = json::array();
+    for (double v : values) a.push_back(number(v));
+    return a;
+}
+
+json point(Point2 p) { return json::array({p.x, p.y}); }
+
+json spotJson(const SpotDiagram& s) {
+    json points = json::array();
+    const std::size_t step = (s.points.size() + kMaxJsonSpotPoints - 1) / kMaxJsonSpotPoints;
+    for (std::size_t k = 0; k < s.points.size(); k += std::max<std::size_t>(step, 1)) points.push_back(point(s.points[k]));
+    return {{"wavelength_nm", s.wavelength},  {"rms_radius_mm", s.rmsRadius}, {"geo_radius_mm", s.geometricRadius},
+            {"centroid_mm", point(s.centroid)}, {"rays_launched", s.raysLaunched}, {"rays_passed", s.points.size()},
+            {"points", points}};
+}
+
+json fanJson(const RayFan& f) {
+    return {{"wavelength_nm", f.wavelength}, {"pupil", numbers(f.pupil)}, {"tangential_mm", numbers(f.tangential)},
+            {"sagittal_mm", numbers(f.sagittal)}};
+}
+
+json fieldJson(const FieldAnalysis& f, const LensDesignAnalysis& a) {
+    json spots = json::array();
+    for (const SpotDiagram& s : f.spots) spots.push_back(spotJson(s));
+    return {{"field_deg", f.fieldDegrees},
+            {"chief_ray_image_mm", point(f.reference)},
+            {"spots", spots},
+            {"rms_wavefront_waves", numbers(f.rmsWavefrontWaves)},
+            {"distortion_percent", number(f.distortionPercent)},
+            {"relative_illumination", number(f.relativeIllumination)},
+            {"mtf",
+             {{"frequencies_lpmm", a.frequencies},
+              {"diffraction", {{"sagittal", numbers(f.diffractionSagittal)}, {"tangential", numbers(f.diffractionTangential)}}},
+              {"geometric", {{"sagittal", numbers(f.geometricSagittal)}, {"tangential", numbers(f.geometricTangential)}}},
+              {"diffraction_limit", numbers(a.diffractionLimit)}}}};
+}
+
+json focalShiftJson(const std::vector<FocalShiftSample>& samples) {
+    json out = {{"wavelength_nm", json::array()}, {"image_z", json::array()}, {"shift_mm", json::array()}};
+    for (const FocalShiftSample& s : samples) {
+        out["wavelength_nm"].push_back(s.wavelength);
+        out["image_z"].push_back(s.imageZ);
+        out["shift_mm"].push_back(s.shift);
+    }
+    return out;
+}
+
+}  // namespace
+
+json designAnalysisJson(const LensDesignAnalysis& a) {
+    json fields = json::array(), distortionPerField = json::array(), illuminationPerField = json::array();
+    for (const FieldAnalysis& f : a.fields) {
+        fields.push_back(fieldJson(f, a));
+        distortionPerField.push_back(number(f.distortionPercent));
+        illuminationPerField.push_back(number(f.relativeIllumination));
+    }
+    json curvature = json::array();
+    for (std::size_t j = 0; j < a.fieldCurvature.size(); ++j) {
+        json c = {{"wavelength_nm", a.wavelengths[j]}, {"tangential_mm", json::array()}, {"sagittal_mm", json::array()}};
+        for (const FieldCurvatureSample& s : a.fieldCurvature[j]) {
+            c["tangential_mm"].push_back(s.found ? json(s.tangentialShift) : json(nullptr));
+            c["sagittal_mm"].push_back(s.found ? json(s.sagittalShift) : json(nullptr));
+        }
+        curvature.push_back(c);
+    }
+    json distortionCurve = {{"field_deg", json::array()}, {"percent", json::array()}};
+    for (const DistortionSample& s : a.distortion) {
+        distortionCurve["field_deg"].push_back(s.fieldDegrees);
+        distortionCurve["percent"].push_back(s.found ? json(s.distortionPercent) : json(nullptr));
+    }
+    json illumination = {{"film_radius_mm", json::array()}, {"relative_illumination", json::array()}};
+    for (const IlluminationSample& s : a.illumination) {
+        illumination["film_radius_mm"].push_back(s.filmRadius);
+        illumination["relative_illumination"].push_back(s.relativeIllumination);
+    }
+    json shifts = json::array();
+    for (const FocalShiftSample& s : a.focalShift) shifts.push_back(s.shift);
+    json fans = json::array();
+    for (const FieldAnalysis& f : a.fields) {
+        json perWavelength = json::array();
+        for (const RayFan& r : f.fans) perWavelength.push_back(fanJson(r));
+        fans.push_back({{"field_deg", f.fieldDegrees}, {"fans", perWavelength}});
+    }
+    return {
+        {"name", a.lens.lens.name},
+        {"units", "mm, nm, degrees, lp/mm"},
+        {"convention", "lens space: +z toward the scene; image points relative to the d chief ray on the image plane; "
+                       "focus shifts positive toward the lens"},
+        {"fstop", a.lens.fstop},
+        {"focus_distance", a.lens.focus.infinity ? json(nullptr) : json(a.lens.focus.objectZ - a.lens.lens.frontZ())},
+        {"image_z", a.imageZ},
+        {"efl", a.lens.firstOrder.efl},
+        {"largest_field_deg", a.largestFieldDegrees},
+        {"wavelengths_nm", a.wavelengths},
+        {"weights", a.weights},
+        {"fields", fields},
+        {"distortion_percent", distortionPerField},
+        {"relative_illumination", illuminationPerField},
+        {"chromatic_focal_shift_mm", shifts},
+        {"ray_fans", fans},
+        {"field_curvature", {{"field_deg", a.curveFieldDegrees}, {"wavelengths", curvature}}},
+        {"curves",
+         {{"distortion", distortionCurve},
+          {"relative_illumination", illumination},
+          {"chromatic_focal_shift", focalShiftJson(a.focalShiftSpectrum)}}},
+    };
+}
+
+}  // namespace lenslab

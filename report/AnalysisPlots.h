@@ -1,0 +1,18 @@
+#pragma once
+// The lens designer's plots of an analysis, as SVG (svgPlot): spot diagrams, MTF, ray fans per
+// field; field curvature, distortion, relative illumination and chromatic focal shift.
+#include <string>
+#include <vector>
+
+#include "LensDesignAnalysis.h"
+
+namespace lenslab {
+
+struct NamedSvg {
+    std::string name;  // a file stem: "spot-field-1", "mtf-field-1", "field-curvature", ...
+    std::string svg;
+};
+
+std::vector<NamedSvg> designAnalysisPlots(const LensDesignAnalysis& analysis);
+
+}  // namespace lenslab
