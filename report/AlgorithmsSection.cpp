@@ -73,7 +73,7 @@ Samples are spread uniformly over the polygon's fan triangles, so few camera ray
 <p>A camera ray from film point x&prime; to a point x&Prime; of the aiming plane carries the weight
 L cos&theta;&prime; cos&theta;&Prime; / |x&Prime; &minus; x&prime;|&sup2; dA; for parallel planes a distance Z apart this is
 cos&#8308;&theta; / Z&sup2;, times the sampled area (the inverse of the sample's density) and the exposure time
-(<code>renderer/raytracer/RealisticCamera.cpp</code>). pbrt-v3's "simple weighting" instead divides by the weight at
+(<code>renderer/raytracer/cameras/RealisticCamera.cpp</code>). pbrt-v3's "simple weighting" instead divides by the weight at
 the film centre. The approximate camera samples the exit pupil disc with the same weight.</p>
 
 <h3>Relative illumination and distortion</h3>

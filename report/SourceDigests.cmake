@@ -1,6 +1,7 @@
 # Writes SourceDigests.h: a SHA-256 of the source files of each part whose code makes report items,
 # so that an item made by older code is never reused (report/ItemRunner.cpp). Run at build time
 # whenever one of those files changes: cmake -DSOURCE_DIR=... -DOUTPUT=... -P SourceDigests.cmake
+# A part's sources include its subfolders (renderer/raytracer/cameras/, ...).
 set(parts optics formats renderer/image renderer/diagram renderer/raytracer report)
 set(names optics formats image diagram raytracer report)
 set(body "")
@@ -9,7 +10,7 @@ math(EXPR last "${count} - 1")
 foreach(i RANGE ${last})
   list(GET parts ${i} part)
   list(GET names ${i} name)
-  file(GLOB files RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/${part}/*.cpp ${SOURCE_DIR}/${part}/*.h)
+  file(GLOB_RECURSE files RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/${part}/*.cpp ${SOURCE_DIR}/${part}/*.h)
   list(SORT files)
   set(listing "")
   foreach(f ${files})

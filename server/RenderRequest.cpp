@@ -5,7 +5,7 @@
 
 #include "HttpError.h"
 #include "Identifiers.h"
-#include "LensModeMap.h"
+#include "cameras/LensModeMap.h"
 
 namespace lenslab {
 

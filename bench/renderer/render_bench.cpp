@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "RealisticCamera.h"
+#include "cameras/RealisticCamera.h"
 #include "Render.h"
 
 namespace {

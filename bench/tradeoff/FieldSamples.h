@@ -3,7 +3,7 @@
 // pixel there, lens samples uniform, from a fixed seed.
 #include <vector>
 
-#include "Camera.h"
+#include "cameras/Camera.h"
 #include "TradeoffCases.h"
 
 namespace lenslab::tradeoff {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "LensAnalysis.h"
-#include "ThickLensFilmError.h"
+#include "cameras/ThickLensFilmError.h"
 #include "TradeoffCases.h"
 
 namespace lenslab::tradeoff {

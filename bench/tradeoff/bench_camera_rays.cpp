@@ -15,8 +15,8 @@
 #include "ExactTrace.h"
 #include "FieldSamples.h"
 #include "RayBatch.h"
-#include "RealisticCamera.h"
-#include "Sampling.h"
+#include "cameras/RealisticCamera.h"
+#include "sampling/Sampling.h"
 
 using namespace lenslab;
 using namespace lenslab::tradeoff;

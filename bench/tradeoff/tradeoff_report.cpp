@@ -12,7 +12,7 @@
 #include "FilmErrorStudy.h"
 #include "FrameStudy.h"
 #include "PanelPlot.h"
-#include "RealisticCamera.h"
+#include "cameras/RealisticCamera.h"
 
 using namespace lenslab;
 using namespace lenslab::tradeoff;

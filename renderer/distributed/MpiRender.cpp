@@ -11,7 +11,7 @@
 
 #include "MpiTileMaster.h"
 #include "MpiTileWorker.h"
-#include "PreparedFrame.h"
+#include "render/PreparedFrame.h"
 
 namespace lenslab {
 

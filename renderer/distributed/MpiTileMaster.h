@@ -5,7 +5,7 @@
 #include <functional>
 
 #include "MpiRender.h"
-#include "PreparedFrame.h"
+#include "render/PreparedFrame.h"
 
 namespace lenslab {
 

@@ -21,7 +21,7 @@
 #include <thread>
 #include <vector>
 
-#include "PreparedFrame.h"
+#include "render/PreparedFrame.h"
 #include "TileMessages.h"
 
 namespace lenslab {

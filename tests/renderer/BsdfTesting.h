@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "Material.h"
-#include "Sampling.h"
-#include "SceneDescription.h"
+#include "materials/Material.h"
+#include "sampling/Sampling.h"
+#include "scene/SceneDescription.h"
 #include "TestScenes.h"
 
 namespace lenslab::test {

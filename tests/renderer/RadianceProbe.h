@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "Integrator.h"
-#include "Light.h"
-#include "SceneDescription.h"
-#include "SceneGeometry.h"
+#include "integrators/Integrator.h"
+#include "lights/Light.h"
+#include "scene/SceneDescription.h"
+#include "geometry/SceneGeometry.h"
 
 namespace lenslab::test {
 

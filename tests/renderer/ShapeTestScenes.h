@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
-#include "SceneDescription.h"
-#include "SceneGeometry.h"
+#include "scene/SceneDescription.h"
+#include "geometry/SceneGeometry.h"
 #include "TestScenes.h"
 
 namespace lenslab::test {

@@ -1,6 +1,6 @@
 #include "TestScenes.h"
 
-#include "SceneDescription.h"
+#include "scene/SceneDescription.h"
 
 namespace lenslab::test {
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "Material.h"
+#include "materials/Material.h"
 #include "Render.h"
-#include "Texture.h"
+#include "textures/Texture.h"
 
 namespace lenslab::test {
 

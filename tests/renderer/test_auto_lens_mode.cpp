@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "RealisticCamera.h"
+#include "cameras/RealisticCamera.h"
 #include "TestScenes.h"
 
 namespace lenslab {

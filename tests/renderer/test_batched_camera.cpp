@@ -4,8 +4,8 @@
 
 #include <cstring>
 
-#include "RealisticCamera.h"
-#include "Sampling.h"
+#include "cameras/RealisticCamera.h"
+#include "sampling/Sampling.h"
 #include "TestScenes.h"
 
 namespace lenslab {

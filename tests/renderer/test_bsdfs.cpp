@@ -6,10 +6,10 @@
 #include <complex>
 
 #include "BsdfTesting.h"
-#include "DiffuseLobes.h"
-#include "Fresnel.h"
-#include "MetalSpectra.h"
-#include "Microfacet.h"
+#include "materials/DiffuseLobes.h"
+#include "materials/Fresnel.h"
+#include "materials/MetalSpectra.h"
+#include "materials/Microfacet.h"
 
 namespace lenslab {
 namespace {

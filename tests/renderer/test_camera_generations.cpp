@@ -9,11 +9,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "ApertureShape.h"
-#include "CameraFactory.h"
+#include "cameras/ApertureShape.h"
+#include "cameras/CameraFactory.h"
 #include "LensAnalysis.h"
 #include "PbrtPupilBox.h"
-#include "RealisticCamera.h"
+#include "cameras/RealisticCamera.h"
 #include "TestScenes.h"
 
 namespace lenslab {

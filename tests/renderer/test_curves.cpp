@@ -2,7 +2,7 @@
 // through an orthographic window is a band w tall, whatever its type, basis and degree.
 #include <gtest/gtest.h>
 
-#include "SceneDescription.h"
+#include "scene/SceneDescription.h"
 #include "TestScenes.h"
 
 namespace lenslab {

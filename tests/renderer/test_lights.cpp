@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "LightSampler.h"
+#include "lights/LightSampler.h"
 #include "RadianceProbe.h"
 #include "TestScenes.h"
 

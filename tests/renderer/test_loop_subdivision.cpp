@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "LoopSubdivision.h"
+#include "shapes/LoopSubdivision.h"
 #include "ShapeTestScenes.h"
 
 namespace lenslab {

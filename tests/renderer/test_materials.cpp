@@ -6,9 +6,9 @@
 #include <fstream>
 
 #include "BsdfTesting.h"
-#include "Fresnel.h"
-#include "MetalSpectra.h"
-#include "Spectrum.h"
+#include "materials/Fresnel.h"
+#include "materials/MetalSpectra.h"
+#include "core/Spectrum.h"
 
 namespace lenslab {
 namespace {

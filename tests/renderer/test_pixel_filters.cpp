@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "PixelFilter.h"
-#include "Sampling.h"
+#include "film/PixelFilter.h"
+#include "sampling/Sampling.h"
 
 namespace lenslab {
 namespace {

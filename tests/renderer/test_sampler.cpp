@@ -6,7 +6,7 @@
 #include <set>
 #include <vector>
 
-#include "Sampling.h"
+#include "sampling/Sampling.h"
 
 namespace lenslab {
 namespace {

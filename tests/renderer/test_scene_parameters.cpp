@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "SceneDescription.h"
+#include "scene/SceneDescription.h"
 #include "TestScenes.h"
 
 namespace lenslab {

@@ -2,7 +2,7 @@
 // naming the file, the line and the directive.
 #include <gtest/gtest.h>
 
-#include "SceneDescription.h"
+#include "scene/SceneDescription.h"
 #include "TestScenes.h"
 
 namespace lenslab {

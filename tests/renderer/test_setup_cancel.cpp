@@ -9,7 +9,7 @@
 #include "FirstOrder.h"
 #include "LensSystem.h"
 #include "LensTable.h"
-#include "RealisticCamera.h"
+#include "cameras/RealisticCamera.h"
 #include "TestScenes.h"
 
 namespace lenslab {

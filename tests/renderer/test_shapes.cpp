@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "Sampling.h"
+#include "sampling/Sampling.h"
 #include "ShapeTestScenes.h"
 
 namespace lenslab {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "AreaLight.h"
-#include "SceneDescription.h"
+#include "lights/AreaLight.h"
+#include "scene/SceneDescription.h"
 #include "TestScenes.h"
 
 namespace lenslab {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "SceneDescription.h"
+#include "scene/SceneDescription.h"
 #include "TestScenes.h"
 
 namespace lenslab {

@@ -39,15 +39,15 @@ TEST(ReportCacheKeys, EachKindFollowsTheCodeThatMakesIt) {
             EXPECT_NE(key(kind, changed(built, everyone)), key(kind, built)) << kind;
 }
 
-// The build step behind builtCode(): one file of renderer/raytracer edited changes that part's
-// digest and no other.
+// The build step behind builtCode(): one file of renderer/raytracer edited (in one of its concept
+// folders) changes that part's digest and no other.
 TEST(ReportCacheKeys, TheDigestScriptFollowsFileContents) {
     const fs::path dir = fs::temp_directory_path() / ("lenslab-digests-" + std::to_string(getpid()));
     fs::remove_all(dir);
-    for (const char* part : {"optics", "renderer/raytracer"}) fs::create_directories(dir / part);
+    for (const char* part : {"optics", "renderer/raytracer/cameras"}) fs::create_directories(dir / part);
     const auto write = [&](const std::string& file, const std::string& text) { std::ofstream(dir / file) << text; };
     write("optics/Lens.cpp", "int lens;\n");
-    write("renderer/raytracer/Trace.cpp", "int trace;\n");
+    write("renderer/raytracer/cameras/Trace.cpp", "int trace;\n");
     const auto digests = [&] {
         const std::string out = (dir / "SourceDigests.h").string();
         const std::string command = "cmake -DSOURCE_DIR=" + dir.string() + " -DOUTPUT=" + out + " -P " +
@@ -63,7 +63,7 @@ TEST(ReportCacheKeys, TheDigestScriptFollowsFileContents) {
     };
     const std::vector<std::string> before = digests();
     ASSERT_EQ(before.size(), std::size_t(kCodeParts));
-    write("renderer/raytracer/Trace.cpp", "int trace = 1;\n");
+    write("renderer/raytracer/cameras/Trace.cpp", "int trace = 1;\n");
     const std::vector<std::string> after = digests();
     ASSERT_EQ(after.size(), std::size_t(kCodeParts));
     for (int i = 0; i < kCodeParts; ++i) {

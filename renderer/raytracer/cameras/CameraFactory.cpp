@@ -1,0 +1,202 @@
+#include "cameras/CameraFactory.h"
+
+#include "ExitPupilBounds.h"
+
+#include "LensTable.h"
+#include "NumberText.h"
+#include "OpticsError.h"
+#include "cameras/EnvironmentCamera.h"
+#include "cameras/OrthographicCamera.h"
+#include "cameras/PerspectiveCamera.h"
+#include "cameras/RealisticCamera.h"
+
+namespace lenslab {
+
+namespace {
+
+// Parameters that say the same thing in different generations: naming two of them is a contradiction.
+void refuseSynonyms(const ParamSet& p, std::initializer_list<const char*> names, const std::string& what) {
+    const char* first = nullptr;
+    for (const char* name : names) {
+        if (!p.has(name)) continue;
+        if (first) p.fail(std::string("\"") + first + "\" and \"" + name + "\" both give " + what + ": give one of them");
+        first = name;
+    }
+}
+
+// The shutter interval. The course's scenes open and close it at 0: unit exposure, with a warning.
+double exposureTime(const ParamSet& p, std::vector<std::string>& warnings) {
+    const double open = p.getFloat("shutteropen", 0), close = p.getFloat("shutterclose", 1);
+    if (close < open) p.fail("shutterclose (" + formatNumber(close) + ") comes before shutteropen (" + formatNumber(open) + ")");
+    if (close > open) return close - open;
+    warnings.push_back(describe(p.where()) + ": shutteropen = shutterclose = " + formatNumber(open) +
+                       ": no exposure interval, rendering with unit exposure");
+    return 1;
+}
+
+// The later course's clipping planes. Camera rays start at the front lens element and run uncut, so
+// only values that could clip something (other than pbrt-v2's defaults) are worth a warning.
+void checkClipping(const ParamSet& p, std::vector<std::string>& warnings) {
+    const double hither = p.getFloat("hither", 1e-3), yon = p.getFloat("yon", 1e30);
+    if (hither > 1e-3 || yon < 1e30)
+        warnings.push_back(describe(p.where()) + ": hither " + formatNumber(hither) + " / yon " + formatNumber(yon) +
+                           " not applied: camera rays run uncut from the front lens element");
+}
+
+// Runs `build`, reporting the optics' own errors at the Camera directive; errors about a setting
+// already name where it came from (a scene line, or a command-line flag that overrode it).
+template <class Build>
+auto atCamera(const ParamSet& p, Build build) -> decltype(build()) {
+    try {
+        return build();
+    } catch (const SetupCancelled&) {
+        throw RenderCancelled();
+    } catch (const SettingError& e) {
+        throw SceneError(e.what());
+    } catch (const OpticsError& e) {
+        p.fail(e.what());
+    } catch (const LensTableError& e) {
+        p.fail(e.what());
+    }
+}
+
+ApertureShape apertureShape(const SceneDescription& scene, const ParamSet& p) {
+    const std::string name = p.getString("aperture", "circular");
+    if (ApertureShape::isNamed(name)) return ApertureShape::named(name);
+    const std::string image = resolveScenePath(scene, name, p.where());
+    try {
+        return ApertureShape::fromImage(image);
+    } catch (const std::runtime_error& e) {
+        p.fail(std::string(e.what()) + " (aperture: circular, gaussian, square, pentagon, star or an image file)");
+    }
+}
+
+std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverrides& o, int width, int height,
+                                      double margin, const std::atomic<bool>* cancel) {
+    const ParamSet& p = scene.camera.params;
+    refuseSynonyms(p, {"specfile", "lensfile"}, "the lens table");
+    refuseSynonyms(p, {"fstop", "aperture_diameter", "aperturediameter"}, "the aperture");
+    refuseSynonyms(p, {"focaldistance", "filmdistance", "focusdistance"}, "the focus");
+    refuseSynonyms(p, {"filmdiagonal", "filmdiag"}, "the film diagonal");
+    // Three generations of names (docs/camera-conventions.md). The course's (specfile: fstop,
+    // focaldistance, filmdiagonal; later filmdistance, aperture_diameter, filmdiag) have camera space
+    // in millimetres; pbrt-v3/v4's lensfile puts it in metres (lens mm x 0.001), with focusdistance
+    // in those units measured from the film, a 1 mm opening and simple weighting by default; and its
+    // camera space starts at the film, where the course's starts at the front lens vertex.
+    const bool pbrtStyle = p.has("lensfile");
+    RealisticParams r;
+    r.cameraUnitMm = pbrtStyle ? 1000 : 1;
+    r.originAtFilm = pbrtStyle;
+    const std::string lensName = pbrtStyle ? p.getString("lensfile", "") : p.getString("specfile", "");
+    if (lensName.empty() && !o.lensFile) p.fail("needs \"string specfile\" (or pbrt-v3's \"lensfile\")");
+    // The scene's own lens: the one rendered, or (under an override) the one its filmdistance was set for.
+    const auto sceneLens = [&] { return resolveScenePath(scene, lensName, p.where()); };
+    r.lensPath = o.lensFile ? *o.lensFile : sceneLens();
+    r.lens = atCamera(p, [&] { return loadLensSystem(r.lensPath, o.lensFile ? o.lensLayout : std::nullopt); });
+
+    // The scene's settings, each named by its parameter; the caller's overrides replace them.
+    const auto sceneSetting = [&](const char* name, double scale = 1) -> std::optional<Setting> {
+        if (!p.has(name)) return std::nullopt;
+        return Setting{scale * p.getFloat(name, 0), describe(p.where()) + ": " + name};
+    };
+    LensSettings& s = r.settings;
+    s.fstop = sceneSetting("fstop");
+    s.stopDiameter = p.has("aperture_diameter") ? sceneSetting("aperture_diameter") : sceneSetting("aperturediameter");
+    if (pbrtStyle && !s.fstop && !s.stopDiameter)
+        s.stopDiameter = Setting{1.0, describe(p.where()) + ": aperturediameter (pbrt-v3's default, 1 mm)"};
+    if (o.fstop) {
+        s.fstop = o.fstop;
+        s.stopDiameter.reset();
+    }
+    s.filmDistance = sceneSetting("filmdistance");
+    s.focusFromFilm = p.has("focusdistance") || (pbrtStyle && !p.has("focaldistance"));
+    if (s.filmDistance) {
+        s.focusFromFilm = false;
+    } else if (s.focusFromFilm) {
+        s.focusDistance = p.has("focusdistance") ? sceneSetting("focusdistance", r.cameraUnitMm)
+                                                 : Setting{r.cameraUnitMm * 10, describe(p.where()) + ": focusdistance (pbrt-v3's default, 10 units)"};
+    } else {
+        s.focusDistance = p.has("focaldistance") ? sceneSetting("focaldistance")
+                                                 : Setting{10000, describe(p.where()) + ": focaldistance (default, 10 m)"};
+    }
+    if (o.focusDistance) {
+        s.focusDistance = o.focusDistance;
+        s.focusFromFilm = false;
+        s.filmDistance.reset();
+    } else if (o.lensFile && s.filmDistance) {
+        // A film distance belongs to the scene's lens: another lens focuses where that one did.
+        const std::string ownPath = sceneLens();
+        const double distance = atCamera(p, [&] {
+            const LensSystem own = loadLensSystem(ownPath);
+            return thickLensFocusForFilm(own, computeFirstOrder(own), own.rearZ() - s.filmDistance->value);
+        });
+        s.focusDistance = Setting{distance, s.filmDistance->source + " (where the scene's own lens focuses)"};
+        s.filmDistance.reset();
+    }
+    s.wavelength = o.wavelength;
+    const double sceneDiagonal = p.has("filmdiag") ? p.getFloat("filmdiag", 35) : p.getFloat("filmdiagonal", scene.film.diagonalMm);
+    r.filmDiagonalMm = o.filmDiagonal.value_or(sceneDiagonal);
+    const std::string mode = o.mode.value_or(p.getString("mode", "exact"));
+    const std::optional<LensMode> lensMode = parseLensMode(mode);
+    if (!lensMode) p.fail("mode must be exact|thick|auto, got \"" + mode + "\"");
+    r.mode = *lensMode;
+    r.autoThresholdPixels = p.getFloat("autothreshold", r.autoThresholdPixels);
+    r.crop = scene.film.crop;  // the effective window: the render settings' crop overrides the scene's
+    r.exposureTime = exposureTime(p, scene.warnings);
+    checkClipping(p, scene.warnings);
+    r.simpleWeighting = p.getBool("simpleweighting", pbrtStyle);
+    r.pbrtExposure = pbrtStyle;
+    r.aperture = apertureShape(scene, p);
+    p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
+    return atCamera(p, [&]() -> std::unique_ptr<Camera> {
+        return std::make_unique<RealisticCamera>(r, scene.camera.cameraToWorld, width, height, margin, cancel);
+    });
+}
+
+std::unique_ptr<Camera> makeOrthographic(const SceneDescription& scene, int width, int height) {
+    const ParamSet& p = scene.camera.params;
+    OrthographicParams o;
+    o.screen = ScreenWindow::forImage(width, height);
+    if (p.has("screenwindow")) {
+        const std::vector<double> w = p.getFloats("screenwindow");
+        if (w.size() != 4 || !(w[0] < w[1] && w[2] < w[3])) p.fail("screenwindow needs x0 < x1, y0 < y1");
+        o.screen = {w[0], w[1], w[2], w[3]};
+    }
+    o.lensRadius = p.getFloat("lensradius", 0);
+    o.focalDistance = p.getFloat("focaldistance", 1e6);
+    if (o.lensRadius < 0 || !(o.focalDistance > 0)) p.fail("lensradius must be >= 0 and focaldistance > 0");
+    return std::make_unique<OrthographicCamera>(o, scene.camera.cameraToWorld, width, height);
+}
+
+}  // namespace
+
+std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverrides& o, int width, int height,
+                                   double filmMarginPixels, const std::atomic<bool>* cancel) {
+    const ParamSet& p = scene.camera.params;
+    if (scene.camera.type == "realistic") return makeRealistic(scene, o, width, height, filmMarginPixels, cancel);
+    if (o.lensFile || o.fstop || o.focusDistance || o.wavelength || o.filmDiagonal || o.mode)
+        throw SceneError(scene.file + ": the lens overrides need a Camera \"realistic\"; this scene has a " +
+                         scene.camera.type + " camera");
+    if (scene.camera.type == "environment") {
+        p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose", "frameaspectratio", "screenwindow"});
+        return std::make_unique<EnvironmentCamera>(scene.camera.cameraToWorld, width, height);
+    }
+    if (scene.camera.type == "orthographic") {
+        auto camera = makeOrthographic(scene, width, height);
+        p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose", "frameaspectratio"});
+        return camera;
+    }
+    PerspectiveParams pp;
+    // pbrt-v3 also reads "halffov" (pbrt-v1's name), which wins when positive.
+    const double halfFov = p.getFloat("halffov", -1);
+    const double fov = halfFov > 0 ? 2 * halfFov : p.getFloat("fov", 90);
+    if (!(fov > 0 && fov < 180)) p.fail("fov must lie in (0, 180) degrees");
+    pp.fovDegrees = fov;
+    pp.lensRadius = p.getFloat("lensradius", 0);
+    pp.focalDistance = p.getFloat("focaldistance", 1e6);
+    if (pp.lensRadius < 0 || !(pp.focalDistance > 0)) p.fail("lensradius must be >= 0 and focaldistance > 0 (metres)");
+    p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose"});
+    return std::make_unique<PerspectiveCamera>(pp, scene.camera.cameraToWorld, width, height);
+}
+
+}  // namespace lenslab

@@ -1,0 +1,78 @@
+#include "core/Spectrum.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lenslab {
+
+namespace {
+
+constexpr int kFirstNm = 360, kLastNm = 830;
+
+// The CIE 1931 2-degree colour matching functions as sums of piecewise Gaussians: Wyman, Sloan &
+// Shirley, "Simple Analytic Approximations to the CIE XYZ Color Matching Functions", JCGT 2(2),
+// 2013 (the multi-lobe fit, within about 1% of the tabulated functions).
+double lobe(double x, double mu, double sigmaBelow, double sigmaAbove) {
+    const double t = (x - mu) / (x < mu ? sigmaBelow : sigmaAbove);
+    return std::exp(-0.5 * t * t);
+}
+double cieX(double l) {
+    return 1.056 * lobe(l, 599.8, 37.9, 31.0) + 0.362 * lobe(l, 442.0, 16.0, 26.7) - 0.065 * lobe(l, 501.1, 20.4, 26.2);
+}
+double cieY(double l) { return 0.821 * lobe(l, 568.8, 46.9, 40.5) + 0.286 * lobe(l, 530.9, 16.3, 31.1); }
+double cieZ(double l) { return 1.217 * lobe(l, 437.0, 11.8, 36.0) + 0.681 * lobe(l, 459.0, 26.0, 13.8); }
+
+double cieYIntegral() {
+    static const double integral = [] {
+        double s = 0;
+        for (int l = kFirstNm; l <= kLastNm; ++l) s += cieY(l);
+        return s;
+    }();
+    return integral;
+}
+
+// The spectrum at wavelength l: linear between samples, the end values beyond them.
+double interpolate(const std::vector<double>& lambda, const std::vector<double>& v, double l) {
+    if (l <= lambda.front()) return v.front();
+    if (l >= lambda.back()) return v.back();
+    const auto hi = std::upper_bound(lambda.begin(), lambda.end(), l) - lambda.begin();
+    const double t = (l - lambda[hi - 1]) / (lambda[hi] - lambda[hi - 1]);
+    return (1 - t) * v[hi - 1] + t * v[hi];
+}
+
+}  // namespace
+
+Vec3f xyzToRgb(double x, double y, double z) {
+    // The sRGB / Rec. 709 primaries with a D65 white (IEC 61966-2-1).
+    return {float(3.240479 * x - 1.537150 * y - 0.498535 * z), float(-0.969256 * x + 1.875991 * y + 0.041556 * z),
+            float(0.055648 * x - 0.204043 * y + 1.057311 * z)};
+}
+
+Vec3f sampledSpectrumToRgb(const std::vector<double>& lambda, const std::vector<double>& v) {
+    double x = 0, y = 0, z = 0;
+    for (int l = kFirstNm; l <= kLastNm; ++l) {
+        const double s = interpolate(lambda, v, l);
+        x += s * cieX(l);
+        y += s * cieY(l);
+        z += s * cieZ(l);
+    }
+    const double n = cieYIntegral();
+    return xyzToRgb(x / n, y / n, z / n);
+}
+
+Vec3f blackbodyToRgb(double kelvin, double scale) {
+    constexpr double c = 299792458.0, h = 6.62606957e-34, kb = 1.3806488e-23;
+    const auto planck = [&](double nm) {
+        const double l = nm * 1e-9;
+        return 2 * h * c * c / (std::pow(l, 5) * (std::exp(h * c / (l * kb * kelvin)) - 1));
+    };
+    const double peak = planck(2.8977721e-3 / kelvin * 1e9);
+    std::vector<double> lambda, v;
+    for (int l = kFirstNm; l <= kLastNm; ++l) {
+        lambda.push_back(l);
+        v.push_back(planck(l) / peak);
+    }
+    return float(scale) * sampledSpectrumToRgb(lambda, v);
+}
+
+}  // namespace lenslab

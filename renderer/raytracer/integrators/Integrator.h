@@ -1,0 +1,23 @@
+#pragma once
+// Light transport: the radiance arriving along a camera ray. One implementation per pbrt-v3
+// integrator lenslab has: path, directlighting, whitted.
+#include <cstdint>
+#include <memory>
+
+#include "sampling/Sampling.h"
+#include "scene/SceneDescription.h"
+#include "geometry/SceneGeometry.h"
+
+namespace lenslab {
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+    // Radiance arriving along the ray (world space). raysTraced counts closest-hit and shadow rays.
+    virtual Vec3f radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const = 0;
+};
+
+// The geometry (with its lights' scene bounds set) must outlive the integrator.
+std::unique_ptr<Integrator> makeIntegrator(const SceneGeometry& geometry, const IntegratorSpec& spec);
+
+}  // namespace lenslab

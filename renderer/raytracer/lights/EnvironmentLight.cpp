@@ -1,0 +1,94 @@
+// pbrt-v3's infinite light with an environment map. Radiance is the map's texel in the direction
+// (piecewise constant, like the sampling density), so that a sample's radiance / pdf is constant
+// within a texel: bright texels such as a sun cost no more noise than their area deserves.
+#include <cmath>
+
+#include "lights/ImageLights.h"
+#include "sampling/PiecewiseConstant.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr float kPi = float(M_PI);
+
+std::vector<float> samplingWeights(const LinearImage& map) {
+    std::vector<float> w(map.texels.size());
+    for (int y = 0; y < map.height; ++y) {
+        // The texel's solid angle is proportional to sin(theta) at its row.
+        const float sinTheta = std::sin(kPi * (float(y) + 0.5f) / float(map.height));
+        for (int x = 0; x < map.width; ++x) {
+            const std::size_t i = std::size_t(y) * map.width + x;
+            w[i] = luminance(map.texels[i]) * sinTheta;
+        }
+    }
+    return w;
+}
+
+class EnvironmentLight : public Light {
+public:
+    EnvironmentLight(LinearImage map, const Transform& lightToWorld)
+        : map_(std::move(map)), toWorld_(lightToWorld), toLight_(inverse(lightToWorld)),
+          distribution_(samplingWeights(map_), map_.width, map_.height), average_(map_.average()) {}
+
+    bool sample(Vec3f p, float u1, float u2, LightSample& s) const override {
+        float su, tv, mapPdf;
+        distribution_.sample(u1, u2, su, tv, mapPdf);
+        const float theta = tv * kPi, phi = su * 2.0f * kPi;
+        const float sinTheta = std::sin(theta);
+        if (!(mapPdf > 0) || !(sinTheta > 0)) return false;
+        const Vec3f local{sinTheta * std::cos(phi), sinTheta * std::sin(phi), std::cos(theta)};
+        s.wi = normalize(transformVector(toWorld_, local));
+        s.distance = std::numeric_limits<float>::infinity();
+        // Density and radiance from the direction itself, exactly as pdf() and emitted() find them:
+        // a sample on a texel's edge would otherwise disagree with them after rounding.
+        s.radiance = emitted(nullptr, s.wi);
+        s.pdf = pdf(p, s.wi, nullptr);
+        s.delta = false;
+        return s.pdf > 0 && !isBlack(s.radiance);
+    }
+
+    float pdf(Vec3f, Vec3f w, const SurfaceHit* at) const override {
+        if (at) return 0;
+        float s, t, sinTheta;
+        mapCoordinates(w, s, t, sinTheta);
+        return sinTheta > 0 ? distribution_.density(s, t) / (2.0f * kPi * kPi * sinTheta) : 0.0f;
+    }
+
+    Vec3f emitted(const SurfaceHit* at, Vec3f w) const override {
+        if (at) return {};
+        float s, t, sinTheta;
+        mapCoordinates(w, s, t, sinTheta);
+        return map_.lookup(s, t);
+    }
+
+    bool isInfinite() const override { return true; }
+    // pbrt-v3's: the map's mean radiance through a disc of the scene's bounding radius.
+    Vec3f power() const override { return kPi * radius_ * radius_ * average_; }
+    void setSceneBounds(Vec3f, float radius) override { radius_ = radius; }
+
+private:
+    void mapCoordinates(Vec3f worldDirection, float& s, float& t, float& sinTheta) const {
+        const Vec3f d = normalize(transformVector(toLight_, worldDirection));
+        const float cosTheta = std::clamp(d.z, -1.0f, 1.0f);
+        float phi = std::atan2(d.y, d.x);
+        if (phi < 0) phi += 2.0f * kPi;
+        s = phi / (2.0f * kPi);
+        t = std::acos(cosTheta) / kPi;
+        sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    }
+
+    LinearImage map_;
+    Transform toWorld_, toLight_;
+    PiecewiseConstant2D distribution_;
+    Vec3f average_;
+    float radius_ = 1;
+};
+
+}  // namespace
+
+std::unique_ptr<Light> makeEnvironmentLight(LinearImage map, const Transform& lightToWorld) {
+    return std::make_unique<EnvironmentLight>(std::move(map), lightToWorld);
+}
+
+}  // namespace lenslab

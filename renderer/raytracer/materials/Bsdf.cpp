@@ -1,0 +1,118 @@
+#include "materials/Bsdf.h"
+
+#include <cmath>
+
+#include "sampling/Sampling.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr float kInvPi = 0.318309886f;
+
+// pbrt-v3's shading frame: the shading normal with dp/du made orthogonal to it; any frame around
+// the normal when the shape gives no usable dp/du (only anisotropic lobes can tell the difference).
+Frame shadingFrame(const SurfaceHit& h) {
+    Frame f(h.ns);
+    const Vec3f t = h.dpdu - dot(h.dpdu, h.ns) * h.ns;
+    const float len = length(t);
+    if (len > 1e-6f * length(h.dpdu) && len > 0) {
+        f.s = t / len;
+        f.t = cross(h.ns, f.s);
+    }
+    return f;
+}
+
+}  // namespace
+
+float Lobe::pdf(Vec3f wo, Vec3f wi) const { return sameHemisphere(wo, wi) ? std::fabs(wi.z) * kInvPi : 0.0f; }
+
+bool Lobe::sample(Vec3f wo, float, float u1, float u2, LobeSample& s) const {
+    s.wi = cosineHemisphere(u1, u2);
+    if (wo.z < 0) s.wi.z = -s.wi.z;
+    s.pdf = pdf(wo, s.wi);
+    s.f = f(wo, s.wi);
+    s.specular = false;
+    return s.pdf > 0;
+}
+
+bool refract(Vec3f wo, Vec3f n, float eta, Vec3f& wt) {
+    const float cosI = dot(wo, n);
+    const float sin2T = eta * eta * std::max(0.0f, 1.0f - cosI * cosI);
+    if (sin2T >= 1.0f) return false;
+    const float cosT = std::sqrt(1.0f - sin2T);
+    wt = -eta * wo + (eta * cosI - cosT) * n;
+    return true;
+}
+
+Bsdf::Bsdf(const SurfaceHit& hit) : frame_(shadingFrame(hit)), ng_(hit.ng) {}
+
+Vec3f Bsdf::f(Vec3f woWorld, Vec3f wiWorld) const {
+    const Vec3f wo = toLocal(woWorld), wi = toLocal(wiWorld);
+    if (wo.z == 0) return {};
+    // The geometric normal decides reflection or transmission, so that interpolated shading
+    // normals cannot leak light through a surface.
+    const bool reflection = dot(wiWorld, ng_) * dot(woWorld, ng_) > 0;
+    const unsigned wanted = reflection ? kReflection : kTransmission;
+    Vec3f sum{};
+    for (int i = 0; i < count_; ++i) {
+        const unsigned t = lobes_[i]->type();
+        if (!(t & kSpecular) && (t & wanted)) sum += weights_[i] * lobes_[i]->f(wo, wi);
+    }
+    return sum;
+}
+
+float Bsdf::pdf(Vec3f woWorld, Vec3f wiWorld) const {
+    if (count_ == 0) return 0;
+    const Vec3f wo = toLocal(woWorld), wi = toLocal(wiWorld);
+    if (wo.z == 0) return 0;
+    float sum = 0;
+    for (int i = 0; i < count_; ++i)
+        if (!(lobes_[i]->type() & kSpecular)) sum += lobes_[i]->pdf(wo, wi);
+    return sum / float(count_);
+}
+
+bool Bsdf::sample(Vec3f woWorld, float uLobe, float u1, float u2, BsdfSample& out) const {
+    if (count_ == 0) return false;
+    const Vec3f wo = toLocal(woWorld);
+    if (wo.z == 0) return false;
+    const int chosen = std::min(int(uLobe * float(count_)), count_ - 1);
+    const float uc = std::min(uLobe * float(count_) - float(chosen), 0x1.fffffep-1f);
+    LobeSample ls;
+    if (!lobes_[chosen]->sample(wo, uc, u1, u2, ls) || !(ls.pdf > 0) || ls.wi.z == 0) return false;
+    out.wi = toWorld(ls.wi);
+    out.specular = ls.specular;
+    if (ls.specular) {
+        // A delta lobe: the direction must leave on the side the lobe scatters to.
+        const bool reflection = dot(out.wi, ng_) * dot(woWorld, ng_) > 0;
+        if (reflection != sameHemisphere(wo, ls.wi)) return false;
+        out.pdf = ls.pdf / float(count_);
+        out.weight = weights_[chosen] * ls.f * (std::fabs(ls.wi.z) / out.pdf);
+    } else {
+        out.pdf = pdf(woWorld, out.wi);
+        out.weight = f(woWorld, out.wi) * (std::fabs(ls.wi.z) / out.pdf);
+    }
+    return out.pdf > 0 && allFinite(out.weight);
+}
+
+// The Material interface, answered by the Bsdf the material lays down at the hit.
+
+Vec3f Material::evaluate(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const {
+    Bsdf b(hit);
+    addLobes(hit, {1, 1, 1}, b);
+    return b.f(wo, wi) * std::fabs(dot(wi, hit.ns));
+}
+
+float Material::pdf(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const {
+    Bsdf b(hit);
+    addLobes(hit, {1, 1, 1}, b);
+    return b.pdf(wo, wi);
+}
+
+bool Material::sample(const SurfaceHit& hit, Vec3f wo, float uLobe, float u1, float u2, BsdfSample& out) const {
+    Bsdf b(hit);
+    addLobes(hit, {1, 1, 1}, b);
+    return b.sample(wo, uLobe, u1, u2, out);
+}
+
+}  // namespace lenslab

@@ -1,0 +1,52 @@
+#include "materials/DiffuseLobes.h"
+
+#include <cmath>
+
+#include "sampling/Sampling.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr float kInvPi = 0.318309886f;
+
+}  // namespace
+
+Vec3f LambertianReflection::f(Vec3f, Vec3f) const { return {kInvPi, kInvPi, kInvPi}; }
+
+Vec3f LambertianTransmission::f(Vec3f, Vec3f) const { return {kInvPi, kInvPi, kInvPi}; }
+
+float LambertianTransmission::pdf(Vec3f wo, Vec3f wi) const {
+    return sameHemisphere(wo, wi) ? 0.0f : std::fabs(wi.z) * kInvPi;
+}
+
+bool LambertianTransmission::sample(Vec3f wo, float, float u1, float u2, LobeSample& s) const {
+    s.wi = cosineHemisphere(u1, u2);
+    if (wo.z > 0) s.wi.z = -s.wi.z;
+    s.pdf = pdf(wo, s.wi);
+    s.f = f(wo, s.wi);
+    s.specular = false;
+    return s.pdf > 0;
+}
+
+OrenNayar::OrenNayar(float sigmaDegrees) {
+    const float sigma = sigmaDegrees * float(M_PI) / 180.0f, s2 = sigma * sigma;
+    a_ = 1.0f - s2 / (2.0f * (s2 + 0.33f));
+    b_ = 0.45f * s2 / (s2 + 0.09f);
+}
+
+// f = (A + B max(0, cos(phi_i - phi_o)) sin(alpha) tan(beta)) / pi with alpha the larger and
+// beta the smaller of the two polar angles.
+Vec3f OrenNayar::f(Vec3f wo, Vec3f wi) const {
+    const float sinI = std::sqrt(std::max(0.0f, 1.0f - wi.z * wi.z));
+    const float sinO = std::sqrt(std::max(0.0f, 1.0f - wo.z * wo.z));
+    float cosDeltaPhi = 0;
+    if (sinI > 1e-4f && sinO > 1e-4f) cosDeltaPhi = std::max(0.0f, (wi.x * wo.x + wi.y * wo.y) / (sinI * sinO));
+    const bool iSteeper = std::fabs(wi.z) > std::fabs(wo.z);
+    const float sinAlpha = iSteeper ? sinO : sinI;
+    const float tanBeta = iSteeper ? sinI / std::fabs(wi.z) : sinO / std::fabs(wo.z);
+    const float v = kInvPi * (a_ + b_ * cosDeltaPhi * sinAlpha * tanBeta);
+    return {v, v, v};
+}
+
+}  // namespace lenslab

@@ -1,0 +1,164 @@
+// Scene -> camera + Embree geometry -> tiles, and the per-rect render loop every caller shares
+// (local threads in renderScene, MPI workers in renderer/distributed).
+#include "render/PreparedFrame.h"
+
+#include <xmmintrin.h>
+#include <pmmintrin.h>
+
+#include <cmath>
+#include <sstream>
+#include <thread>
+
+#include "cameras/CameraFactory.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr int kMaxSide = 16384;
+constexpr long long kMaxPixels = 64LL * 1024 * 1024;
+constexpr int kMaxSpp = 1 << 20;
+constexpr int kCameraBatchRays = 256;  // camera rays made together (a run of pixels' samples)
+
+const RenderSettings& checked(const RenderSettings& s) {
+    if (s.tileSize < 1 || s.tileSize > 4096) throw SceneError("tile size must lie in [1, 4096] pixels");
+    if (s.threads < 0 || s.threads > 1024) throw SceneError("thread count must lie in [0, 1024]");
+    return s;
+}
+
+int threadCount(const RenderSettings& s) {
+    return s.threads > 0 ? s.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// pbrt-v3's Film "maxsampleluminance": a sample brighter than the limit is scaled down to it
+// (trading bias for fireflies); 0 means no limit.
+Vec3f clampLuminance(Vec3f L, double limit) {
+    const float y = luminance(L);
+    return limit > 0 && y > limit ? float(limit / y) * L : L;
+}
+
+std::string joinLines(const std::vector<std::string>& lines) {
+    std::string s;
+    for (const auto& l : lines) s += (s.empty() ? "" : "\n") + l;
+    return s;
+}
+
+// Every random number of a pixel derives from this: an image is the same however tiles are spread.
+std::uint64_t pixelSeed(std::uint64_t seed, int px, int py) {
+    return hashCombine(seed, (std::uint64_t(py) << 32) | std::uint32_t(px));
+}
+
+}  // namespace
+
+PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<bool>* cancel)
+    : start_(std::chrono::steady_clock::now()),
+      settings_(checked(settings)),
+      scene_(parseSceneFile(settings.scenePath, {settings.confined, settings.loadProgress})),
+      arena_(threadCount(settings)),
+      filter_(scene_.filter) {
+    width_ = settings.width.value_or(scene_.film.xresolution);
+    height_ = settings.height.value_or(scene_.film.yresolution);
+    const std::string from = settings.width || settings.height ? "the render settings" : describe(scene_.film.where);
+    if (width_ < 1 || height_ < 1 || width_ > kMaxSide || height_ > kMaxSide || (long long)width_ * height_ > kMaxPixels)
+        throw SceneError(from + ": resolution " + std::to_string(width_) + "x" + std::to_string(height_) +
+                         " is out of range (each side 1 to 16384 pixels, at most 64 Mpixels)");
+    spp_ = settings.spp.value_or(scene_.pixelSamples);
+    if (spp_ < 1 || spp_ > kMaxSpp)
+        throw SceneError("samples per pixel " + std::to_string(spp_) + " out of range (1 to 1048576)");
+    const std::array<double, 4> c = settings.crop.value_or(scene_.film.crop);
+    if (!(c[0] >= 0 && c[0] < c[1] && c[1] <= 1 && c[2] >= 0 && c[2] < c[3] && c[3] <= 1))
+        throw SceneError("crop window x0,x1,y0,y1 must satisfy 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
+    // pbrt-v3's rounding of the crop window to pixels.
+    area_ = {int(std::ceil(width_ * c[0])), int(std::ceil(height_ * c[2])), int(std::ceil(width_ * c[1])),
+             int(std::ceil(height_ * c[3]))};
+    if (area_.x1 <= area_.x0 || area_.y1 <= area_.y0) throw SceneError("the crop window holds no pixel");
+    tiles_ = makeTiles(area_, settings.tileSize);
+    scene_.film.crop = c;  // the camera prepares only the film radii this window covers
+
+    arena_.execute([&] {
+        camera_ = makeCamera(scene_, settings.camera, width_, height_, filter_.radius(), cancel);
+        geometry_ = std::make_unique<SceneGeometry>(scene_);
+    });
+    integrator_ = makeIntegrator(*geometry_, scene_.integrator);
+    setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t rowStride, TileCounters& counters,
+                               const std::atomic<bool>* cancel) const {
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+    TileCounters local;
+    // Camera rays are made for a run of pixels at once: the lens trace vectorises only over batches
+    // of several dozen rays (per ray 263 ns in batches of 16, 66 ns in batches of 64: bench/README.md).
+    const int runPixels = std::max(1, kCameraBatchRays / spp_);
+    std::vector<CameraSample> samples(std::size_t(runPixels) * spp_);
+    std::vector<CameraRay> rays(samples.size());
+    std::vector<float> filterWeights(samples.size());
+    for (int py = rect.y0; py < rect.y1; ++py) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) {
+            counters += local;
+            return false;
+        }
+        float* row = dst + std::size_t(py - rect.y0) * rowStride;
+        for (int runStart = rect.x0; runStart < rect.x1; runStart += runPixels) {
+            const int runEnd = std::min(rect.x1, runStart + runPixels);
+            for (int px = runStart; px < runEnd; ++px) {
+                const PixelSampler sampler(pixelSeed(settings_.seed, px, py));
+                const std::size_t first = std::size_t(px - runStart) * spp_;
+                for (int s = 0; s < spp_; ++s) {
+                    const PixelSample u = sampler(std::uint32_t(s));
+                    float dx, dy;
+                    filterWeights[first + s] = filter_.sample(u.filmX, u.filmY, dx, dy);
+                    samples[first + s] = {px + 0.5 + dx, py + 0.5 + dy, u.lensU, u.lensV};
+                }
+            }
+            camera_->generateRays(samples.data(), std::size_t(runEnd - runStart) * spp_, rays.data());
+            for (int px = runStart; px < runEnd; ++px) {
+                const std::uint64_t seed = pixelSeed(settings_.seed, px, py);
+                const std::size_t first = std::size_t(px - runStart) * spp_;
+                FilteredPixel pixel;
+                for (int s = 0; s < spp_; ++s) {
+                    const CameraRay& ray = rays[first + s];
+                    if (!(ray.weight > 0)) {
+                        ++local.blockedCameraRays;
+                        pixel.add(filterWeights[first + s], {});
+                        continue;
+                    }
+                    Pcg32 rng(hashCombine(seed, std::uint64_t(s)));
+                    pixel.add(filterWeights[first + s],
+                              clampLuminance(ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced),
+                                             scene_.film.maxSampleLuminance));
+                }
+                local.cameraRays += spp_;
+                float* out = row + std::size_t(px - rect.x0) * 3;
+                // A filter's negative lobes can push a pixel below zero; pbrt-v3 clamps it there too.
+                const Vec3f v = float(scene_.film.scale) * pixel.value();
+                out[0] = std::max(0.0f, v.x);
+                out[1] = std::max(0.0f, v.y);
+                out[2] = std::max(0.0f, v.z);
+            }
+        }
+    }
+    counters += local;
+    return true;
+}
+
+std::map<std::string, std::string> PreparedFrame::metadata() const {
+    std::map<std::string, std::string> m = camera_->describe();
+    std::ostringstream crop;
+    crop << area_.x0 << "," << area_.x1 << "," << area_.y0 << "," << area_.y1;
+    m["scene"] = scene_.file;
+    m["resolution"] = std::to_string(width_) + "x" + std::to_string(height_);
+    m["cropPixels"] = crop.str();
+    m["spp"] = std::to_string(spp_);
+    m["seed"] = std::to_string(settings_.seed);
+    static const char* kIntegrators[] = {"path", "directlighting", "whitted"};
+    m["integrator"] = std::string(kIntegrators[int(scene_.integrator.type)]) + " maxdepth " +
+                      std::to_string(scene_.integrator.maxDepth);
+    m["units"] = "world metres, lens millimetres";
+    if (!scene_.film.filename.empty()) m["filmFilename"] = scene_.film.filename;
+    if (!scene_.warnings.empty()) m["warnings"] = joinLines(scene_.warnings);
+    return m;
+}
+
+}  // namespace lenslab

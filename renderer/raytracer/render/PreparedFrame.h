@@ -1,0 +1,80 @@
+#pragma once
+// One frame ready to render: the scene parsed, the camera (pupil bounds, focus) and the Embree
+// scene built, the tiles listed. Any process holding the same settings builds the same frame, and
+// a pixel's value depends only on (seed, pixel, sample), so tiles rendered by different threads,
+// processes or machines combine into exactly the image of a single-process render.
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cameras/Camera.h"
+#include "integrators/Integrator.h"
+#include "film/PixelFilter.h"
+#include "Render.h"
+#include "scene/SceneDescription.h"
+#include "geometry/SceneGeometry.h"
+#include "render/TileScheduler.h"
+
+namespace lenslab {
+
+// What a tile's rendering counted, summed into RenderStats.
+struct TileCounters {
+    std::uint64_t cameraRays = 0, blockedCameraRays = 0, raysTraced = 0;
+    TileCounters& operator+=(const TileCounters& o) {
+        cameraRays += o.cameraRays;
+        blockedCameraRays += o.blockedCameraRays;
+        raysTraced += o.raysTraced;
+        return *this;
+    }
+};
+
+class PreparedFrame {
+public:
+    // Throws SceneError, OpticsError. Uses settings.threads threads (0 = all cores) here and in
+    // arena(); the camera setup runs inside it.
+    // A set *cancel stops the camera's setup too (RenderCancelled).
+    explicit PreparedFrame(const RenderSettings& settings, const std::atomic<bool>* cancel = nullptr);
+    PreparedFrame(const PreparedFrame&) = delete;
+    PreparedFrame& operator=(const PreparedFrame&) = delete;
+
+    // Tiles in full-image pixel coordinates, row-major.
+    const std::vector<PixelRect>& tiles() const { return tiles_; }
+    // The rendered (cropped) area in full-image pixels; the output image is its size.
+    const PixelRect& area() const { return area_; }
+    int imageWidth() const { return area_.x1 - area_.x0; }
+    int imageHeight() const { return area_.y1 - area_.y0; }
+    tbb::task_arena& arena() { return arena_; }
+    double setupSeconds() const { return setupSeconds_; }
+
+    // Renders the pixels of `rect` (full-image coordinates) into dst: RGB floats, dst[0] is the
+    // pixel (rect.x0, rect.y0), rows rowStride floats apart. Safe to call from many threads for
+    // disjoint rects. Stops early (leaving later rows unwritten, returning false) once *cancel
+    // turns true.
+    bool renderRect(const PixelRect& rect, float* dst, std::size_t rowStride, TileCounters& counters,
+                    const std::atomic<bool>* cancel = nullptr) const;
+
+    // Camera and lens parameters, scene, resolution, spp, seed: the image's metadata.
+    std::map<std::string, std::string> metadata() const;
+
+private:
+    std::chrono::steady_clock::time_point start_;  // setupSeconds counts from here, the scene parse included
+    RenderSettings settings_;
+    SceneDescription scene_;
+    int width_ = 0, height_ = 0, spp_ = 0;
+    PixelRect area_;
+    std::vector<PixelRect> tiles_;
+    tbb::task_arena arena_;
+    PixelFilter filter_;
+    std::unique_ptr<Camera> camera_;
+    std::unique_ptr<SceneGeometry> geometry_;
+    std::unique_ptr<Integrator> integrator_;
+    double setupSeconds_ = 0;
+};
+
+}  // namespace lenslab
