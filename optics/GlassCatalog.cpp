@@ -22,13 +22,14 @@ struct Maker {
     std::string_view name;
     std::array<std::string_view, 4> prefixes;
 };
-constexpr std::array<Maker, 6> kMakers{{
+constexpr std::array<Maker, 7> kMakers{{
     {"SCHOTT", {"N", "P"}},             // N: lead- and arsenic-free; P: precision moulding
     {"OHARA", {"S", "L"}},              // S: the eco line; L: low Tg, moulding
     {"HOYA", {"E", "M", "MC", "MP"}},   // E: eco; M, MC, MP: moulding
     {"CDGM", {"H", "D"}},               // H: eco; D: moulding
     {"HIKARI", {"J", "E", "Q", "P"}},   // J: today's eco line; E: the earlier one; Q, P: moulding
     {"SUMITA", {"K"}},
+    {"MISC", {}},                       // Zemax's MISC: fused silica and crystals, measured, no maker
 }};
 constexpr std::size_t kSuggestions = 5;
 

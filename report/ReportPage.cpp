@@ -62,6 +62,12 @@ const Row kRows[] = {
     {"Film plane, thick lens", "focus.image_z_thick", 4, "mm", "z, lens formula"},
     {"Exact minus thick", "focus.image_z_difference", 4, "mm", ""},
     {"RMS spot radius", "focus.rms_spot_radius", 4, "mm", "at the exact focus"},
+    {"Wavelength", "wavelength_nm", 2, "nm", "of the figures above"},
+    {"EFL at F (486.13 nm)", "chromatic.efl_F", 4, "mm", ""},
+    {"EFL at C (656.27 nm)", "chromatic.efl_C", 4, "mm", ""},
+    {"Longitudinal colour", "chromatic.longitudinal_colour_mm", 4, "mm", "image z at C minus at F"},
+    {"Lateral colour", "chromatic.lateral_colour_mm", 4, "mm", "F minus C chief-ray height at the largest field"},
+    {"Largest field", "chromatic.lateral_colour_field_deg", 2, "deg", "where the lateral colour is measured"},
 };
 
 std::string rate(double perSecond) {

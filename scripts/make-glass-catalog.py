@@ -9,7 +9,9 @@ commit hash recorded in the output names exactly what was converted. Needs pytho
 Only the six makers' optical catalogs are taken (database/data/specs/<maker>/...), every folder
 except Schott's infrared glasses (chalcogenides measured from 0.6-1 um, opaque in the visible).
 A glass needs a dispersion formula and the maker's published nd and Vd; the others are skipped
-and counted. The coefficients are rewritten into the two layouts optics/Medium.h documents, so
+and counted. A seventh catalog, MISC, holds the few materials lens files name under Zemax's MISC
+catalog (fused silica, the fluoride crystals, sapphire), from the measurements the database cites;
+their nd and Vd are computed from the formula, as no maker publishes them. The coefficients are rewritten into the two layouts optics/Medium.h documents, so
 the C++ side reads numbers and never exponents:
 
   Sellmeier         A B1 C1 B2 C2 ...       n^2 = 1 + A + sum Bi L^2 / (L^2 - Ci)   (L in um, Ci in um^2)
@@ -29,6 +31,12 @@ import yaml
 
 REPOSITORY = "https://github.com/polyanskiy/refractiveindex.info-database"
 MAKERS = ["schott", "ohara", "hoya", "cdgm", "hikari", "sumita"]  # the order lookups use by default
+# MISC: (name as Zemax's MISC catalog writes it, the database's measurement of it).
+MISC = [("SILICA", "database/data/main/SiO2/nk/Malitson.yml"),      # Malitson 1965, fused silica
+        ("CAF2", "database/data/main/CaF2/nk/Malitson.yml"),        # Malitson 1963
+        ("BAF2", "database/data/main/BaF2/nk/Malitson.yml"),        # Malitson 1964
+        ("SAPPHIRE", "database/data/main/Al2O3/nk/Malitson-o.yml"),  # ordinary ray, Malitson & Dodge 1972
+        ("MGF2", "database/data/main/MgF2/nk/Dodge-o.yml")]         # ordinary ray, Dodge 1984
 SKIPPED_FOLDERS = {("schott", "infrared")}
 POLYNOMIAL_SLOTS = {0: 0, 2: 1, 4: 2, -2: 3, -4: 4, -6: 5, -8: 6, -10: 7, -12: 8}
 MAX_COEFFICIENTS = 12  # std::array<double, 12> in optics/Medium.h
@@ -80,10 +88,10 @@ def trimmed(tokens):
     return tokens
 
 
-def glass_row(maker, name, document):
+def glass_row(maker, name, document, computed_nd_vd=False):
     properties = document.get("PROPERTIES") or {}
     formulas = [d for d in document.get("DATA", []) if d["type"].startswith("formula")]
-    if len(formulas) != 1 or "nd" not in properties or "Vd" not in properties:
+    if len(formulas) != 1 or (not computed_nd_vd and ("nd" not in properties or "Vd" not in properties)):
         return None
     data = formulas[0]
     converted = convert_formula(data["type"], str(data["coefficients"]).split())
@@ -94,6 +102,9 @@ def glass_row(maker, name, document):
     if len(coefficients) > MAX_COEFFICIENTS:
         raise ValueError(f"{maker} {name}: {len(coefficients)} coefficients")
     low, high = (float(v) * 1000 for v in str(data["wavelength_range"]).split())
+    if computed_nd_vd:
+        nd, nf, nc = (refractive_index(formula, coefficients, nm) for nm in (587.5618, 486.1327, 656.2725))
+        properties = {"nd": round(nd, 6), "Vd": round((nd - 1) / (nf - nc), 4)}
     return {"maker": maker.upper(), "name": name, "formula": formula, "coefficients": coefficients,
             "min": low, "max": high, "nd": float(properties["nd"]), "vd": float(properties["Vd"])}
 
@@ -126,6 +137,12 @@ def main():
             if problem:
                 raise SystemExit(problem)
             rows.append(row)
+    for name, path in MISC:
+        row = glass_row("misc", name, yaml.safe_load(git(args.git_dir, "show", "HEAD:" + path)), computed_nd_vd=True)
+        problem = check(row)
+        if problem:
+            raise SystemExit(problem)
+        rows.append(row)
 
     keys = [(r["maker"], re.sub(r"[\s_-]", "", r["name"]).upper()) for r in rows]
     if len(set(keys)) != len(keys):  # optics/GlassCatalog.cpp matches names without these
@@ -145,7 +162,7 @@ def main():
         n = [refractive_index(r["formula"], r["coefficients"], nm) for nm in (587.5618, 486.1327, 656.2725)]
         return abs(n[0] - r["nd"]) if key == "nd" else abs((n[0] - 1) / (n[1] - n[2]) - r["vd"])
     worst = {k: max(rows, key=lambda r: deviation(r, k)) for k in ("nd", "vd")}
-    counts = {m.upper(): sum(r["maker"] == m.upper() for r in rows) for m in MAKERS}
+    counts = {m.upper(): sum(r["maker"] == m.upper() for r in rows) for m in MAKERS + ["misc"]}
     print(f"{len(rows)} glasses from commit {commit[:12]} ({date}), {skipped} skipped without a formula"
           f" or published nd/Vd: {counts}", file=sys.stderr)
     for key, r in worst.items():

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "FirstOrder.h"
 #include "LensAnalysis.h"
@@ -73,6 +74,18 @@ TEST(RealLenses, WavelengthMovesTheFirstOrderDataAsTheGlassesSay) {
         EXPECT_DOUBLE_EQ(a.lens.wavelength, nm);
         EXPECT_DOUBLE_EQ(a.lens.surfaces[1].indexAfter, n);
     }
+    // The colour block at infinity: F' of each line from the thick lens's back focal distance
+    // BFL = f (1 - (n - 1) t c1 / n); blue focuses nearer the lens, so C - F is negative.
+    auto rearFocusZ = [&](double nm) {
+        const double n = refractiveIndex(lens.surfaces[1].mediumAfter, nm);
+        const double f = 1 / ((n - 1) * (c1 - c2 + (n - 1) * t * c1 * c2 / n));
+        return lens.rearZ() - f * (1 - (n - 1) * t * c1 / n);
+    };
+    const Chromatic colour = analyzeLens(lens, std::nullopt, std::numeric_limits<double>::infinity()).chromatic;
+    EXPECT_NEAR(colour.imageZF, rearFocusZ(kWavelengthF), 1e-8);
+    EXPECT_NEAR(colour.imageZC, rearFocusZ(kWavelengthC), 1e-8);
+    EXPECT_NEAR(colour.longitudinalColour, rearFocusZ(kWavelengthC) - rearFocusZ(kWavelengthF), 1e-8);
+    EXPECT_LT(colour.longitudinalColour, -1);  // about f / Vd = 100 / 64 mm
     // Schott's N-BK7 at the g line, 435.83 nm, is 1.52668: the index the lens is traced with.
     EXPECT_NEAR(atWavelength(lens, 435.8343).surfaces[1].indexAfter, 1.52668, 1e-5);
 }

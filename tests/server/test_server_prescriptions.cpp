@@ -1,0 +1,116 @@
+// Real prescriptions through the service: the bundled .zmx lenses are listed with their glasses,
+// aspheres and mirrors; a wavelength moves the lens data and the diagram (each its own cache entry);
+// colour fans are their own diagram; a UTF-16 .zmx uploads; bad values are 4xx naming the parameter.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "ServerProcess.h"
+
+using namespace lenslab::test;
+using nlohmann::json;
+
+namespace {
+
+class ServerPrescriptions : public ::testing::Test {
+protected:
+    void SetUp() override { server_ = std::make_unique<ServerProcess>(LENSLAB_BINARY, data_.path() + "/data"); }
+    TempDir data_;
+    std::unique_ptr<ServerProcess> server_;
+};
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// UTF-16 LE with a byte order mark, as OpticStudio saves (the text is ASCII).
+std::string utf16(const std::string& ascii) {
+    std::string out = "\xff\xfe";
+    for (char c : ascii) out += std::string{c, '\0'};
+    return out;
+}
+
+}  // namespace
+
+TEST_F(ServerPrescriptions, BundledZemaxLensesAreListedWithTheirSurfaces) {
+    auto c = server_->client();
+    const Reply list = get(c, "/api/lenses");
+    ASSERT_EQ(list.status, 200);
+    bool reflex = false;
+    for (const auto& l : list.body["lenses"]) reflex = reflex || l["id"] == "us4666259-ex1-reflex-500mm";
+    EXPECT_TRUE(reflex);
+    const Reply lens = get(c, "/api/lenses/us4666259-ex1-reflex-500mm");
+    ASSERT_EQ(lens.status, 200) << lens.raw;
+    EXPECT_EQ(lens.body["format"], "zmx");
+    EXPECT_NEAR(lens.body["efl"].get<double>(), 499.482, 0.005);  // the patent's f
+    int mirrors = 0;
+    double obscuration = 0;
+    for (const auto& s : lens.body["surfaces"]) {
+        mirrors += s["mirror"].get<bool>();
+        if (s.contains("obscuration_diameter")) obscuration = s["obscuration_diameter"];
+    }
+    EXPECT_EQ(mirrors, 2);
+    EXPECT_DOUBLE_EQ(obscuration, 38);
+    const Reply sony = get(c, "/api/lenses/us2015-0092100-ex1-55mm");
+    ASSERT_EQ(sony.status, 200);
+    const json& first = sony.body["surfaces"][0];
+    EXPECT_EQ(first["glass"], "model 1.58144/40.9");
+    EXPECT_NEAR(first["nd"].get<double>(), 1.58144, 1e-9);
+    EXPECT_NEAR(first["vd"].get<double>(), 40.9, 1e-6);
+    int aspheres = 0;
+    for (const auto& s : sony.body["surfaces"])
+        for (const auto& a : s["aspheric"]) aspheres += a.get<double>() != 0 ? 1 : 0;
+    EXPECT_GT(aspheres, 5);
+}
+
+TEST_F(ServerPrescriptions, WavelengthMovesTheLensDataAndTheDiagram) {
+    auto c = server_->client();
+    const Reply d = get(c, "/api/lenses/ac254-100-a?fstop=5");
+    const Reply f = get(c, "/api/lenses/ac254-100-a?fstop=5&wavelength=486.1327");
+    ASSERT_EQ(d.status, 200);
+    ASSERT_EQ(f.status, 200) << f.raw;
+    EXPECT_DOUBLE_EQ(d.body["wavelength_nm"].get<double>(), 587.5618);
+    EXPECT_DOUBLE_EQ(f.body["wavelength_nm"].get<double>(), 486.1327);
+    EXPECT_NEAR(f.body["efl"].get<double>(), d.body["chromatic"]["efl_F"].get<double>(), 1e-9);
+    EXPECT_GT(std::fabs(f.body["efl"].get<double>() - d.body["efl"].get<double>()), 0.01);
+
+    const std::string base = "/api/lenses/ac254-100-a/diagram.png?fstop=5&size=600x300";
+    const auto atD = c.Get(base), atF = c.Get(base + "&wavelength=486.1327"), colour = c.Get(base + "&colour=1");
+    ASSERT_EQ(atD->status, 200);
+    ASSERT_EQ(atF->status, 200);
+    ASSERT_EQ(colour->status, 200);
+    EXPECT_NE(atD->body, atF->body);    // a cache keyed without the wavelength would serve d's picture
+    EXPECT_NE(atD->body, colour->body);
+    EXPECT_EQ(c.Get(base + "&wavelength=486.1327")->body, atF->body);
+}
+
+TEST_F(ServerPrescriptions, BadWavelengthAndColourAreRefusedNamingTheParameter) {
+    auto c = server_->client();
+    const Reply far = get(c, "/api/lenses/ac254-100-a?wavelength=1550");
+    EXPECT_EQ(far.status, 422);
+    EXPECT_EQ(far.body["error"], "query parameter wavelength: wavelength 1550 nm lies outside 360-830 nm");
+    EXPECT_EQ(get(c, "/api/lenses/ac254-100-a?wavelength=blue").status, 400);
+    EXPECT_EQ(get(c, "/api/lenses/ac254-100-a/diagram.png?colour=2").status, 400);
+    EXPECT_EQ(get(c, "/api/lenses/ac254-100-a/diagram.png?wavelength=200").status, 422);
+}
+
+TEST_F(ServerPrescriptions, Utf16ZemaxUploadReadsLikeTheFile) {
+    auto c = server_->client();
+    const std::string zmx = readFile(std::string(LENSLAB_SOURCE_DIR) + "/lenses/us2010-0033848-ex1-35mm.zmx");
+    httplib::MultipartFormDataItems items = {{"file", utf16(zmx), "canon-35.zmx", "application/octet-stream"}};
+    const auto uploaded = c.Post("/api/lenses", items);
+    ASSERT_EQ(uploaded->status, 201) << uploaded->body;
+    const std::string id = json::parse(uploaded->body)["id"];
+    const Reply lens = get(c, "/api/lenses/" + id);
+    ASSERT_EQ(lens.status, 200);
+    EXPECT_EQ(lens.body["format"], "zmx");
+    EXPECT_NEAR(lens.body["efl"].get<double>(), 34.59, 0.005);  // US 2010/0033848 Example 1's f
+    // A broken one is a 4xx naming the file's line.
+    const auto bad = c.Post("/api/lenses", httplib::MultipartFormDataItems{{"file", "VERS 1\nMODE SEQ\nSURF 0\n  TYPE COORDBRK\n", "bad.zmx", "text/plain"}});
+    EXPECT_EQ(bad->status, 400);
+    EXPECT_NE(bad->body.find("bad.zmx:4"), std::string::npos) << bad->body;
+}
