@@ -114,6 +114,7 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
         boundedNumber(p, "--keep-gb", static_cast<double>(c.retention.keepBytes) / (1 << 30), 0, 1e6) * (1 << 30));
     c.maxDataBytes = static_cast<std::uintmax_t>(
         boundedNumber(p, "--max-data-gb", static_cast<double>(c.maxDataBytes) / (1 << 30), 0, 1e6) * (1 << 30));
+    c.maxDataBytesGiven = p.has("--max-data-gb");
     c.access.tokenFile = p.get("--token-file");
     c.access.privateReads = p.has("--private-reads");
     c.access.allowedOrigins = p.get("--allow-origin");
