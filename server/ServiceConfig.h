@@ -35,6 +35,7 @@ struct AccessPolicy {
     std::string token;                   // empty: no token asked for (loopback, or --no-auth)
     bool privateReads = false;
     std::string allowedOrigins;          // comma-separated origins besides the server's own
+    std::string allowedHosts;            // comma-separated names the server answers to besides addresses
 };
 
 // How long finished renders are kept (docs/api.md, "Retention"): the oldest go first.
