@@ -33,7 +33,7 @@ public:
 
 HeadWaiter::Limits waiterLimits(const ConnectionLimits& limits) {
     return {limits.stream.maxHeaderBytes, limits.stream.maxBodyWireBytes, limits.stream.headerTimeout,
-            limits.idleTimeout, limits.stream.readTimeout, limits.maxWaiting};
+            limits.idleTimeout, limits.stream.readTimeout, limits.maxWaiting, limits.maxBufferedBytes};
 }
 
 // The length of the request line at the start of `head` (all of it when no line end has come).

@@ -28,6 +28,7 @@ struct ConnectionLimits {
     std::size_t requestsPerConnection = 100;
     std::size_t workers = 32;                     // requests answered at once
     std::size_t maxWaiting = 512;                 // connections between requests or in their head
+    std::size_t maxBufferedBytes = 64 << 20;      // requests received by them, not yet answered
     int listenBacklog = 128;
     std::chrono::seconds trimAfterIdle{10};       // no new connection this long: free memory is returned
 };

@@ -99,11 +99,17 @@ bool HeadWaiter::handOnIfWhole(Entry& entry) {
 }
 
 void HeadWaiter::dropLongestWaiting(std::vector<Entry>& waiting) const {
-    if (waiting.size() <= limits_.maxWaiting) return;
+    std::size_t buffered = 0;
+    for (const Entry& entry : waiting) buffered += entry.connection.pending.size();
+    if (waiting.size() <= limits_.maxWaiting && buffered <= limits_.maxBufferedBytes) return;
     std::sort(waiting.begin(), waiting.end(), [](const Entry& a, const Entry& b) { return a.since < b.since; });
-    const std::size_t excess = waiting.size() - limits_.maxWaiting;
-    for (std::size_t i = 0; i < excess; ++i) closeConnection(waiting[i].connection.socket);
-    waiting.erase(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(excess));
+    std::size_t dropped = 0;
+    for (; dropped < waiting.size() && (waiting.size() - dropped > limits_.maxWaiting || buffered > limits_.maxBufferedBytes);
+         ++dropped) {
+        buffered -= waiting[dropped].connection.pending.size();
+        closeConnection(waiting[dropped].connection.socket);
+    }
+    waiting.erase(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(dropped));
 }
 
 void HeadWaiter::run() {

@@ -4,8 +4,9 @@
 // its request is whole, head and body (or too large, or late: the worker then answers 431 or 408,
 // or ends a body that did not come within the read timeout at once).
 // Kept-alive connections come back here between requests and are closed after the idle timeout.
-// Past maxWaiting connections the ones waiting longest are dropped first: slow clients go before
-// a new client whose head is on its way.
+// Past maxWaiting connections, or maxBufferedBytes received and not yet handed on (bodies wait
+// here too), the ones waiting longest are dropped first: slow clients go before a new client
+// whose request is on its way.
 #include <chrono>
 #include <cstddef>
 #include <functional>
@@ -31,6 +32,7 @@ public:
         std::size_t maxHeaderBytes, maxBodyBytes;
         std::chrono::milliseconds headerTimeout, idleTimeout, readTimeout;
         std::size_t maxWaiting;
+        std::size_t maxBufferedBytes;
     };
     HeadWaiter(const Limits& limits, Ready ready);
     ~HeadWaiter();  // stop()

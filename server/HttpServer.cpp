@@ -63,6 +63,7 @@ ConnectionLimits connectionLimits(const HttpLimits& http, int threads) {
     limits.listenBacklog = http.listenBacklog;
     limits.workers = static_cast<std::size_t>(threads);
     limits.maxWaiting = static_cast<std::size_t>(http.maxConnections);
+    limits.maxBufferedBytes = std::max<std::size_t>(limits.maxBufferedBytes, 4 * limits.stream.maxBodyWireBytes);
     return limits;
 }
 
