@@ -5,16 +5,16 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "HttpError.h"
+#include "AccessControl.h"
 #include "ByteRange.h"
 #include "CrossOrigin.h"
 #include "HostCheck.h"
+#include "HttpError.h"
 #include "HttpReply.h"
 #include "LensDiagram.h"
 #include "LensTable.h"
 #include "OpticsError.h"
 #include "Render.h"
-#include "AccessControl.h"
 #include "RequestChecks.h"
 #include "StorageError.h"
 

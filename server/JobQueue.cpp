@@ -160,7 +160,7 @@ JobQueue::Cancel JobQueue::cancel(const std::string& id) {
         std::lock_guard<std::mutex> jobLock(job->mutex);
         job->record.state = JobState::Cancelled;
         job->record.finished = secondsSinceEpoch();
-        store_.save(job->record);
+        saveOrLog(store_, job->record);  // out of the queue already: the cancel holds in memory
     }
     live_.erase(it);
     return Cancel::Cancelled;
