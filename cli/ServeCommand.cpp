@@ -46,6 +46,13 @@ int serveUntilStopped(ServiceConfig config, std::unique_ptr<JobRenderer> rendere
     // 16 arenas, each keeping its own free holes, and resident memory crept up under steady load
     // (bench/server/RESULTS.md, soak). Two arenas reuse those holes; set before any thread starts.
     ::mallopt(M_ARENA_MAX, 2);
+    // glibc raises its mmap threshold to the largest block freed (up to 32 MB): after the first
+    // large diagram readback or image, such buffers came from the arenas, whose free holes stayed
+    // resident (issue 23: 1.7 GB under distinct-diagram reads). A fixed threshold keeps every large
+    // buffer in its own mapping, returned to the system when freed. 1 MiB: at 256 KiB the mapping
+    // and faulting cost a third of the distinct-size diagram rate, at 4 MiB memory still climbed
+    // (bench/README.md, issue 23).
+    ::mallopt(M_MMAP_THRESHOLD, 1 << 20);
 
     Service service(config, std::move(renderer));
     const int port = service.start();

@@ -79,6 +79,8 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     p.flag("--no-auth", "serve beyond loopback without a token (anyone reaching the port may write)");
     p.flag("--private-reads", "with a token: reads need it too");
     p.option("--allow-origin", "ORIGINS", "comma-separated origins whose pages may call the API (default: none)");
+    p.option("--allow-host", "NAMES", "comma-separated host names the server answers to besides its addresses and "
+             "localhost (others get 421: DNS rebinding)");
     p.option("--mpi-hostfile", "FILE", "run each render through mpirun over these hosts (docs/scaling.md)");
     p.option("--mpi-np", "N", "with --mpi-hostfile: MPI processes per render (default 2)");
     if (!p.parse(args)) {
@@ -114,9 +116,11 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
         boundedNumber(p, "--keep-gb", static_cast<double>(c.retention.keepBytes) / (1 << 30), 0, 1e6) * (1 << 30));
     c.maxDataBytes = static_cast<std::uintmax_t>(
         boundedNumber(p, "--max-data-gb", static_cast<double>(c.maxDataBytes) / (1 << 30), 0, 1e6) * (1 << 30));
+    c.maxDataBytesGiven = p.has("--max-data-gb");
     c.access.tokenFile = p.get("--token-file");
     c.access.privateReads = p.has("--private-reads");
     c.access.allowedOrigins = p.get("--allow-origin");
+    c.access.allowedHosts = p.get("--allow-host");
     if (p.has("--no-auth") && !c.access.tokenFile.empty())
         throw UsageError("serve: --no-auth and --token-file contradict each other");
     if (c.access.privateReads && c.access.tokenFile.empty())

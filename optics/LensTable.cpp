@@ -43,6 +43,12 @@ std::vector<std::string> splitFields(const std::string& s) {
     return fields;
 }
 
+// A field as an error message quotes it: a long one is cut, so a message stays a line long.
+std::string quoted(const std::string& field) {
+    constexpr std::size_t kShown = 40;
+    return "'" + (field.size() > kShown ? field.substr(0, kShown) + "..." : field) + "'";
+}
+
 double parseNumber(const std::string& field, int column, const std::string& file, int line) {
     const char* begin = field.c_str();
     char* end = nullptr;
@@ -50,8 +56,8 @@ double parseNumber(const std::string& field, int column, const std::string& file
     double v = std::strtod(begin, &end);
     if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(v))
         throw LensTableError(file, line, std::string("column ") + std::to_string(column + 1) + " (" +
-                                             kColumnNames[column] + ") is not a finite number: '" +
-                                             field + "'");
+                                             kColumnNames[column] + ") is not a finite number: " +
+                                             quoted(field));
     return v;
 }
 
@@ -88,7 +94,7 @@ LensTableRow parseRow(const std::string& content, const std::string& file, int l
     row.index = parseNumber(fields[2], 2, file, line);
     row.diameter = parseNumber(fields[3], 3, file, line);
     row.stop = row.radius == 0 && row.index == 0;
-    if (row.gap < 0) throw LensTableError(file, line, "negative gap " + fields[1]);
+    if (row.gap < 0) throw LensTableError(file, line, "negative gap " + quoted(fields[1]));
     if (row.diameter <= 0)
         throw LensTableError(file, line, "diameter must be positive, found " + fields[3]);
     if (row.index != 0 && row.index < 1)

@@ -29,11 +29,7 @@ bool sameSecret(const std::string& a, const std::string& b) {
 bool originAllowed(const httplib::Request& req, const AccessPolicy& policy) {
     const std::string origin = req.get_header_value("Origin");
     if (origin.empty()) return true;  // not sent by a browser on another site's behalf
-    if (origin == "http://" + req.get_header_value("Host")) return true;
-    std::stringstream allowed(policy.allowedOrigins);
-    for (std::string entry; std::getline(allowed, entry, ',');)
-        if (!entry.empty() && entry == origin) return true;
-    return false;
+    return origin == "http://" + req.get_header_value("Host") || isListedOrigin(origin, policy);
 }
 
 std::string randomToken() {
@@ -52,6 +48,13 @@ std::string randomToken() {
 
 }  // namespace
 
+bool isListedOrigin(const std::string& origin, const AccessPolicy& policy) {
+    std::stringstream allowed(policy.allowedOrigins);
+    for (std::string entry; std::getline(allowed, entry, ',');)
+        if (!entry.empty() && entry == origin) return true;
+    return false;
+}
+
 std::optional<HttpError> refuseAccess(const httplib::Request& req, const AccessPolicy& policy) {
     if (!originAllowed(req, policy))
         return HttpError(403, "cross-origin requests are refused (origin " + req.get_header_value("Origin").substr(0, 100) +
@@ -68,9 +71,17 @@ std::optional<HttpError> refuseAccess(const httplib::Request& req, const AccessP
 std::string loadOrCreateToken(const std::string& path, bool& created) {
     created = false;
     if (std::ifstream in(path); in) {
-        std::string token;
-        std::getline(in, token);
+        std::string line;
+        std::getline(in, line);
+        // Editors add trailing spaces and CRs, and clients trim header values: the token is the line trimmed.
+        const std::string blanks = " \t\r\n\v\f";
+        const std::size_t first = line.find_first_not_of(blanks), last = line.find_last_not_of(blanks);
+        const std::string token = first == std::string::npos ? "" : line.substr(first, last - first + 1);
         if (token.size() < 16) throw std::runtime_error("the token file '" + path + "' holds no token of 16+ characters");
+        for (unsigned char c : token)
+            if (c <= ' ' || c == 0x7f)
+                throw std::runtime_error("the token in '" + path + "' contains a space or control character; "
+                                         "a token is one word of printable characters");
         return token;
     }
     const std::string token = randomToken();

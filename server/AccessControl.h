@@ -15,6 +15,9 @@ namespace lenslab {
 // The refusal (401 or 403) for a request the policy does not let through, or nullopt.
 std::optional<HttpError> refuseAccess(const httplib::Request& req, const AccessPolicy& policy);
 
+// True for an origin listed in --allow-origin.
+bool isListedOrigin(const std::string& origin, const AccessPolicy& policy);
+
 // Reads the token from `path`, or writes a new random one there (mode 0600) when the file does not
 // exist; `created` says which. std::runtime_error when the file cannot be read or written.
 std::string loadOrCreateToken(const std::string& path, bool& created);

@@ -1,5 +1,6 @@
 #include "DataFolderQuota.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -36,6 +37,13 @@ std::string megabytes(std::uintmax_t bytes) {
 }
 
 }  // namespace
+
+std::uintmax_t quotaWithinDisk(const std::string& folder, std::uintmax_t quota) {
+    std::error_code error;
+    const fs::space_info space = fs::space(folder, error);
+    if (error) return quota;
+    return std::min(quota, folderBytes(folder) + space.available);
+}
 
 DataFolderQuota::DataFolderQuota(std::string folder, std::uintmax_t maxBytes, std::function<void()> collect)
     : folder_(std::move(folder)), maxBytes_(maxBytes), collect_(std::move(collect)) {}

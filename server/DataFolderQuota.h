@@ -11,6 +11,9 @@
 
 namespace lenslab {
 
+// `quota` lowered, when the disk holds less, to the folder's size plus the disk's free space.
+std::uintmax_t quotaWithinDisk(const std::string& folder, std::uintmax_t quota);
+
 class DataFolderQuota {
 public:
     // maxBytes 0: no quota. collect() applies the retention policy.

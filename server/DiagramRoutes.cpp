@@ -1,6 +1,8 @@
 // GET /api/lenses/{id}/diagram.png: the lens cross-section drawn on request and cached by its
 // parameters (lens, mode, f-number, focus, wavelength, colour fans, field height, size).
+#include <charconv>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "HttpError.h"
@@ -13,21 +15,29 @@ namespace lenslab {
 
 namespace {
 
-const int kMinWidth = 200, kMaxWidth = 2400, kMinHeight = 100, kMaxHeight = 1600;
+// The smallest size the diagram's layout (labels, margins) is drawn at.
+const int kMinWidth = 320, kMaxWidth = 2400, kMinHeight = 200, kMaxHeight = 1600;
+
+// Decimal digits only; nullopt for anything else, overflow included.
+std::optional<int> pixels(const std::string& text) {
+    int value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return value;
+}
 
 // "W" (height W/2) or "WxH", in pixels.
 std::pair<int, int> diagramSize(const httplib::Request& req) {
     const auto text = queryText(req, "size");
     if (!text) return {1200, 600};
-    int width = 0, height = 0;
-    char separator = 0, rest = 0;
-    const int fields = std::sscanf(text->c_str(), "%d%c%d%c", &width, &separator, &height, &rest);
-    if (fields == 1) height = width / 2;
-    else if (fields != 3 || separator != 'x') throw HttpError(400, "size must be WIDTH or WIDTHxHEIGHT in pixels");
-    if (width < kMinWidth || width > kMaxWidth || height < kMinHeight || height > kMaxHeight)
+    const std::size_t x = text->find('x');
+    const auto width = pixels(text->substr(0, x));
+    const auto height = x != std::string::npos ? pixels(text->substr(x + 1)) : width ? std::optional<int>(*width / 2) : std::nullopt;
+    if (!width || !height) throw HttpError(400, "size must be WIDTH or WIDTHxHEIGHT in pixels");
+    if (*width < kMinWidth || *width > kMaxWidth || *height < kMinHeight || *height > kMaxHeight)
         throw HttpError(400, "size must lie between " + std::to_string(kMinWidth) + "x" + std::to_string(kMinHeight) +
                                  " and " + std::to_string(kMaxWidth) + "x" + std::to_string(kMaxHeight));
-    return {width, height};
+    return {*width, *height};
 }
 
 DiagramOptions diagramOptions(const httplib::Request& req) {

@@ -2,9 +2,12 @@
 // its newly finished tiles, and the report build's status. Each stream sends an event when
 // something changed (and at least once a second while a job runs, so elapsed time and ETA move),
 // then ends when the job is over; the page falls back to polling when a stream breaks.
+#include <algorithm>
 #include <chrono>
+#include <memory>
 #include <thread>
 
+#include "EventStreamSlots.h"
 #include "HttpError.h"
 #include "Identifiers.h"
 #include "JobJson.h"
@@ -28,14 +31,25 @@ bool writeEvent(httplib::DataSink& sink, const json& data) {
 
 bool isOver(JobState state) { return state == JobState::Done || state == JobState::Failed || state == JobState::Cancelled; }
 
+constexpr std::size_t kStreamsPerClient = 4;
+
 // Streams events until `next` says the job is over, the client leaves or the server stops.
 // `next(changedOnly)` returns the event to send (null: nothing new) and whether the job is over.
+// The stream holds a slot (503 when none is free) until its answer is done.
 template <class Next>
-void streamEvents(httplib::Server& server, httplib::Response& res, Next next) {
+void streamEvents(httplib::Server& server, EventStreamSlots& slots, const httplib::Request& req, httplib::Response& res,
+                  Next next) {
+    std::shared_ptr<void> slot = slots.take(req.remote_addr);
+    if (!slot) {
+        res.set_header("Retry-After", "5");
+        throw HttpError(503, "too many event streams are open (at most " + std::to_string(slots.total()) + ", " +
+                                 std::to_string(slots.perClient()) + " per client); poll the status instead");
+    }
     res.set_header("Cache-Control", "no-store");
     res.set_header("X-Accel-Buffering", "no");
     res.set_chunked_content_provider(
-        "text/event-stream", [&server, next, lastSent = Clock::time_point()](std::size_t, httplib::DataSink& sink) mutable {
+        "text/event-stream",
+        [&server, next, slot, lastSent = Clock::time_point()](std::size_t, httplib::DataSink& sink) mutable {
             for (;;) {
                 if (!server.is_running() || !sink.is_writable()) return false;
                 const bool refresh = Clock::now() - lastSent >= kRefreshEvery;
@@ -56,13 +70,15 @@ void streamEvents(httplib::Server& server, httplib::Response& res, Next next) {
 }  // namespace
 
 void addEventRoutes(httplib::Server& server, ServiceParts& parts) {
-    server.Get(R"(/api/renders/([^/]+)/events)", [&server, &parts](const httplib::Request& req, httplib::Response& res) {
+    const std::size_t streams = static_cast<std::size_t>(std::max(1, parts.config.httpThreads / 4));
+    const auto slots = std::make_shared<EventStreamSlots>(streams, std::min(kStreamsPerClient, streams));
+    server.Get(R"(/api/renders/([^/]+)/events)", [&server, &parts, slots](const httplib::Request& req, httplib::Response& res) {
         const std::string id = req.matches[1];
         if (!isSafeIdentifier(id)) throw HttpError(400, "'" + id.substr(0, 80) + "' is not a valid render id");
         if (!parts.jobs.find(id)) throw HttpError(404, "no render with id '" + id + "'");
         std::size_t tilesSent = 0;
         std::string lastKey;
-        streamEvents(server, res, [&parts, id, tilesSent, lastKey](bool changedOnly) mutable -> std::pair<json, bool> {
+        streamEvents(server, *slots, req, res, [&parts, id, tilesSent, lastKey](bool changedOnly) mutable -> std::pair<json, bool> {
             const auto job = parts.jobs.find(id);
             if (!job) return {json{{"id", id}, {"state", "deleted"}}, true};
             const JobRecord& r = job->record;
@@ -77,9 +93,9 @@ void addEventRoutes(httplib::Server& server, ServiceParts& parts) {
         });
     });
 
-    server.Get("/api/report/events", [&server, &parts](const httplib::Request&, httplib::Response& res) {
+    server.Get("/api/report/events", [&server, &parts, slots](const httplib::Request& req, httplib::Response& res) {
         std::string lastSent;
-        streamEvents(server, res, [&parts, lastSent](bool changedOnly) mutable -> std::pair<json, bool> {
+        streamEvents(server, *slots, req, res, [&parts, lastSent](bool changedOnly) mutable -> std::pair<json, bool> {
             json status = parts.report.status();
             const bool over = status["state"] != "running";
             const std::string text = status.dump();

@@ -6,6 +6,8 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <iostream>
+
 namespace lenslab {
 
 namespace {
@@ -30,7 +32,22 @@ public:
 };
 
 HeadWaiter::Limits waiterLimits(const ConnectionLimits& limits) {
-    return {limits.stream.maxHeaderBytes, limits.stream.headerTimeout, limits.idleTimeout, limits.maxWaiting};
+    return {limits.stream.maxHeaderBytes, limits.stream.maxBodyWireBytes, limits.stream.headerTimeout,
+            limits.idleTimeout, limits.stream.readTimeout, limits.maxWaiting, limits.maxBufferedBytes};
+}
+
+// The length of the request line at the start of `head` (all of it when no line end has come).
+std::size_t requestLineLength(const std::string& head) {
+    const std::size_t end = head.find('\n');
+    return end == std::string::npos ? head.size() : end;
+}
+
+// An answer written without cpp-httplib, for a request it cannot read at all.
+void writeRefusal(int socket, const char* statusLine, const std::string& message) {
+    const std::string body = "{\"error\":\"" + message + "\"}";
+    const std::string reply = std::string("HTTP/1.1 ") + statusLine + "\r\nContent-Type: application/json\r\n"
+                              "Content-Length: " + std::to_string(body.size()) + "\r\nConnection: close\r\n\r\n" + body;
+    (void)::send(socket, reply.data(), reply.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
 }
 
 void closeSocket(int socket) {
@@ -44,10 +61,19 @@ GuardedServer::GuardedServer(const ConnectionLimits& limits)
     : limits_(limits),
       workers_(limits.workers),
       waiter_(waiterLimits(limits), [this](WaitingConnection connection) {
-          workers_.enqueue([this, c = std::make_shared<WaitingConnection>(std::move(connection))] { answer(std::move(*c)); });
+          workers_.enqueue([this, c = std::make_shared<WaitingConnection>(std::move(connection))] {
+              try {
+                  answer(std::move(*c));
+              } catch (const std::exception& e) {  // nothing may end a worker thread, and the process with it
+                  std::cerr << "lenslab serve: a connection failed: " << e.what() << "\n";
+              }
+          });
       }) {
     set_socket_options(exclusiveSocketOptions);
     set_idle_interval(std::chrono::duration_cast<std::chrono::seconds>(limits.trimAfterIdle).count());
+    // The Keep-Alive header states the limits this class enforces.
+    set_keep_alive_timeout(std::chrono::duration_cast<std::chrono::seconds>(limits.idleTimeout).count());
+    set_keep_alive_max_count(limits.requestsPerConnection);
     new_task_queue = [] { return new HandOver; };
 }
 
@@ -69,6 +95,8 @@ void GuardedServer::closeConnections() {
 
 void GuardedServer::closeAfterThisRequest() { closeOnThisThread = true; }
 
+bool GuardedServer::closesAfterThisRequest() { return closeOnThisThread || violationOnThisThread() != StreamViolation::None; }
+
 StreamViolation GuardedServer::violationOnThisThread() {
     return streamOnThisThread ? streamOnThisThread->violation() : StreamViolation::None;
 }
@@ -83,22 +111,27 @@ bool GuardedServer::process_and_close_socket(socket_t socket) {
 }
 
 void GuardedServer::answer(WaitingConnection connection) {
-    GuardedStream stream(connection.socket, limits_.stream, std::move(connection.pending), connection.headDeadline);
+    if (requestLineLength(connection.pending) > CPPHTTPLIB_REQUEST_URI_MAX_LENGTH) {
+        writeRefusal(connection.socket, "414 URI Too Long", "request line too long (at most " +
+                                                                std::to_string(CPPHTTPLIB_REQUEST_URI_MAX_LENGTH) + " bytes)");
+        closeSocket(connection.socket);
+        return;
+    }
+    GuardedStream stream(connection.socket, limits_.stream, std::move(connection.pending), connection.headDeadline,
+                         connection.bodyDeadline);
     streamOnThisThread = &stream;
     closeOnThisThread = false;
     const bool last = connection.served + 1 >= limits_.requestsPerConnection || !is_running();
     bool closed = false;
-    const bool answered = process_request(stream, last, closed, [this](httplib::Request& req) {
-        // Too many ranges: the request is refused (416) before routing, and the refusal itself must
-        // not be cut into those ranges (cpp-httplib applies them to every answer, errors too).
-        if (req.ranges.size() > limits_.maxRanges) req.ranges.clear();
-    });
+    // Ranges are applied by the service to complete answers only (ByteRange.h).
+    const bool answered = process_request(stream, last, closed, [](httplib::Request& req) { req.ranges.clear(); });
     streamOnThisThread = nullptr;
     if (!answered || closed || last || closeOnThisThread || stream.violation() != StreamViolation::None) {
         closeSocket(connection.socket);
         return;
     }
     connection.pending = stream.leftover();
+    connection.bodyDeadline = {};
     ++connection.served;
     waiter_.add(std::move(connection));
 }

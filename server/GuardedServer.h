@@ -5,6 +5,8 @@
 // - accepted connections wait in a HeadWaiter (one thread, poll) until a request head is complete;
 //   only then does a worker read the request, through a GuardedStream (header deadline, header
 //   and body budgets), answer it, and hand the connection back to wait for the next request;
+// - byte ranges are left to the service (cpp-httplib would cut error answers and event streams);
+// - a request line too long to read is answered 414 here (cpp-httplib would close silently);
 // - the listen backlog is raised from its built-in 5;
 // - the listening socket is not shared: without SO_REUSEPORT a second server on the same port
 //   fails to bind instead of taking every other connection.
@@ -25,8 +27,8 @@ struct ConnectionLimits {
     std::chrono::milliseconds idleTimeout{2000};  // keep-alive wait for the next request
     std::size_t requestsPerConnection = 100;
     std::size_t workers = 32;                     // requests answered at once
-    std::size_t maxRanges = 1;                    // byte ranges one request may ask for
     std::size_t maxWaiting = 512;                 // connections between requests or in their head
+    std::size_t maxBufferedBytes = 64 << 20;      // requests received by them, not yet answered
     int listenBacklog = 128;
     std::chrono::seconds trimAfterIdle{10};       // no new connection this long: free memory is returned
 };
@@ -47,6 +49,8 @@ public:
     static StreamViolation violationOnThisThread();
     // Closes the connection once the request being answered on this thread has its answer.
     static void closeAfterThisRequest();
+    // Whether it will be closed (asked for, or a limit broken): its answer says Connection: close.
+    static bool closesAfterThisRequest();
 
 private:
     bool process_and_close_socket(socket_t socket) override;  // on the listening thread: hands it on

@@ -49,8 +49,9 @@ bool isFramingHeader(const std::string& lowerCaseStart) {
 }  // namespace
 
 GuardedStream::GuardedStream(int socket, const StreamLimits& limits, std::string pending,
-                             std::chrono::steady_clock::time_point headDeadline)
-    : socket_(socket), limits_(limits), buffer_(std::move(pending)), headDeadline_(headDeadline) {}
+                             std::chrono::steady_clock::time_point headDeadline,
+                             std::chrono::steady_clock::time_point bodyDeadline)
+    : socket_(socket), limits_(limits), buffer_(std::move(pending)), headDeadline_(headDeadline), bodyDeadline_(bodyDeadline) {}
 
 bool GuardedStream::is_readable() const { return begin_ < buffer_.size() || waitFor(socket_, POLLIN, limits_.readTimeout); }
 
@@ -89,7 +90,7 @@ bool GuardedStream::account(const char* bytes, std::size_t count) {
         if (headBytes_ > limits_.maxHeaderBytes || lineBytes_ > lineLimit) return fail(StreamViolation::HeaderTooLarge);
         if (bytes[i] == '\n') {
             inHead_ = !atLineStart_;  // an empty line ends the head
-            if (!inHead_) bodyDeadline_ = Clock::now() + limits_.readTimeout;
+            if (!inHead_ && bodyDeadline_ == Clock::time_point()) bodyDeadline_ = Clock::now() + limits_.readTimeout;
             bodyFramed_ = bodyFramed_ || isFramingHeader(lineStart_);
             atLineStart_ = true;
             firstLine_ = false;

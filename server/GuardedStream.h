@@ -30,9 +30,9 @@ enum class StreamViolation { None, HeaderTimeout, HeaderTooLarge, BodyTooLarge }
 class GuardedStream : public httplib::Stream {
 public:
     // One request on `socket`, whose first bytes (`pending`) have been read already; its head must
-    // be complete by `headDeadline`.
+    // be complete by `headDeadline`, and its body by `bodyDeadline` (unset: the read timeout after the head).
     GuardedStream(int socket, const StreamLimits& limits, std::string pending,
-                  std::chrono::steady_clock::time_point headDeadline);
+                  std::chrono::steady_clock::time_point headDeadline, std::chrono::steady_clock::time_point bodyDeadline);
 
     StreamViolation violation() const { return violation_; }
     // Bytes received but not read (the start of a pipelined next request).

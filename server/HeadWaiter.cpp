@@ -1,5 +1,7 @@
 #include "HeadWaiter.h"
 
+#include "RequestCompleteness.h"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/socket.h>
@@ -13,10 +15,6 @@ namespace lenslab {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-bool headComplete(const std::string& bytes) {
-    return bytes.find("\r\n\r\n") != std::string::npos || bytes.find("\n\n") != std::string::npos;
-}
 
 void closeConnection(int socket) {
     ::shutdown(socket, SHUT_RDWR);
@@ -41,7 +39,7 @@ HeadWaiter::~HeadWaiter() {
 
 void HeadWaiter::add(WaitingConnection connection) {
     const auto now = Clock::now();
-    Entry entry{std::move(connection), now, now + limits_.idleTimeout, false};
+    Entry entry{std::move(connection), now, now + limits_.idleTimeout, false, false};
     {
         std::lock_guard<std::mutex> lock(mutex_);
         if (stopping_) {
@@ -83,17 +81,35 @@ bool HeadWaiter::receive(Entry& entry) {
         c.headDeadline = Clock::now() + limits_.headerTimeout;
     }
     c.pending.append(chunk, static_cast<std::size_t>(got));
-    if (!headComplete(c.pending) && c.pending.size() <= limits_.maxHeaderBytes) return false;
-    ready_(std::move(c));
-    return true;
+    return handOnIfWhole(entry);
+}
+
+bool HeadWaiter::handOnIfWhole(Entry& entry) {
+    WaitingConnection& c = entry.connection;
+    const Received received = receivedOf(c.pending, limits_.maxBodyBytes);
+    if (received == Received::Whole || (received == Received::Partial && c.pending.size() > limits_.maxHeaderBytes)) {
+        ready_(std::move(c));
+        return true;
+    }
+    if (received == Received::HeadOnly && !entry.headDone) {
+        entry.headDone = true;
+        c.bodyDeadline = Clock::now() + limits_.readTimeout;
+    }
+    return false;
 }
 
 void HeadWaiter::dropLongestWaiting(std::vector<Entry>& waiting) const {
-    if (waiting.size() <= limits_.maxWaiting) return;
+    std::size_t buffered = 0;
+    for (const Entry& entry : waiting) buffered += entry.connection.pending.size();
+    if (waiting.size() <= limits_.maxWaiting && buffered <= limits_.maxBufferedBytes) return;
     std::sort(waiting.begin(), waiting.end(), [](const Entry& a, const Entry& b) { return a.since < b.since; });
-    const std::size_t excess = waiting.size() - limits_.maxWaiting;
-    for (std::size_t i = 0; i < excess; ++i) closeConnection(waiting[i].connection.socket);
-    waiting.erase(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(excess));
+    std::size_t dropped = 0;
+    for (; dropped < waiting.size() && (waiting.size() - dropped > limits_.maxWaiting || buffered > limits_.maxBufferedBytes);
+         ++dropped) {
+        buffered -= waiting[dropped].connection.pending.size();
+        closeConnection(waiting[dropped].connection.socket);
+    }
+    waiting.erase(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(dropped));
 }
 
 void HeadWaiter::run() {
@@ -107,10 +123,7 @@ void HeadWaiter::run() {
                 if (!entry.connection.pending.empty()) {
                     entry.started = true;
                     entry.connection.headDeadline = Clock::now() + limits_.headerTimeout;
-                    if (headComplete(entry.connection.pending)) {
-                        ready_(std::move(entry.connection));
-                        continue;
-                    }
+                    if (handOnIfWhole(entry)) continue;
                 }
                 waiting.push_back(std::move(entry));
             }
@@ -122,7 +135,9 @@ void HeadWaiter::run() {
         std::vector<pollfd> polled{{wakeRead_, POLLIN, 0}};
         for (Entry& entry : waiting) {
             polled.push_back({entry.connection.socket, POLLIN, 0});
-            const auto deadline = entry.started ? entry.connection.headDeadline : entry.idleDeadline;
+            const auto deadline = entry.headDone  ? entry.connection.bodyDeadline
+                                  : entry.started ? entry.connection.headDeadline
+                                                  : entry.idleDeadline;
             wait = std::min(wait, std::max(std::chrono::milliseconds(0),
                                            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now)));
         }
@@ -141,8 +156,9 @@ void HeadWaiter::run() {
             if (polled[i + 1].revents != 0 && receive(entry)) continue;
             if (!entry.started && after >= entry.idleDeadline) {
                 closeConnection(entry.connection.socket);
-            } else if (entry.started && after >= entry.connection.headDeadline) {
-                ready_(std::move(entry.connection));  // late: the worker answers 408
+            } else if (entry.headDone ? after >= entry.connection.bodyDeadline
+                                      : entry.started && after >= entry.connection.headDeadline) {
+                ready_(std::move(entry.connection));  // late: the worker answers 408 or ends it at once
             } else {
                 still.push_back(std::move(entry));
             }

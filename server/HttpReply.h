@@ -12,7 +12,7 @@ namespace lenslab {
 void replyJson(httplib::Response& res, int status, const nlohmann::json& body);
 void replyError(httplib::Response& res, int status, const std::string& message);
 void replyBytes(httplib::Response& res, const std::vector<std::uint8_t>& bytes, const std::string& contentType);
-// Sends a file in full (read once; the files the service serves are small). False if unreadable.
+// Sends a file, read in pieces as the client takes them (byte ranges too). False if unreadable.
 bool replyFile(httplib::Response& res, const std::string& path, const std::string& contentType);
 
 }  // namespace lenslab

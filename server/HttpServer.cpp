@@ -5,13 +5,16 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "AccessControl.h"
+#include "ByteRange.h"
+#include "CrossOrigin.h"
+#include "HostCheck.h"
 #include "HttpError.h"
 #include "HttpReply.h"
 #include "LensDiagram.h"
 #include "LensTable.h"
 #include "OpticsError.h"
 #include "Render.h"
-#include "AccessControl.h"
 #include "RequestChecks.h"
 #include "StorageError.h"
 
@@ -59,8 +62,8 @@ ConnectionLimits connectionLimits(const HttpLimits& http, int threads) {
     limits.requestsPerConnection = static_cast<std::size_t>(http.requestsPerConnection);
     limits.listenBacklog = http.listenBacklog;
     limits.workers = static_cast<std::size_t>(threads);
-    limits.maxRanges = static_cast<std::size_t>(http.maxRanges);
     limits.maxWaiting = static_cast<std::size_t>(http.maxConnections);
+    limits.maxBufferedBytes = std::max<std::size_t>(limits.maxBufferedBytes, 4 * limits.stream.maxBodyWireBytes);
     return limits;
 }
 
@@ -99,30 +102,47 @@ HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log)
     : server_(connectionLimits(config.http, config.httpThreads)) {
     const HttpLimits http = config.http;
     const AccessPolicy access = config.access;
+    const std::string listenHost = config.host;
     server_.set_payload_max_length(http.maxBodyBytes);
     server_.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Cache-Control", "no-cache"}});
-    server_.set_pre_routing_handler([&log, http, access](const httplib::Request& req, httplib::Response& res) {
+    // The checks on a request's head; true when it is answered already (refused, or a CORS preflight).
+    const auto answeredByHead = [&log, http, access, listenHost](const httplib::Request& req, httplib::Response& res) {
         log.requestStarted();
         auto refusal = refuseRequestHead(req, http);
+        if (!refusal) refusal = refuseHost(req, listenHost, access.allowedHosts);
+        if (!refusal && allowListedOrigin(req, res, access)) return true;
         if (!refusal) refusal = refuseAccess(req, access);
-        if (refusal) {
-            if (refusal->status() == 401) res.set_header("WWW-Authenticate", "Bearer");
-            replyError(res, refusal->status(), refusal->what());
-            res.set_header("Connection", "close");
-            GuardedServer::closeAfterThisRequest();  // its body, if any, was not read
-            return httplib::Server::HandlerResponse::Handled;
-        }
-        return httplib::Server::HandlerResponse::Unhandled;
+        if (!refusal) return false;
+        if (refusal->status() == 401) res.set_header("WWW-Authenticate", "Bearer");
+        replyError(res, refusal->status(), refusal->what());
+        GuardedServer::closeAfterThisRequest();  // its body, if any, was not read
+        return true;
+    };
+    server_.set_pre_routing_handler([answeredByHead](const httplib::Request& req, httplib::Response& res) {
+        return answeredByHead(req, res) ? httplib::Server::HandlerResponse::Handled
+                                        : httplib::Server::HandlerResponse::Unhandled;
     });
-    // cpp-httplib cuts a 200 answer to the requested range but leaves its status at 200.
+    // A client waiting for "100 Continue" hears the refusal instead, before it sends the body.
+    server_.set_expect_100_continue_handler([answeredByHead](const httplib::Request& req, httplib::Response& res) {
+        return answeredByHead(req, res) ? res.status : 100;
+    });
     server_.set_post_routing_handler([](const httplib::Request& req, httplib::Response& res) {
-        if (res.status == 200 && req.ranges.size() == 1) res.status = 206;
+        applyByteRange(req.get_header_value("Range"), res);
+        if (GuardedServer::closesAfterThisRequest()) {
+            res.headers.erase("Keep-Alive");
+            res.headers.erase("Connection");
+            res.headers.emplace("Connection", "close");
+        }
     });
     server_.set_logger([&log](const httplib::Request& req, const httplib::Response& res) { log.requestFinished(req, res); });
     server_.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr error) {
         replyForException(res, error);
     });
     server_.set_error_handler([http](const httplib::Request&, httplib::Response& res) {
+        // An empty body: cpp-httplib itself refused the request, which it could not read (request
+        // line, headers, range syntax). Bytes after it cannot be trusted to start a request.
+        if (res.body.empty() && (res.status == 400 || res.status == 414 || res.status == 416))
+            GuardedServer::closeAfterThisRequest();
         const StreamViolation violation = GuardedServer::violationOnThisThread();
         if (violation != StreamViolation::None) return replyForViolation(res, violation, http);
         if (res.status == 413) return replyBodyTooLarge(res, http);

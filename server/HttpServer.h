@@ -1,7 +1,8 @@
 #pragma once
 // The HTTP front: cpp-httplib behind GuardedServer with the service's limits (workers, header and
 // body budgets, timeouts, ranges), the checks on each request's head (framing, encodings, ranges,
-// access), every failure answered as JSON {"error": ...}, the access log, and a listening thread.
+// Host, access, CORS; also before "100 Continue"), byte ranges applied to complete answers only,
+// every failure answered as JSON {"error": ...}, the access log, and a listening thread.
 #include <httplib.h>
 
 #include <string>

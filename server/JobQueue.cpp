@@ -1,9 +1,13 @@
 #include "JobQueue.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <filesystem>
+#include <iostream>
 
 #include "AtomicFile.h"
+#include "StorageError.h"
 #include "WallClock.h"
 
 namespace lenslab {
@@ -21,6 +25,27 @@ std::string withoutServerPaths(std::string message, const RenderJobInput& job) {
     return message;
 }
 
+// A worker thread must outlive a full or read-only disk: a record that cannot be saved is logged
+// and the job goes on in memory. Returns why it was not saved, in the client's words, or nullopt.
+std::optional<std::string> saveOrLog(JobStore& store, const JobRecord& record) {
+    try {
+        store.save(record);
+        return std::nullopt;
+    } catch (const StorageError& e) {
+        std::cerr << "lenslab serve: render " << record.id << " could not be saved: " << e.detail() << "\n";
+        return std::string(e.what());
+    } catch (const std::exception& e) {
+        std::cerr << "lenslab serve: render " << record.id << " could not be saved: " << e.what() << "\n";
+        return std::string("the server could not record the render; try again later");
+    }
+}
+
+}  // namespace
+
+namespace {
+
+constexpr std::chrono::seconds kPreviewInterval{1};
+
 }  // namespace
 
 struct JobQueue::LiveJob {
@@ -33,6 +58,7 @@ struct JobQueue::LiveJob {
     int partialVersion = 0;
     std::vector<std::uint8_t> previewPng;
     int previewVersion = -1;
+    std::chrono::steady_clock::time_point previewEncodedAt;
 };
 
 namespace {
@@ -134,7 +160,7 @@ JobQueue::Cancel JobQueue::cancel(const std::string& id) {
         std::lock_guard<std::mutex> jobLock(job->mutex);
         job->record.state = JobState::Cancelled;
         job->record.finished = secondsSinceEpoch();
-        store_.save(job->record);
+        saveOrLog(store_, job->record);  // out of the queue already: the cancel holds in memory
     }
     live_.erase(it);
     return Cancel::Cancelled;
@@ -148,7 +174,9 @@ std::optional<std::vector<std::uint8_t>> JobQueue::preview(const std::string& id
     {
         std::lock_guard<std::mutex> lock(job->mutex);
         if (job->partialVersion == 0) return std::nullopt;
-        if (job->previewVersion == job->partialVersion) return job->previewPng;
+        // Encoding a large image costs a good part of a second: readers get one at most per interval.
+        const bool fresh = std::chrono::steady_clock::now() - job->previewEncodedAt < kPreviewInterval;
+        if (job->previewVersion == job->partialVersion || (job->previewVersion >= 0 && fresh)) return job->previewPng;
         snapshot = job->partial;
         version = job->partialVersion;
     }
@@ -157,6 +185,7 @@ std::optional<std::vector<std::uint8_t>> JobQueue::preview(const std::string& id
     if (version > job->previewVersion) {
         job->previewPng = png;
         job->previewVersion = version;
+        job->previewEncodedAt = std::chrono::steady_clock::now();
     }
     return png;
 }
@@ -166,7 +195,11 @@ JobQueue::Removal JobQueue::removeFinished(const std::string& id) {
     if (live_.count(id)) return Removal::Live;
     if (!store_.find(id)) return Removal::NotFound;
     // Files first: a row without files reads as "image gone", files without a row would be lost.
-    for (const char* format : {"png", "exr"}) std::filesystem::remove(imagePath(id, format));
+    for (const char* format : {"png", "exr"}) {
+        std::error_code error;
+        std::filesystem::remove(imagePath(id, format), error);
+        if (error) throw StorageError(storageErrorKind(error.value()), "cannot delete " + imagePath(id, format) + ": " + error.message());
+    }
     store_.remove(id);
     return Removal::Removed;
 }
@@ -210,6 +243,7 @@ void JobQueue::shutdown() {
 void JobQueue::work() {
     for (;;) {
         std::shared_ptr<LiveJob> job;
+        std::optional<std::string> notStarted;
         {
             std::unique_lock<std::mutex> lock(mutex_);
             wake_.wait(lock, [&] { return stopping_ || !waiting_.empty(); });
@@ -219,16 +253,26 @@ void JobQueue::work() {
             std::lock_guard<std::mutex> jobLock(job->mutex);
             job->record.state = JobState::Running;
             job->record.started = secondsSinceEpoch();
-            store_.save(job->record);
+            notStarted = saveOrLog(store_, job->record);
         }
-        runJob(job);
+        if (notStarted) {
+            std::lock_guard<std::mutex> lock(job->mutex);
+            job->record.state = JobState::Failed;
+            job->record.error = *notStarted;
+        } else {
+            runJob(job);
+        }
         finish(job);
         std::function<void()> afterJob;
         {
             std::lock_guard<std::mutex> lock(mutex_);
             afterJob = afterJob_;
         }
-        if (afterJob) afterJob();
+        try {
+            if (afterJob) afterJob();
+        } catch (const std::exception& e) {
+            std::cerr << "lenslab serve: after render " << job->record.id << ": " << e.what() << "\n";
+        }
     }
 }
 
@@ -276,7 +320,7 @@ void JobQueue::finish(const std::shared_ptr<LiveJob>& job) {
         } else {
             job->record.finished = secondsSinceEpoch();
         }
-        store_.save(job->record);
+        saveOrLog(store_, job->record);
     }
     std::lock_guard<std::mutex> lock(mutex_);
     live_.erase(job->record.id);

@@ -60,7 +60,7 @@ public:
     Cancel cancel(const std::string& id);
 
     // Deletes a finished job: its image files, then its row. NotFound for unknown ids, Live for
-    // jobs still waiting or running (cancel those first).
+    // jobs still waiting or running (cancel those first). StorageError when a file cannot be deleted.
     enum class Removal { Removed, Live, NotFound };
     Removal removeFinished(const std::string& id);
     // Bytes of a finished job's files on disk.

@@ -20,6 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+std::string printableText(const std::string& text);
+
 // Builds the geometry and the widest-aperture, infinity-focus data every listing shows.
 std::shared_ptr<StoredLens> describeLens(const LensTable& table) {
     auto lens = std::make_shared<StoredLens>();
@@ -31,7 +33,7 @@ std::shared_ptr<StoredLens> describeLens(const LensTable& table) {
     if (!table.comments.empty()) {
         std::string d = table.comments.front();
         d.erase(0, d.find_first_not_of(' '));
-        lens->description = d;
+        lens->description = printableText(d);
     }
     return lens;
 }
@@ -63,6 +65,18 @@ bool isInvisibleControl(const std::string& character) {
     if (character.size() == 3 && b(0) == 0xe2 && b(1) == 0x80 && (b(2) >= 0xaa && b(2) <= 0xae)) return true;
     if (character.size() == 3 && b(0) == 0xe2 && b(1) == 0x81 && (b(2) >= 0xa6 && b(2) <= 0xa9)) return true;
     return character == "\xef\xbb\xbf";  // byte order mark
+}
+
+// `text` without malformed UTF-8, control characters and bidirectional overrides.
+std::string printableText(const std::string& text) {
+    std::string kept;
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t length = utf8SequenceLength(text, at);
+        if (length > 1 && !isInvisibleControl(text.substr(at, length))) kept += text.substr(at, length);
+        else if (length == 1) kept += text[at];
+        at += std::max<std::size_t>(length, 1);
+    }
+    return kept;
 }
 
 }  // namespace

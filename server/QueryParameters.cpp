@@ -30,10 +30,12 @@ std::optional<std::string> queryText(const httplib::Request& req, const std::str
 std::optional<double> queryNumber(const httplib::Request& req, const std::string& name, double min, double max) {
     const auto text = queryText(req, name);
     if (!text) return std::nullopt;
+    // Plain decimal only: strtod would also take hexadecimal ("0x10"), and stop at a NUL ("4%00").
+    const bool decimal = text->find_first_not_of("0123456789+-.eE") == std::string::npos;
     char* end = nullptr;
     errno = 0;
     const double x = std::strtod(text->c_str(), &end);
-    if (text->empty() || *end != '\0' || errno == ERANGE || !std::isfinite(x))
+    if (text->empty() || !decimal || end != text->c_str() + text->size() || errno == ERANGE || !std::isfinite(x))
         throw HttpError(400, name + " must be a number, got " + shown(*text));
     if (x < min || x > max)
         throw HttpError(400, name + " must lie between " + formatNumber(min) + " and " + formatNumber(max) + ", got " +

@@ -66,7 +66,7 @@ RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, c
     r.lens = identifierField(body, "lens", r.lens);
     constexpr double kAny = std::numeric_limits<double>::max();  // lens settings' ranges are optics' to check
     r.fstop = fieldNumber(body, "fstop", -kAny, kAny);
-    r.focusDistance = fieldNumber(body, "focaldistance", -kAny, kAny);
+    r.focusDistance = fieldNumber(body, "focaldistance", 1, 1e7);
     r.filmDiagonal = fieldNumber(body, "filmdiagonal", 1, 500);
     r.mode = fieldText(body, "mode", r.mode);
     const std::optional<LensMode> mode = parseLensMode(r.mode);

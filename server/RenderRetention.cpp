@@ -1,7 +1,10 @@
 #include "RenderRetention.h"
 
+#include <iostream>
 #include <numeric>
 #include <vector>
+
+#include "StorageError.h"
 
 namespace lenslab {
 
@@ -16,7 +19,13 @@ int collectRenders(JobQueue& jobs, const JobStore& store, const RetentionPolicy&
         const bool tooOld = finished[i].finished.value_or(finished[i].created) < oldestKept;
         const bool overSize = policy.keepBytes > 0 && total > policy.keepBytes;
         if (!tooOld && !overSize) break;
-        if (jobs.removeFinished(finished[i].id) != JobQueue::Removal::Removed) continue;
+        try {
+            if (jobs.removeFinished(finished[i].id) != JobQueue::Removal::Removed) continue;
+        } catch (const StorageError& e) {
+            // Runs on render threads: a file that cannot be deleted is left for the operator.
+            std::cerr << "lenslab serve: retention: " << e.detail() << "\n";
+            continue;
+        }
         total -= bytes[i];
         ++removed;
     }

@@ -1,6 +1,8 @@
 // /api/report: build the report site served at /report/ as a job (POST), follow it (GET), stop it
 // (DELETE). The body may name lenses: bundled ids limit the report to those, uploaded ids are added
 // to it (naming only uploads gives every bundled lens plus them); and the quality and the size.
+#include <set>
+
 #include "HttpError.h"
 #include "HttpReply.h"
 #include "ReportJob.h"
@@ -21,8 +23,14 @@ int boundedInteger(const json& body, const char* name, int fallback, int lo, int
     return v.get<int>();
 }
 
+// More ids than this in "lenses" is refused: each lens costs the build minutes of rendering.
+constexpr std::size_t kMaxReportLenses = 64;
+
 ReportOptions reportOptions(const ServiceParts& parts, const json& body) {
     if (!body.is_object()) throw HttpError(400, "the body must be a JSON object (or empty)");
+    for (const auto& item : body.items())
+        if (item.key() != "quick" && item.key() != "spp" && item.key() != "width" && item.key() != "lenses")
+            throw HttpError(400, "unknown field '" + item.key().substr(0, 40) + "' (quick, spp, width and lenses are known)");
     ReportOptions o;
     o.outputDir = parts.config.reportDir;
     o.lensDir = parts.config.lensesDir;
@@ -36,8 +44,12 @@ ReportOptions reportOptions(const ServiceParts& parts, const json& body) {
     o.width = boundedInteger(body, "width", o.width, 16, parts.config.limits.maxWidth);
     if (body.contains("lenses")) {
         if (!body["lenses"].is_array()) throw HttpError(400, "lenses must be an array of lens ids");
+        if (body["lenses"].size() > kMaxReportLenses)
+            throw HttpError(400, "lenses may name at most " + std::to_string(kMaxReportLenses) + " lenses");
+        std::set<std::string> named;
         for (const json& id : body["lenses"]) {
             if (!id.is_string()) throw HttpError(400, "lenses must be an array of lens ids");
+            if (!named.insert(id.get<std::string>()).second) continue;  // named twice: built once
             const auto lens = findLens(parts, id.get<std::string>());
             if (lens->bundled) o.lenses.push_back(lens->id);
             else o.extraLenses.push_back(lens->path);

@@ -6,6 +6,7 @@
 #include "AtomicFile.h"
 #include "RenderJobResolver.h"
 #include "RenderRetention.h"
+#include "StorageError.h"
 #include "WallClock.h"
 
 namespace lenslab {
@@ -22,6 +23,16 @@ std::string databasePath(const ServiceConfig& config) {
     return (fs::path(config.dataDir) / "lenslab.db").string();
 }
 
+// The quota the operator gave, or the default lowered to what the disk has room for (said at start).
+std::uintmax_t dataQuota(const ServiceConfig& config) {
+    if (config.maxDataBytesGiven || config.maxDataBytes == 0) return config.maxDataBytes;
+    const std::uintmax_t quota = quotaWithinDisk(config.dataDir, config.maxDataBytes);
+    if (quota < config.maxDataBytes)
+        std::cerr << "lenslab serve: data folder quota " << quota / 1000000 << " MB (the disk's free space and what the "
+                  << "folder holds; less than the default " << config.maxDataBytes / 1000000 << " MB; --max-data-gb sets it)\n";
+    return quota;
+}
+
 }  // namespace
 
 Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> renderer)
@@ -35,13 +46,10 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
       jobStore_(database_),
       renderer_(std::move(renderer)),
       jobs_(jobStore_, *renderer_, config.limits, (fs::path(config.dataDir) / "renders").string()),
-      quota_(config.dataDir, config.maxDataBytes, [this] { collectFinishedRenders(); }),
+      quota_(config.dataDir, dataQuota(config), [this] { collectFinishedRenders(); }),
       parts_{config_, lenses_, scenes_, diagrams_, jobs_, report_, quota_, secondsSinceEpoch()},
       http_(config_, accessLog_) {
-    const int interrupted = jobStore_.markInterrupted();
-    if (interrupted > 0) std::cerr << "lenslab serve: " << interrupted << " render(s) were interrupted; marked failed\n";
-    restoreQueuedJobs();
-    collectFinishedRenders();
+    recoverJobs();
     jobs_.setAfterJob([this] { collectFinishedRenders(); });
     addHealthRoutes(http_.routes(), parts_);
     addLensRoutes(http_.routes(), parts_);
@@ -55,6 +63,19 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
 }
 
 Service::~Service() { stop(); }
+
+void Service::recoverJobs() {
+    try {
+        const int interrupted = jobStore_.markInterrupted();
+        if (interrupted > 0) std::cerr << "lenslab serve: " << interrupted << " render(s) were interrupted; marked failed\n";
+        restoreQueuedJobs();
+        collectFinishedRenders();
+    } catch (const StorageError& e) {
+        // A full or read-only disk must not keep the service down: reads work, writes say why.
+        std::cerr << "lenslab serve: the data folder cannot be written (" << e.detail() << "); serving anyway: "
+                  << e.what() << "\n";
+    }
+}
 
 void Service::restoreQueuedJobs() {
     for (JobRecord record : jobStore_.queued()) {

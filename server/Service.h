@@ -31,6 +31,7 @@ public:
     void stop();
 
 private:
+    void recoverJobs();  // after an abrupt stop; tolerates a data folder that cannot be written
     void restoreQueuedJobs();
     void collectFinishedRenders();  // by the retention policy
 

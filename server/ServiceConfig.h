@@ -35,6 +35,7 @@ struct AccessPolicy {
     std::string token;                   // empty: no token asked for (loopback, or --no-auth)
     bool privateReads = false;
     std::string allowedOrigins;          // comma-separated origins besides the server's own
+    std::string allowedHosts;            // comma-separated names the server answers to besides addresses
 };
 
 // How long finished renders are kept (docs/api.md, "Retention"): the oldest go first.
@@ -58,6 +59,7 @@ struct ServiceConfig {
     AccessPolicy access;
     int maxUploadedLenses = 500;
     std::uintmax_t maxDataBytes = 10ull << 30;  // data folder at most; then uploads and renders get 507 (0: no quota)
+    bool maxDataBytesGiven = false;             // false: the default, lowered to what the disk holds
     std::size_t diagramCacheBytes = 64u << 20;
     int httpThreads = 32;
     std::string mpiHostfile;     // non-empty: renders run through mpirun over these hosts

@@ -59,6 +59,7 @@ void addStaticRoutes(httplib::Server& server, ServiceParts& parts) {
         res.set_content(std::string(req.matches[1]).empty() ? kNoReportPage : kNotFoundPage, "text/html; charset=utf-8");
     });
     server.Get(std::string("/") + kSafeRelativePath, [&parts](const httplib::Request& req, httplib::Response& res) {
+        if (req.path.rfind("/api/", 0) == 0) return replyError(res, 404, "no such API path (docs/api.md lists them)");
         if (serveInside(parts.config.webDir, req.matches[1], res)) return;
         res.status = 404;
         res.set_content(kNotFoundPage, "text/html; charset=utf-8");

@@ -1,9 +1,10 @@
-// Soak test of `lenslab serve` on loopback: 16 keep-alive clients send a fixed mix of requests for
+// Soak test of `lenslab serve` on loopback: 16 (or CLIENTS) keep-alive clients send a fixed mix of requests for
 // a set time (cached and never-seen diagrams, lists, render submissions) while the server's
 // resident memory, diagram cache size and data-folder size are sampled every 10 s. Memory must
 // level off: a steady climb under the same mix is a leak or unbounded growth. A single kind of
 // request instead of the mix tells which kind a climb comes from.
-// usage: server_soak [SECONDS (default 1800)] [mixed|hits|misses|lists|renders] [LENSLAB_BINARY]
+// usage: server_soak [SECONDS (default 1800)] [mixed|hits|misses|sizes|lists|renders] [LENSLAB_BINARY] [CLIENTS (16)]
+// ("sizes": never-seen diagrams, each of another size)
 // (prints Markdown)
 #include <httplib.h>
 
@@ -26,10 +27,9 @@ using Clock = std::chrono::steady_clock;
 using nlohmann::json;
 using namespace lenslab::bench;
 
-constexpr int kClients = 16;
 constexpr int kSampleSeconds = 10;
 
-enum class Kind { CachedDiagram, NewDiagram, LensListOrHealth, RenderList, RenderSubmission };
+enum class Kind { CachedDiagram, NewDiagram, NewSizedDiagram, LensListOrHealth, RenderList, RenderSubmission };
 
 // The mix, chosen by the request's index: 55% cached diagrams (24 parameter sets), 25% diagrams
 // never asked before (each one drawn), 10% lens list and health, 5% render list, 5% render
@@ -47,9 +47,10 @@ std::function<Kind(long)> parseMix(const std::string& name) {
     if (name == "mixed") return mixedKind;
     if (name == "hits") return [](long) { return Kind::CachedDiagram; };
     if (name == "misses") return [](long) { return Kind::NewDiagram; };
+    if (name == "sizes") return [](long) { return Kind::NewSizedDiagram; };
     if (name == "lists") return [](long i) { return i % 3 == 2 ? Kind::RenderList : Kind::LensListOrHealth; };
     if (name == "renders") return [](long) { return Kind::RenderSubmission; };
-    throw std::invalid_argument("unknown mix '" + name + "': mixed, hits, misses, lists or renders");
+    throw std::invalid_argument("unknown mix '" + name + "': mixed, hits, misses, sizes, lists or renders");
 }
 
 struct Counters {
@@ -68,6 +69,12 @@ void oneRequest(httplib::Client& client, int clientIndex, long i, Kind kind, Cou
             case Kind::NewDiagram: {
                 const long unique = ++counters.drawn;
                 return client.Get("/api/lenses/" + lenses[unique % 4] + "/diagram.png?size=800x400&mode=" +
+                                  modes[unique % 3] + "&focus=" + std::to_string(1000 + unique));
+            }
+            case Kind::NewSizedDiagram: {  // never asked before, each of its own size (issue 23)
+                const long unique = ++counters.drawn;
+                const std::string size = std::to_string(320 + unique * 37 % 2081) + "x" + std::to_string(200 + unique * 53 % 1401);
+                return client.Get("/api/lenses/" + lenses[unique % 4] + "/diagram.png?size=" + size + "&mode=" +
                                   modes[unique % 3] + "&focus=" + std::to_string(1000 + unique));
             }
             case Kind::LensListOrHealth: return client.Get(i % 2 == 0 ? "/api/lenses" : "/api/health");
@@ -98,11 +105,12 @@ int main(int argc, char** argv) {
     const int seconds = argc > 1 ? std::stoi(argv[1]) : 1800;
     const auto kindOf = parseMix(argc > 2 ? argv[2] : "mixed");
     const std::string binary = argc > 3 ? argv[3] : LENSLAB_BINARY;
+    const int clientCount = argc > 4 ? std::stoi(argv[4]) : 16;
     const ServerUnderTest server = startServer(binary, {"--renders", "1", "--max-queue", "8", "--keep-gb", "0.1"});
     Counters counters;
     std::atomic<bool> stop{false};
     std::vector<std::thread> clients;
-    for (int c = 0; c < kClients; ++c)
+    for (int c = 0; c < clientCount; ++c)
         clients.emplace_back([&, c] {
             httplib::Client client("127.0.0.1", server.port);
             client.set_keep_alive(true);

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -106,6 +107,27 @@ std::string ServerProcess::output() const {
     return s.str();
 }
 
+std::unique_ptr<ServerProcess> startWithFileSizeLimit(const std::string& binary, const std::string& dataDir,
+                                                      const std::vector<std::string>& extraArgs, std::size_t fileSizeLimit) {
+    rlimit saved{};
+    ::getrlimit(RLIMIT_FSIZE, &saved);
+    rlimit limited = saved;
+    limited.rlim_cur = fileSizeLimit;
+    const auto previous = ::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG instead
+    ::setrlimit(RLIMIT_FSIZE, &limited);
+    std::unique_ptr<ServerProcess> server;
+    try {
+        server = std::make_unique<ServerProcess>(binary, dataDir, extraArgs);
+    } catch (...) {
+        ::setrlimit(RLIMIT_FSIZE, &saved);
+        ::signal(SIGXFSZ, previous);
+        throw;
+    }
+    ::setrlimit(RLIMIT_FSIZE, &saved);
+    ::signal(SIGXFSZ, previous);
+    return server;
+}
+
 std::string Reply::header(const std::string& name) const {
     auto it = headers.find(name);
     return it == headers.end() ? "" : it->second;
@@ -155,9 +177,17 @@ nlohmann::json waitForRenderState(httplib::Client& client, const std::string& id
     return status;
 }
 
-std::string binaryUnderTest() {
-    const char* other = std::getenv("LENSLAB_SERVER_BINARY");
-    return other && *other ? other : LENSLAB_BINARY;
+namespace {
+
+std::string overridden(const char* variable, const std::string& fallback) {
+    const char* other = std::getenv(variable);
+    return other && *other ? other : fallback;
 }
+
+}  // namespace
+
+std::string binaryUnderTest() { return overridden("LENSLAB_SERVER_BINARY", LENSLAB_BINARY); }
+
+std::string fakeServerUnderTest() { return overridden("LENSLAB_FAKE_SERVER_BINARY", LENSLAB_FAKE_SERVER); }
 
 }  // namespace lenslab::test

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sys/types.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ public:
     ServerProcess& operator=(const ServerProcess&) = delete;
 
     int port() const { return port_; }
+    pid_t pid() const { return pid_; }
     httplib::Client client() const;
     // SIGTERM, then waits (SIGKILL after 20 s); the exit status as waitpid gives it (-1: not running).
     int stop();
@@ -33,6 +35,11 @@ private:
     int port_ = 0;
     std::string logPath_;
 };
+
+// A server whose files may grow to `fileSizeLimit` bytes at most (RLIMIT_FSIZE, inherited across
+// fork and exec): writing past it fails with EFBIG, as on a full disk.
+std::unique_ptr<ServerProcess> startWithFileSizeLimit(const std::string& binary, const std::string& dataDir,
+                                                      const std::vector<std::string>& extraArgs, std::size_t fileSizeLimit);
 
 // GET/POST/DELETE helpers returning status and the parsed JSON body (null when not JSON).
 struct Reply {
@@ -58,6 +65,8 @@ nlohmann::json waitForRenderState(httplib::Client& client, const std::string& id
 // The lenslab binary the tests start: LENSLAB_SERVER_BINARY when set (to try the tests on another
 // build, e.g. an older one), else this build's.
 std::string binaryUnderTest();
+// The fake-render server likewise: LENSLAB_FAKE_SERVER_BINARY when set, else this build's.
+std::string fakeServerUnderTest();
 
 // A small valid lens table (a singlet and a stop).
 inline const std::string kSmallLensTable = "50.0 5.0 1.5 20.0\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";

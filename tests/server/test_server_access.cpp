@@ -95,3 +95,70 @@ TEST_F(ServerAccess, CrossOriginRequestsAreRefusedUnlessAllowed) {
     EXPECT_EQ(c.Post("/api/lenses?name=b.dat", {{"Origin", self}}, kSmallLensTable, "text/plain")->status, 201);
     EXPECT_EQ(c.Post("/api/lenses?name=c.dat", {{"Origin", "http://trusted.example"}}, kSmallLensTable, "text/plain")->status, 201);
 }
+
+// Issue 23, finding 12: a token file saved with a trailing space and CR (as some editors do) still
+// works, since header values arrive trimmed; a token with a space inside is refused at start.
+TEST_F(ServerAccess, ATokenFileWithTrailingWhitespaceIsTrimmed) {
+    const std::string token = "0123456789abcdef0123456789abcdef";
+    std::ofstream(tokenFile()) << token << " \r\n";
+    start({"--token-file", tokenFile()});
+    auto c = server_->client();
+    c.set_default_headers({{"Authorization", "Bearer " + token}});
+    EXPECT_EQ(postRaw(c, "/api/lenses?name=t.dat", kSmallLensTable).status, 201);
+
+    std::ofstream(tokenFile()) << "0123456789abcdef 0123456789abcdef\n";
+    EXPECT_THROW(ServerProcess(binaryUnderTest(), data_.path() + "/data2", {"--token-file", tokenFile()}), std::runtime_error);
+}
+
+// Issue 23, finding 4: DNS rebinding. A page on attacker.example whose name resolves to 127.0.0.1
+// sends Host and Origin with the attacker's name; it must not upload or delete. Addresses,
+// localhost and names given with --allow-host are answered.
+TEST_F(ServerAccess, RequestsNamingAnotherHostAreRefused) {
+    start({"--allow-host", "lab.example"});
+    auto c = server_->client();
+    const std::string port = std::to_string(server_->port());
+    const httplib::Headers rebound = {{"Host", "attacker.example:" + port}, {"Origin", "http://attacker.example:" + port}};
+    const auto deleted = c.Delete("/api/lenses/dgauss.50mm", rebound);
+    ASSERT_TRUE(deleted);
+    EXPECT_EQ(deleted->status, 421) << deleted->body;
+    const auto uploaded = c.Post("/api/lenses?name=x.dat", rebound, kSmallLensTable, "text/plain");
+    ASSERT_TRUE(uploaded);
+    EXPECT_EQ(uploaded->status, 421);
+    EXPECT_TRUE(json::parse(uploaded->body, nullptr, false).contains("error")) << uploaded->body;
+    const auto read = c.Get("/api/lenses", {{"Host", "attacker.example"}});
+    ASSERT_TRUE(read);
+    EXPECT_EQ(read->status, 421);
+
+    for (const std::string host : {"127.0.0.1:" + port, "localhost:" + port, "[::1]:" + port, std::string("lab.example")}) {
+        const auto ok = c.Get("/api/health", {{"Host", host}});
+        ASSERT_TRUE(ok);
+        EXPECT_EQ(ok->status, 200) << host;
+    }
+}
+
+// Issue 23, finding 8: a page on an origin listed in --allow-origin can call the API with its token:
+// the browser's preflight is answered without the token, and the answers name the origin.
+TEST_F(ServerAccess, AListedOriginMayCallTheApiWithItsToken) {
+    const std::string page = "http://page.example:8000";
+    start({"--token-file", tokenFile(), "--allow-origin", page});
+    auto c = server_->client();
+    const auto preflight = c.Options("/api/lenses", {{"Origin", page},
+                                                     {"Access-Control-Request-Method", "POST"},
+                                                     {"Access-Control-Request-Headers", "authorization,content-type"}});
+    ASSERT_TRUE(preflight);
+    EXPECT_EQ(preflight->status, 204);
+    EXPECT_EQ(preflight->get_header_value("Access-Control-Allow-Origin"), page);
+    EXPECT_NE(preflight->get_header_value("Access-Control-Allow-Headers").find("Authorization"), std::string::npos);
+    EXPECT_NE(preflight->get_header_value("Access-Control-Allow-Methods").find("POST"), std::string::npos);
+
+    const auto upload = c.Post("/api/lenses?name=t.dat", {{"Origin", page}, {"Authorization", "Bearer " + token()}},
+                               kSmallLensTable, "text/plain");
+    ASSERT_TRUE(upload);
+    EXPECT_EQ(upload->status, 201);
+    EXPECT_EQ(upload->get_header_value("Access-Control-Allow-Origin"), page);
+
+    const auto other = c.Get("/api/lenses", {{"Origin", "http://other.example"}});
+    ASSERT_TRUE(other);
+    EXPECT_EQ(other->status, 403);
+    EXPECT_FALSE(other->has_header("Access-Control-Allow-Origin"));
+}

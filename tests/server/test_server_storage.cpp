@@ -4,8 +4,6 @@
 // The fixture's server is started with a file-size limit (RLIMIT_FSIZE, inherited across fork and
 // exec), under which writing past the limit fails as on a full disk.
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/resource.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -20,29 +18,15 @@ using nlohmann::json;
 
 namespace {
 
-constexpr rlim_t kFileSizeLimit = 256 << 10;
+constexpr std::size_t kFileSizeLimit = 256 << 10;
 
 class ServerStorage : public ::testing::Test {
 protected:
     // Starts the fake-render server with files limited to kFileSizeLimit bytes.
     void SetUp() override {
         std::ofstream(scenes_.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n";
-        rlimit saved{};
-        ::getrlimit(RLIMIT_FSIZE, &saved);
-        rlimit limited = saved;
-        limited.rlim_cur = kFileSizeLimit;
-        const auto previous = ::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG instead
-        ::setrlimit(RLIMIT_FSIZE, &limited);
-        try {
-            server_ = std::make_unique<ServerProcess>(LENSLAB_FAKE_SERVER, data_.path() + "/data",
-                                                      std::vector<std::string>{"--scenes", scenes_.path()});
-        } catch (...) {
-            ::setrlimit(RLIMIT_FSIZE, &saved);
-            ::signal(SIGXFSZ, previous);
-            throw;
-        }
-        ::setrlimit(RLIMIT_FSIZE, &saved);
-        ::signal(SIGXFSZ, previous);
+        server_ = startWithFileSizeLimit(LENSLAB_FAKE_SERVER, data_.path() + "/data", {"--scenes", scenes_.path()},
+                                         kFileSizeLimit);
     }
     void expectNoServerPath(const std::string& message) {
         EXPECT_EQ(message.find(data_.path()), std::string::npos) << message;
