@@ -89,7 +89,7 @@ TEST(Glass, EveryCatalogGlassIsFiniteAndNormalOverTheVisible) {
         for (int nm = 360; nm <= 830; ++nm) {
             const double n = refractiveIndex(m, nm);
             ASSERT_TRUE(std::isfinite(n)) << nm << " nm";
-            ASSERT_GT(n, 1.4) << nm << " nm";
+            ASSERT_GT(n, 1.35) << nm << " nm";  // MgF2, the lowest, is 1.38 at 360 nm
             ASSERT_LT(n, 2.4) << nm << " nm";
             ASSERT_LT(n, previous) << nm << " nm";  // normal dispersion: falls with wavelength
             previous = n;
