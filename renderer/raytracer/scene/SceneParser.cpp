@@ -392,7 +392,7 @@ private:
             spec.type = IntegratorType::VolPath;
         } else if (std::find(std::begin(kGlobalIllumination), std::end(kGlobalIllumination), type) != std::end(kGlobalIllumination)) {
             spec.type = IntegratorType::Path;
-            warn(where, "integrator \"" + type + "\" rendered by the path tracer (same picture in the limit, other noise)");
+            warn(where, "integrator \"" + type + "\" rendered by the path tracer, volpath in media (same picture in the limit, other noise)");
         } else {
             p.fail("integrator \"" + type + "\" is not supported (path, volpath, directlighting, whitted; bdpt, mlt, sppm "
                    "and pbrt-v2's photonmap, irradiancecache, igi render as path, or as volpath in media)");
