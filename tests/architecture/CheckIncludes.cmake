@@ -19,7 +19,7 @@ set(allowed_cli "optics;renderer/image;renderer/diagram;renderer/raytracer;rende
 # that reason: a material's parameters are textures, and a texture is evaluated at a SurfaceHit,
 # which materials/Material.h declares. Its headers are included by folder ("materials/Bsdf.h"),
 # from everywhere; every file lives in one of these folders.
-set(raytracer_layers core sampling,images textures,materials shapes lights scene geometry cameras,film,integrators render)
+set(raytracer_layers core sampling,images textures,materials,media shapes lights scene geometry cameras,film,integrators render)
 set(raytracer_partners_textures materials)
 set(raytracer_partners_materials textures)
 set(raytracer_folders "")

@@ -23,7 +23,7 @@ class RadianceProbe {
 public:
     RadianceProbe(const std::string& scenePath, IntegratorType type, int maxDepth)
         : scene_(parseSceneFile(scenePath)), geometry_(std::make_unique<SceneGeometry>(scene_)),
-          integrator_(makeIntegrator(*geometry_, IntegratorSpec{type, maxDepth})) {}
+          integrator_(makeIntegrator(*geometry_, IntegratorSpec{type, maxDepth}, scene_.camera.medium.get())) {}
 
     // One estimate along the ray; `sample` picks an independent random stream.
     Vec3f once(Vec3f origin, Vec3f direction, std::uint64_t sample) const {

@@ -113,7 +113,7 @@ TEST(SceneParameters, FilmScaleAndMaxSampleLuminance) {
     EXPECT_NEAR(clamped.z, 4 / y, 1e-4);
 }
 
-TEST(SceneParameters, SubstitutesAreAnnouncedAndMediaRefused) {
+TEST(SceneParameters, SubstitutesAreAnnouncedAndPbrtV2VolumesRefused) {
     test::TempDir dir;
     const std::string header = "Camera \"perspective\"\nFilm \"image\" \"integer xresolution\" 4 \"integer yresolution\" 4\n";
     const SceneDescription bdpt = parseSceneFile(dir.write("b.pbrt", header + "Integrator \"bdpt\" \"integer maxdepth\" 7\n"
@@ -130,10 +130,11 @@ TEST(SceneParameters, SubstitutesAreAnnouncedAndMediaRefused) {
     EXPECT_DOUBLE_EQ(mitchell.filter.C, 0.25);
     EXPECT_DOUBLE_EQ(mitchell.filter.xwidth, 2);
     try {
-        parseSceneFile(dir.write("fog.pbrt", header + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\nWorldBegin\nWorldEnd\n"));
-        ADD_FAILURE() << "a medium was accepted";
+        // pbrt-v2's Volume directive (its media are pbrt-v3's MakeNamedMedium, test_media.cpp).
+        parseSceneFile(dir.write("fog.pbrt", header + "WorldBegin\nVolume \"homogeneous\"\nWorldEnd\n"));
+        ADD_FAILURE() << "a pbrt-v2 volume was accepted";
     } catch (const SceneError& e) {
-        EXPECT_NE(std::string(e.what()).find("fog.pbrt:3: MakeNamedMedium: participating media"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("fog.pbrt:4: Volume: participating media"), std::string::npos) << e.what();
     }
 }
 

@@ -153,12 +153,14 @@ bool SceneGeometry::intersect(Vec3f o, Vec3f d, float tMax, Intersection& out) c
         h.dpdu = transformVector(inst.instanceToWorld, h.dpdu);
         h.dpdv = transformVector(inst.instanceToWorld, h.dpdv);
         out.material = e.material.get();
+        out.media = &e.media;
         out.material->applyBump(h);
         return true;
     }
     const ShapeEntry& e = hitShape(world_, rh.hit.geomID, prim);
     e.shape->surface(o, d, out.t, prim, rh.hit.u, rh.hit.v, h);
     out.material = e.material.get();
+    out.media = &e.media;
     out.material->applyBump(h);
     if (e.emission) out.light = lights_[firstLight_[std::size_t(&e - shapes_.data())] + prim].get();
     return true;

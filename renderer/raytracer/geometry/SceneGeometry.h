@@ -19,6 +19,7 @@ struct Intersection {
     float t = 0;
     const Material* material = nullptr;
     const Light* light = nullptr;  // the area light when the surface emits
+    const MediumInterface* media = nullptr;  // the media on the surface's two sides
 };
 
 class SceneGeometry {

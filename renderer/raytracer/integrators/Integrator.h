@@ -17,7 +17,9 @@ public:
     virtual Vec3f radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const = 0;
 };
 
-// The geometry (with its lights' scene bounds set) must outlive the integrator.
-std::unique_ptr<Integrator> makeIntegrator(const SceneGeometry& geometry, const IntegratorSpec& spec);
+// The geometry (with its lights' scene bounds set) and the camera's medium (null: vacuum; only
+// volpath renders media) must outlive the integrator.
+std::unique_ptr<Integrator> makeIntegrator(const SceneGeometry& geometry, const IntegratorSpec& spec,
+                                           const ParticipatingMedium* cameraMedium);
 
 }  // namespace lenslab

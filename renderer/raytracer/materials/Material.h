@@ -49,6 +49,9 @@ public:
     virtual int maxLobes() const = 0;
     // True when every lobe is specular wherever the material is hit: light sampling is pointless.
     virtual bool isSpecular() const { return false; }
+    // No surface at all ("interface", "none", ""): only a boundary between media. The volumetric
+    // path tracer passes such hits without counting a bounce, as pbrt does.
+    virtual bool isPassthrough() const { return false; }
 
     // f(wo, wi) |cos(wi, ns)|; zero for specular lobes.
     Vec3f evaluate(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const;

@@ -236,6 +236,7 @@ public:
     void addLobes(const SurfaceHit&, Vec3f scale, Bsdf& b) const override { b.add<SpecularTransmission>(scale, 1.0f, 1.0f); }
     int maxLobes() const override { return 1; }
     bool isSpecular() const override { return true; }
+    bool isPassthrough() const override { return true; }
 };
 
 // --- reading the parameters ----------------------------------------------------------------------

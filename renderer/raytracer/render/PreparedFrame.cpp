@@ -79,7 +79,7 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
         camera_ = makeCamera(scene_, settings.camera, width_, height_, filter_.radius(), cancel);
         geometry_ = std::make_unique<SceneGeometry>(scene_);
     });
-    integrator_ = makeIntegrator(*geometry_, scene_.integrator);
+    integrator_ = makeIntegrator(*geometry_, scene_.integrator, scene_.camera.medium.get());
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
@@ -152,7 +152,7 @@ std::map<std::string, std::string> PreparedFrame::metadata() const {
     m["cropPixels"] = crop.str();
     m["spp"] = std::to_string(spp_);
     m["seed"] = std::to_string(settings_.seed);
-    static const char* kIntegrators[] = {"path", "directlighting", "whitted"};
+    static const char* kIntegrators[] = {"path", "directlighting", "whitted", "volpath"};
     m["integrator"] = std::string(kIntegrators[int(scene_.integrator.type)]) + " maxdepth " +
                       std::to_string(scene_.integrator.maxDepth);
     m["units"] = "world metres, lens millimetres";

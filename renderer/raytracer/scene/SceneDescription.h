@@ -10,6 +10,7 @@
 
 #include "lights/Light.h"
 #include "materials/Material.h"
+#include "media/ParticipatingMedium.h"
 #include "core/ParamSet.h"
 #include "shapes/Shape.h"
 #include "core/Transform.h"
@@ -20,6 +21,7 @@ struct CameraSpec {
     std::string type = "perspective";  // perspective | realistic
     ParamSet params;
     Transform cameraToWorld;
+    std::shared_ptr<const ParticipatingMedium> medium;  // where camera rays start; null: vacuum
 };
 
 struct FilmSpec {
@@ -44,8 +46,9 @@ struct FilterSpec {
 
 // path: unidirectional with next-event estimation and MIS. directlighting: light sampled at the
 // first non-specular hit, specular bounces followed. whitted: every light sampled at each hit,
-// perfect specular reflection and refraction followed (pbrt-v3's WhittedIntegrator).
-enum class IntegratorType { Path, DirectLighting, Whitted };
+// perfect specular reflection and refraction followed (pbrt-v3's WhittedIntegrator). volpath: path
+// with participating media (scattering in volumes, light sampled through them).
+enum class IntegratorType { Path, DirectLighting, Whitted, VolPath };
 struct IntegratorSpec {
     IntegratorType type = IntegratorType::Path;
     int maxDepth = 5;
@@ -56,11 +59,12 @@ struct AreaEmission {
     bool twoSided = false;
 };
 
-// A shape with its look: material and, for an emitter, its diffuse area light.
+// A shape with its look: material, for an emitter its diffuse area light, and the media on its sides.
 struct ShapeEntry {
     std::shared_ptr<const Shape> shape;
     std::shared_ptr<const Material> material;
     std::optional<AreaEmission> emission;
+    MediumInterface media;
 };
 
 // ObjectBegin "name" ... ObjectEnd: shapes in the object's own space, drawn by every ObjectInstance.

@@ -47,6 +47,7 @@ struct GraphicsState {
     std::shared_ptr<const Material> material;
     std::optional<AreaEmission> area;
     bool reverseOrientation = false;
+    std::string insideMedium, outsideMedium;  // MediumInterface's names; empty is vacuum
     // Scoped by AttributeBegin/End as in pbrt-v3; shared with the saved states until a Texture
     // directive changes it (copy on write: entering a block copies no textures).
     std::shared_ptr<TextureMap> textures = std::make_shared<TextureMap>();
@@ -64,6 +65,7 @@ class Parser {
 public:
     Parser(SceneDescription& scene, const SceneParseOptions& options) : scene_(scene), options_(options) {
         g_.material = makeDefaultMaterial();
+        integratorWhere_.file = scene.file;
     }
 
     void parseFile(const std::string& path, int depth) {
@@ -82,6 +84,8 @@ public:
 
     void finish() {
         if (object_) sceneFail(objectWhere_, "not closed by ObjectEnd");
+        if (!cameraMedium_.empty()) scene_.camera.medium = namedMedium(cameraMediumWhere_, cameraMedium_);
+        chooseMediaIntegrator();
         if (!stack_.empty())
             sceneFail(stack_.back().where, "not closed by " + std::string(stack_.back().attribute ? "AttributeEnd" : "TransformEnd"));
         if (!worldBegun_) throw SceneError(scene_.file + ": no WorldBegin: the scene describes no world");
@@ -285,6 +289,9 @@ private:
         scene_.camera.type = type;
         scene_.camera.params = params(where);
         scene_.camera.cameraToWorld = inverse(g_.ctm);
+        // pbrt's camera sits in the outside medium current here; media may be named later.
+        cameraMedium_ = g_.outsideMedium;
+        cameraMediumWhere_ = where;
         namedCoordinates_["camera"] = {inverse(g_.ctm), inverse(g_.ctmEnd)};
         warnIfMoving(where);
     }
@@ -293,16 +300,37 @@ private:
         params(where);
         warn(where, "ignored (lenslab always uses Embree's BVH)");
     }
-    // Participating media would change the picture everywhere: refuse rather than render without.
+    // --- participating media -----------------------------------------------------------------
     void medium(SourceLocation& where, int) {
-        sceneFail(where, "participating media (MakeNamedMedium \"" + quoted(where, "a medium name") +
-                             "\") are not supported: the picture would lack the medium");
+        const std::string name = typeName(where, "a medium name");
+        const ParamSet p = params(where);
+        if (!p.has("type")) p.fail("MakeNamedMedium needs \"string type\"");
+        if (namedMedia_.count(name)) warn(where, "redefines medium \"" + name + "\" for what follows");
+        namedMedia_[name] = makeMedium(p.getString("type", ""), p, g_.ctm, scene_.warnings);
+        warnIfMoving(where);
     }
+    // pbrt-v3 gives one name for both sides too.
     void mediumInterface(SourceLocation& where, int) {
-        const std::string inside = quoted(where, "a medium name");
-        const std::string outside = !in_().atEnd() && in_().peek().quoted ? quoted(where, "a medium name") : inside;
-        if (!inside.empty() || !outside.empty())
-            sceneFail(where, "participating media are not supported (MediumInterface \"" + inside + "\" \"" + outside + "\")");
+        g_.insideMedium = quoted(where, "a medium name");
+        g_.outsideMedium = !in_().atEnd() && in_().peek().quoted ? quoted(where, "a medium name") : g_.insideMedium;
+    }
+    std::shared_ptr<const ParticipatingMedium> namedMedium(const SourceLocation& where, const std::string& name) {
+        if (name.empty()) return nullptr;
+        const auto it = namedMedia_.find(name);
+        if (it == namedMedia_.end()) sceneFail(where, "unknown medium \"" + name + "\" (no MakeNamedMedium defines it before here)");
+        mediaUsed_ = true;
+        return it->second;
+    }
+    // Media show only through an integrator that renders them: volpath, and bdpt, mlt and sppm,
+    // which render media in pbrt too (here by volpath). path, directlighting and whitted ignore
+    // them, as in pbrt.
+    void chooseMediaIntegrator() {
+        if (!mediaUsed_) return;
+        if (integratorRendersMedia_) {
+            scene_.integrator.type = IntegratorType::VolPath;
+        } else {
+            warn(integratorWhere_, "ignores the scene's participating media, as in pbrt (Integrator \"volpath\" renders them)");
+        }
     }
     void worldBegin(SourceLocation&, int) {
         worldBegun_ = true;
@@ -348,9 +376,11 @@ private:
         const std::string type = typeName(where, "an integrator type");
         const ParamSet p = params(where);
         IntegratorSpec& spec = scene_.integrator;
+        integratorWhere_ = where;
+        integratorRendersMedia_ = type == "volpath" || type == "bdpt" || type == "mlt" || type == "sppm";
         // Global-illumination methods of pbrt-v3 and pbrt-v2 converge to the path tracer's picture
         // (media aside); the others compute something else and are refused.
-        static const char* kGlobalIllumination[] = {"bdpt", "mlt", "sppm", "volpath", "photonmap", "exphotonmap",
+        static const char* kGlobalIllumination[] = {"bdpt", "mlt", "sppm", "photonmap", "exphotonmap",
                                                     "irradiancecache", "igi", "dipolesubsurface"};
         if (type == "directlighting") {
             spec.type = IntegratorType::DirectLighting;
@@ -358,12 +388,14 @@ private:
             spec.type = IntegratorType::Whitted;
         } else if (type == "path") {
             spec.type = IntegratorType::Path;
+        } else if (type == "volpath") {
+            spec.type = IntegratorType::VolPath;
         } else if (std::find(std::begin(kGlobalIllumination), std::end(kGlobalIllumination), type) != std::end(kGlobalIllumination)) {
             spec.type = IntegratorType::Path;
-            warn(where, "integrator \"" + type + "\" rendered by the path tracer (same picture in the limit, other noise)");
+            warn(where, "integrator \"" + type + "\" rendered by the path tracer, volpath in media (same picture in the limit, other noise)");
         } else {
-            p.fail("integrator \"" + type + "\" is not supported (path, directlighting, whitted; bdpt, mlt, sppm, volpath "
-                   "and pbrt-v2's photonmap, irradiancecache, igi render as path)");
+            p.fail("integrator \"" + type + "\" is not supported (path, volpath, directlighting, whitted; bdpt, mlt, sppm "
+                   "and pbrt-v2's photonmap, irradiancecache, igi render as path, or as volpath in media)");
         }
         spec.maxDepth = p.getInt("maxdepth", 5);
         if (spec.maxDepth < 0 || spec.maxDepth > 1000) p.fail("maxdepth must lie in [0, 1000]");
@@ -480,9 +512,10 @@ private:
             emission.reset();
         }
         std::vector<ShapeEntry>& group = object_ ? scene_.objects[*object_].shapes : scene_.shapes;
+        const MediumInterface media{namedMedium(where, g_.insideMedium), namedMedium(where, g_.outsideMedium)};
         for (auto& s : makeShapes(type, p, g_.ctm, g_.reverseOrientation, *g_.textures, resolver(), scene_.warnings)) {
             if (emission && s->primitiveCount() == 0) warn(where, "this shape cannot emit (as in pbrt-v3): no area light");
-            group.push_back({std::move(s), g_.material, emission});
+            group.push_back({std::move(s), g_.material, emission, media});
         }
     }
 
@@ -525,6 +558,12 @@ private:
     std::vector<StackEntry> stack_;
     std::map<std::string, TransformPair> namedCoordinates_;
     NamedMaterials namedMaterials_;
+    std::map<std::string, std::shared_ptr<const ParticipatingMedium>> namedMedia_;
+    std::string cameraMedium_;           // the outside medium's name at Camera
+    SourceLocation cameraMediumWhere_;
+    bool mediaUsed_ = false;             // a shape or the camera lies in a medium
+    bool integratorRendersMedia_ = false;
+    SourceLocation integratorWhere_{"", 0, "Integrator (default path)"};
     std::map<std::string, std::size_t> objectIndex_;  // the latest definition of each object name
     std::optional<std::size_t> object_;                // the object being defined
     std::size_t objectDepth_ = 0;                      // stack_ size inside its ObjectBegin block

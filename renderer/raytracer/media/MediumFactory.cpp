@@ -1,0 +1,81 @@
+// MakeNamedMedium's types and their parameters. pbrt-v3's homogeneous and heterogeneous default to
+// its coefficients (skim milk's, per mm); pbrt-v4's uniformgrid defaults to 1 and 1.
+#include <cmath>
+
+#include "media/GridMedium.h"
+#include "media/HomogeneousMedium.h"
+#include "media/ParticipatingMedium.h"
+
+namespace lenslab {
+
+namespace {
+
+const Vec3f kV3SigmaA{0.0011f, 0.0024f, 0.014f}, kV3SigmaS{2.55f, 3.21f, 3.77f};
+
+bool nonNegative(Vec3f v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
+
+HenyeyGreenstein phaseOf(const ParamSet& p) {
+    const double g = p.getFloat("g", 0);
+    if (!(g > -1 && g < 1)) p.fail("g must lie in (-1, 1)");
+    return HenyeyGreenstein(float(g));
+}
+
+// sigma_a and sigma_s times scale.
+void coefficients(const ParamSet& p, Vec3f defaultA, Vec3f defaultS, Vec3f& sigmaA, Vec3f& sigmaS) {
+    if (p.has("preset")) p.fail("named measured media (\"preset\") are not supported: give sigma_a and sigma_s");
+    const float scale = float(p.getFloat("scale", 1));
+    sigmaA = scale * p.getRgb("sigma_a", defaultA);
+    sigmaS = scale * p.getRgb("sigma_s", defaultS);
+    if (!nonNegative(sigmaA) || !nonNegative(sigmaS)) p.fail("sigma_a, sigma_s and scale must not be negative");
+}
+
+// A density grid times the coefficients: pbrt-v3's heterogeneous, pbrt-v4's uniformgrid.
+std::shared_ptr<const ParticipatingMedium> makeDensityGrid(const ParamSet& p, const Transform& mediumToWorld, Vec3f defaultA,
+                                              Vec3f defaultS) {
+    Vec3f sigmaA, sigmaS;
+    coefficients(p, defaultA, defaultS, sigmaA, sigmaS);
+    MediumGrid grid;
+    grid.nx = p.getInt("nx", 1);
+    grid.ny = p.getInt("ny", 1);
+    grid.nz = p.getInt("nz", 1);
+    if (grid.nx < 1 || grid.ny < 1 || grid.nz < 1) p.fail("nx, ny and nz must be positive");
+    const std::vector<double> density = p.getFloats("density");
+    if (density.size() != std::size_t(grid.nx) * grid.ny * grid.nz)
+        p.fail("\"density\" has " + std::to_string(density.size()) + " values, nx * ny * nz = " +
+               std::to_string(std::size_t(grid.nx) * grid.ny * grid.nz));
+    for (double d : density) {
+        if (!(d >= 0)) p.fail("\"density\" values must not be negative");
+        grid.sigmaA.push_back(float(d) * sigmaA);
+        grid.sigmaS.push_back(float(d) * sigmaS);
+    }
+    const Vec3f p0 = p.getPoint("p0", {0, 0, 0}), p1 = p.getPoint("p1", {1, 1, 1});
+    if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z)) p.fail("p0 must lie below p1 on every axis");
+    const Transform boxToWorld = mediumToWorld * translate(p0.x, p0.y, p0.z) * scale(p1.x - p0.x, p1.y - p0.y, p1.z - p0.z);
+    return std::make_shared<GridMedium>(std::move(grid), boxToWorld, phaseOf(p));
+}
+
+}  // namespace
+
+std::shared_ptr<const ParticipatingMedium> makeMedium(const std::string& type, const ParamSet& p, const Transform& mediumToWorld,
+                                         std::vector<std::string>& warnings) {
+    std::shared_ptr<const ParticipatingMedium> m;
+    if (type == "homogeneous") {
+        Vec3f sigmaA, sigmaS;
+        coefficients(p, kV3SigmaA, kV3SigmaS, sigmaA, sigmaS);
+        m = std::make_shared<HomogeneousMedium>(sigmaA, sigmaS, phaseOf(p));
+    } else if (type == "heterogeneous") {
+        m = makeDensityGrid(p, mediumToWorld, kV3SigmaA, kV3SigmaS);
+    } else if (type == "uniformgrid") {
+        if (p.has("temperature") || p.has("Le"))
+            p.fail("emitting media (\"Le\", \"temperature\") are not supported: the picture would lack their light");
+        m = makeDensityGrid(p, mediumToWorld, {1, 1, 1}, {1, 1, 1});
+    } else {
+        p.fail("medium \"" + type + "\" is not supported (homogeneous, heterogeneous, uniformgrid)");
+    }
+    if (p.has("Le") && !isBlack(p.getRgb("Le", {})))
+        p.fail("emitting media (\"Le\") are not supported: the picture would lack their light");
+    p.checkAllUsed(warnings, {"type", "Le", "Lescale"});
+    return m;
+}
+
+}  // namespace lenslab
