@@ -12,7 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   openmpi-bin libopenmpi-dev
   libfreetype-dev fonts-dejavu-core
-  libopenimageio-dev libassimp-dev
+  libopenimageio-dev libassimp-dev zlib1g-dev
 )
 if [ "${1:-}" = "--tests" ]; then
   packages+=(chromium)

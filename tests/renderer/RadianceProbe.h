@@ -60,7 +60,7 @@ inline std::unique_ptr<Light> lightFrom(const std::string& type, std::vector<Par
                                         const Transform& lightToWorld = {}) {
     std::vector<std::string> warnings;
     const ParamSet p(SourceLocation{"test", 1, "LightSource \"" + type + "\""}, std::move(params));
-    return makeLight(type, p, lightToWorld, [](const std::string& name, const SourceLocation&) { return name; },
+    return makeLight(type, p, lightToWorld, SceneDialect::PbrtV3, [](const std::string& name, const SourceLocation&) { return name; },
                      warnings);
 }
 

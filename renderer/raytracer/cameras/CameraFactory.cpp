@@ -142,10 +142,17 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     r.mode = *lensMode;
     r.autoThresholdPixels = p.getFloat("autothreshold", r.autoThresholdPixels);
     r.crop = scene.film.crop;  // the effective window: the render settings' crop overrides the scene's
-    r.exposureTime = exposureTime(p, scene.warnings);
     checkClipping(p, scene.warnings);
-    r.simpleWeighting = p.getBool("simpleweighting", pbrtStyle);
-    r.pbrtExposure = pbrtStyle;
+    if (scene.dialect == SceneDialect::PbrtV4) {
+        // pbrt-v4 always weights by the exit pupil (cos^4 A / d^2: lenslab's radiometric weight);
+        // the shutter's exposure time scales the film instead (scene/SceneParser.cpp).
+        r.exposureTime = 1;
+        r.simpleWeighting = false;
+    } else {
+        r.exposureTime = exposureTime(p, scene.warnings);
+        r.simpleWeighting = p.getBool("simpleweighting", pbrtStyle);
+        r.pbrtExposure = pbrtStyle;
+    }
     r.aperture = apertureShape(scene, p);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
     return atCamera(p, [&]() -> std::unique_ptr<Camera> {

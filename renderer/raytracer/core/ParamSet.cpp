@@ -106,6 +106,11 @@ std::vector<double> ParamSet::getFloats(const std::string& name) const {
     return p ? p->numbers : std::vector<double>{};
 }
 
+std::vector<std::string> ParamSet::getStrings(const std::string& name) const {
+    const Param* p = lookup(name, {ParamType::String}, 0);
+    return p ? p->strings : std::vector<std::string>{};
+}
+
 std::vector<int> ParamSet::getInts(const std::string& name) const {
     std::vector<int> out;
     const Param* p = lookup(name, {ParamType::Integer}, 0);
@@ -127,9 +132,26 @@ std::vector<Vec3f> ParamSet::getPoints(const std::string& name) const {
     return out;
 }
 
+bool ParamSet::isSpectral(const std::string& name) const {
+    const Param* p = find(name);
+    return p && p->spectral;
+}
+
+ParamSet ParamSet::withDefaults(const ParamSet& defaults) const {
+    ParamSet merged = *this;
+    for (const Param& d : defaults.params_) {
+        if (has(d.name)) continue;
+        Param inherited = d;
+        inherited.used = false;
+        inherited.inherited = true;
+        merged.params_.push_back(std::move(inherited));
+    }
+    return merged;
+}
+
 void ParamSet::checkAllUsed(std::vector<std::string>& warnings, const std::vector<std::string>& harmless) const {
     for (const Param& p : params_) {
-        if (p.used) continue;
+        if (p.used || p.inherited) continue;
         bool isHarmless = false;
         for (const auto& h : harmless) isHarmless = isHarmless || h == p.name;
         const std::string what = "\"" + std::string(paramTypeName(p.type)) + " " + p.name + "\"";

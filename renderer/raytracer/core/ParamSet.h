@@ -33,6 +33,8 @@ struct Param {
     std::vector<std::string> strings;  // String, Texture; Bool as "true"/"false"
     int line = 0;                      // where it was declared
     mutable bool used = false;
+    bool spectral = false;   // Rgb from a spectrum or blackbody (pbrt-v4 lights normalise those)
+    bool inherited = false;  // from an Attribute default: never warned about when unused
 };
 
 // A spectrum-valued parameter: a colour, or the name of a texture.
@@ -57,9 +59,13 @@ public:
     Vec3f getPoint(const std::string& name, Vec3f fallback) const;
     Vec3f getRgb(const std::string& name, Vec3f fallback) const;  // rgb/color, or one float as grey
     ColorOrTexture getColorOrTexture(const std::string& name, Vec3f fallback) const;
+    bool isSpectral(const std::string& name) const;  // given as a spectrum or blackbody, not rgb
+    // pbrt-v4's Attribute: the defaults' parameters this list does not give itself join it.
+    ParamSet withDefaults(const ParamSet& defaults) const;
     // Arrays (any count, possibly empty when absent).
     std::vector<double> getFloats(const std::string& name) const;
     std::vector<int> getInts(const std::string& name) const;
+    std::vector<std::string> getStrings(const std::string& name) const;
     std::vector<Vec3f> getPoints(const std::string& name) const;  // point3/normal/vector
 
     // Every parameter not read (unknown, or given with another type) becomes a warning naming its

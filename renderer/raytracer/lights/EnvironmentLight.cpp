@@ -1,9 +1,10 @@
-// pbrt-v3's infinite light with an environment map. Radiance is the map's texel in the direction
+// pbrt-v3's and pbrt-v4's infinite light with an environment map. Radiance is the map's texel in the direction
 // (piecewise constant, like the sampling density), so that a sample's radiance / pdf is constant
 // within a texel: bright texels such as a sun cost no more noise than their area deserves.
 #include <cmath>
 
 #include "lights/ImageLights.h"
+#include "sampling/EqualAreaSphere.h"
 #include "sampling/PiecewiseConstant.h"
 
 namespace lenslab {
@@ -12,11 +13,12 @@ namespace {
 
 constexpr float kPi = float(M_PI);
 
-std::vector<float> samplingWeights(const LinearImage& map) {
+std::vector<float> samplingWeights(const LinearImage& map, SphereLayout layout) {
     std::vector<float> w(map.texels.size());
     for (int y = 0; y < map.height; ++y) {
-        // The texel's solid angle is proportional to sin(theta) at its row.
-        const float sinTheta = std::sin(kPi * (float(y) + 0.5f) / float(map.height));
+        // An equirectangular texel's solid angle is proportional to sin(theta) at its row; equal-area
+        // texels all cover the same.
+        const float sinTheta = layout == SphereLayout::EqualArea ? 1.0f : std::sin(kPi * (float(y) + 0.5f) / float(map.height));
         for (int x = 0; x < map.width; ++x) {
             const std::size_t i = std::size_t(y) * map.width + x;
             w[i] = luminance(map.texels[i]) * sinTheta;
@@ -27,17 +29,23 @@ std::vector<float> samplingWeights(const LinearImage& map) {
 
 class EnvironmentLight : public Light {
 public:
-    EnvironmentLight(LinearImage map, const Transform& lightToWorld)
-        : map_(std::move(map)), toWorld_(lightToWorld), toLight_(inverse(lightToWorld)),
-          distribution_(samplingWeights(map_), map_.width, map_.height), average_(map_.average()) {}
+    EnvironmentLight(LinearImage map, const Transform& lightToWorld, SphereLayout layout)
+        : map_(std::move(map)), toWorld_(lightToWorld), toLight_(inverse(lightToWorld)), layout_(layout),
+          distribution_(samplingWeights(map_, layout), map_.width, map_.height), average_(map_.average()) {}
 
     bool sample(Vec3f p, float u1, float u2, LightSample& s) const override {
         float su, tv, mapPdf;
         distribution_.sample(u1, u2, su, tv, mapPdf);
-        const float theta = tv * kPi, phi = su * 2.0f * kPi;
-        const float sinTheta = std::sin(theta);
-        if (!(mapPdf > 0) || !(sinTheta > 0)) return false;
-        const Vec3f local{sinTheta * std::cos(phi), sinTheta * std::sin(phi), std::cos(theta)};
+        if (!(mapPdf > 0)) return false;
+        Vec3f local;
+        if (layout_ == SphereLayout::EqualArea) {
+            local = equalAreaSquareToSphere(su, tv);
+        } else {
+            const float theta = tv * kPi, phi = su * 2.0f * kPi;
+            const float sinTheta = std::sin(theta);
+            if (!(sinTheta > 0)) return false;
+            local = {sinTheta * std::cos(phi), sinTheta * std::sin(phi), std::cos(theta)};
+        }
         s.wi = normalize(transformVector(toWorld_, local));
         s.distance = std::numeric_limits<float>::infinity();
         // Density and radiance from the direction itself, exactly as pdf() and emitted() find them:
@@ -52,6 +60,7 @@ public:
         if (at) return 0;
         float s, t, sinTheta;
         mapCoordinates(w, s, t, sinTheta);
+        if (layout_ == SphereLayout::EqualArea) return distribution_.density(s, t) / (4.0f * kPi);
         return sinTheta > 0 ? distribution_.density(s, t) / (2.0f * kPi * kPi * sinTheta) : 0.0f;
     }
 
@@ -70,6 +79,11 @@ public:
 private:
     void mapCoordinates(Vec3f worldDirection, float& s, float& t, float& sinTheta) const {
         const Vec3f d = normalize(transformVector(toLight_, worldDirection));
+        if (layout_ == SphereLayout::EqualArea) {
+            equalAreaSphereToSquare(d, s, t);
+            sinTheta = 1;
+            return;
+        }
         const float cosTheta = std::clamp(d.z, -1.0f, 1.0f);
         float phi = std::atan2(d.y, d.x);
         if (phi < 0) phi += 2.0f * kPi;
@@ -80,6 +94,7 @@ private:
 
     LinearImage map_;
     Transform toWorld_, toLight_;
+    SphereLayout layout_;
     PiecewiseConstant2D distribution_;
     Vec3f average_;
     float radius_ = 1;
@@ -87,8 +102,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Light> makeEnvironmentLight(LinearImage map, const Transform& lightToWorld) {
-    return std::make_unique<EnvironmentLight>(std::move(map), lightToWorld);
+std::unique_ptr<Light> makeEnvironmentLight(LinearImage map, const Transform& lightToWorld, SphereLayout layout) {
+    return std::make_unique<EnvironmentLight>(std::move(map), lightToWorld, layout);
 }
 
 }  // namespace lenslab

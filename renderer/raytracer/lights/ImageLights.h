@@ -10,14 +10,22 @@
 
 namespace lenslab {
 
-// An equirectangular environment: +z the pole, s = phi / (2 pi) across, t = theta / pi down. The
-// map already carries L and scale. Sampled in proportion to luminance times sin(theta).
-std::unique_ptr<Light> makeEnvironmentLight(LinearImage map, const Transform& lightToWorld);
+// How an image covers the sphere of directions: pbrt-v3's equirectangular (+z the pole, s = phi /
+// (2 pi) across, t = theta / pi down) or pbrt-v4's equal-area square (sampling/EqualAreaSphere.h,
+// s across, t down).
+enum class SphereLayout { Equirectangular, EqualArea };
 
-// A point at the light-space origin with intensity I times the diagram's value at (phi, theta)
-// about light-space +y; no diagram: a plain point light.
+// An environment map around the scene. The map already carries L and scale. Sampled in proportion
+// to luminance times each texel's solid angle.
+std::unique_ptr<Light> makeEnvironmentLight(LinearImage map, const Transform& lightToWorld,
+                                            SphereLayout layout = SphereLayout::Equirectangular);
+
+// A point at the light-space origin with intensity I times the diagram's value in each direction,
+// light-space +y its pole (both pbrt versions swap y and z before the layout's mapping); no
+// diagram: a plain point light.
 std::unique_ptr<Light> makeGoniometricLight(std::optional<LinearImage> diagram, Vec3f intensity,
-                                            const Transform& lightToWorld);
+                                            const Transform& lightToWorld,
+                                            SphereLayout layout = SphereLayout::Equirectangular);
 
 // A point at the light-space origin projecting the image along +z through a pinhole whose field
 // of view `fovDegrees` spans the image's shorter side; no image: a white frustum of aspect 1.

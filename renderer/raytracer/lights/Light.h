@@ -8,6 +8,7 @@
 
 #include "materials/Material.h"
 #include "core/ParamSet.h"
+#include "core/SceneDialect.h"
 #include "core/Transform.h"
 #include "core/Vec3f.h"
 
@@ -42,8 +43,9 @@ public:
 };
 
 // LightSource "TYPE" params, with the current transform: point, spot, distant, infinite (constant or
-// with an environment map), goniometric, projection. `resolve` finds the image files they name.
+// with an environment map), goniometric, projection, read as the scene's pbrt version means them.
+// `resolve` finds the image files they name.
 std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& params, const Transform& lightToWorld,
-                                 const PathResolver& resolve, std::vector<std::string>& warnings);
+                                 SceneDialect dialect, const PathResolver& resolve, std::vector<std::string>& warnings);
 
 }  // namespace lenslab

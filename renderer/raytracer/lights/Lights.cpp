@@ -3,7 +3,9 @@
 
 #include "lights/ImageLights.h"
 #include "lights/Light.h"
+#include "lights/Pbrt4Emission.h"
 #include "lights/PointLight.h"
+#include "sampling/EqualAreaSphere.h"
 #include "sampling/Sampling.h"
 
 namespace lenslab {
@@ -12,15 +14,17 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// pbrt-v3's spot: full intensity inside coneangle - conedeltaangle, a smooth falloff to zero at
-// coneangle.
+// A spot: full intensity inside coneangle - conedeltaangle, falling to zero at coneangle, as
+// pbrt-v3 does (the fourth power of the cosines' fraction) or pbrt-v4 (its smoothstep).
 class SpotLight : public PointLight {
 public:
-    SpotLight(Vec3f position, Vec3f axis, Vec3f intensity, float coneAngle, float coneDelta)
+    SpotLight(Vec3f position, Vec3f axis, Vec3f intensity, float coneAngle, float coneDelta, SceneDialect dialect)
         : PointLight(position, intensity), axis_(axis), cosTotal_(std::cos(coneAngle * float(M_PI) / 180)),
-          cosFalloff_(std::cos((coneAngle - coneDelta) * float(M_PI) / 180)) {}
-    Vec3f power() const override {
-        return 2.0f * float(M_PI) * (1.0f - 0.5f * (cosFalloff_ + cosTotal_)) * intensity_;
+          cosFalloff_(std::cos((coneAngle - coneDelta) * float(M_PI) / 180)), dialect_(dialect) {}
+    Vec3f power() const override { return unitPower(cosTotal_, cosFalloff_) * intensity_; }
+    // pbrt's estimate of the power of unit intensity, the falloff counted as half.
+    static float unitPower(float cosTotal, float cosFalloff) {
+        return 2.0f * float(M_PI) * (1.0f - 0.5f * (cosFalloff + cosTotal));
     }
 
 protected:
@@ -29,13 +33,14 @@ protected:
         if (c < cosTotal_) return {};
         if (c >= cosFalloff_) return {1, 1, 1};
         const float d = (c - cosTotal_) / (cosFalloff_ - cosTotal_);
-        const float falloff = (d * d) * (d * d);
+        const float falloff = dialect_ == SceneDialect::PbrtV4 ? d * d * (3 - 2 * d) : (d * d) * (d * d);
         return {falloff, falloff, falloff};
     }
 
 private:
     Vec3f axis_;
     float cosTotal_, cosFalloff_;
+    SceneDialect dialect_;
 };
 
 class DistantLight : public Light {
@@ -83,10 +88,97 @@ private:
     float radius_ = 1;
 };
 
+// pbrt-v4's "illuminance" for an environment map: the factor that makes the map deliver E to a
+// surface facing light-space +z (the map's sum of luminance times cos theta over the upper
+// hemisphere, each equal-area texel covering 4 pi / texels).
+float mapIlluminanceFactor(const ParamSet& p, const LinearImage& map) {
+    const double target = p.getFloat("illuminance", -1);
+    if (target <= 0) return 1;
+    double e = 0;
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x) {
+            const Vec3f d = equalAreaSquareToSphere((float(x) + 0.5f) / float(map.width), (float(y) + 0.5f) / float(map.height));
+            if (d.z > 0) e += luminance(map.texels[std::size_t(y) * map.width + x]) * d.z;
+        }
+    e *= 4 * M_PI / double(map.texels.size());
+    if (!(e > 0)) p.fail("\"illuminance\" given for a map that lights nothing from above");
+    return float(target / e);
+}
+
+// The lights of pbrt-v4 files: emission read and normalised as pbrt-v4 does (lights/Pbrt4Emission.h),
+// maps as equal-area squares, the spot's smoothstep falloff.
+std::unique_ptr<Light> makePbrt4Light(const std::string& type, const ParamSet& p, const Transform& toWorld,
+                                      const PathResolver& resolve, std::vector<std::string>& warnings) {
+    const auto image = [&]() -> std::optional<LinearImage> {
+        const std::string name = p.getString("filename", "");
+        if (name.empty()) return std::nullopt;
+        return readLinearImage(resolve(name, p.where()), name, p.where());
+    };
+    const auto squareImage = [&]() {
+        std::optional<LinearImage> map = image();
+        if (map && map->width != map->height)
+            p.fail("pbrt-v4 needs a square (equal-area) image, not " + std::to_string(map->width) + " x " + std::to_string(map->height));
+        return map;
+    };
+    const auto noPower = [&] {
+        if (p.has("power")) warnings.push_back(describe(p.where()) + ": \"power\" not applied to this light type");
+    };
+    if (type == "point") {
+        const Vec3f I = pbrt4Emission(p, "I") * pbrt4PowerFactor(p, 4 * float(M_PI));
+        return std::make_unique<PointLight>(transformPoint(toWorld, p.getPoint("from", {0, 0, 0})), I);
+    }
+    if (type == "spot") {
+        const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
+        const Vec3f axis = transformVector(toWorld, toL - fromL);
+        if (!(length(axis) > 0)) p.fail("\"from\" and \"to\" must differ");
+        const float cone = float(p.getFloat("coneangle", 30)), delta = float(p.getFloat("conedeltaangle", 5));
+        if (!(cone > 0 && cone <= 180) || !(delta >= 0 && delta <= cone)) p.fail("coneangle must lie in (0, 180] and conedeltaangle in [0, coneangle]");
+        const float unit = SpotLight::unitPower(std::cos(cone * float(M_PI) / 180), std::cos((cone - delta) * float(M_PI) / 180));
+        return std::make_unique<SpotLight>(transformPoint(toWorld, fromL), normalize(axis),
+                                           pbrt4Emission(p, "I") * pbrt4PowerFactor(p, unit), cone, delta, SceneDialect::PbrtV4);
+    }
+    if (type == "distant") {
+        const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
+        const Vec3f toward = transformVector(toWorld, fromL - toL);
+        if (!(length(toward) > 0)) p.fail("\"from\" and \"to\" must differ");
+        const double illuminance = p.getFloat("illuminance", -1);  // on a surface facing the light
+        const Vec3f L = pbrt4Emission(p, "L") * (illuminance > 0 ? float(illuminance) : 1.0f);
+        return std::make_unique<DistantLight>(normalize(toward), L);
+    }
+    if (type == "infinite") {
+        noPower();
+        if (std::optional<LinearImage> map = squareImage()) {
+            if (p.has("L")) p.fail("give \"L\" or \"filename\", not both (as pbrt-v4)");
+            const float scale = float(p.getFloat("scale", 1)) * mapIlluminanceFactor(p, *map);
+            for (Vec3f& texel : map->texels) texel = scale * texel;
+            return makeEnvironmentLight(std::move(*map), toWorld, SphereLayout::EqualArea);
+        }
+        // A uniform sky of radiance L lights an upward surface with pi L.
+        const double illuminance = p.getFloat("illuminance", -1);
+        return std::make_unique<InfiniteLight>(pbrt4Emission(p, "L") * (illuminance > 0 ? float(illuminance / M_PI) : 1.0f));
+    }
+    if (type == "goniometric") {
+        noPower();
+        return makeGoniometricLight(squareImage(), pbrt4Emission(p, "I"), toWorld, SphereLayout::EqualArea);
+    }
+    if (type == "projection") {
+        noPower();
+        const float fov = float(p.getFloat("fov", 90));
+        if (!(fov > 0 && fov < 180)) p.fail("fov must lie in (0, 180) degrees");
+        return makeProjectionLight(image(), pbrt4Emission(p, "I"), fov, toWorld);
+    }
+    p.fail("light \"" + type + "\" is not supported (point, spot, distant, infinite, goniometric, projection)");
+}
+
 }  // namespace
 
 std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& p, const Transform& toWorld,
-                                 const PathResolver& resolve, std::vector<std::string>& warnings) {
+                                 SceneDialect dialect, const PathResolver& resolve, std::vector<std::string>& warnings) {
+    if (dialect == SceneDialect::PbrtV4) {
+        std::unique_ptr<Light> light = makePbrt4Light(type, p, toWorld, resolve, warnings);
+        p.checkAllUsed(warnings, {"portal"});
+        return light;
+    }
     const Vec3f scale = p.getRgb("scale", {1, 1, 1});
     const auto image = [&]() -> std::optional<LinearImage> {
         const std::string name = p.getString("mapname", "");
@@ -104,7 +196,7 @@ std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& p, con
         const float cone = float(p.getFloat("coneangle", 30)), delta = float(p.getFloat("conedeltaangle", 5));
         if (!(cone > 0 && cone <= 180) || !(delta >= 0 && delta <= cone)) p.fail("coneangle must lie in (0, 180] and conedeltaangle in [0, coneangle]");
         light = std::make_unique<SpotLight>(transformPoint(toWorld, fromL), normalize(axis),
-                                            scale * p.getRgb("I", {1, 1, 1}), cone, delta);
+                                            scale * p.getRgb("I", {1, 1, 1}), cone, delta, SceneDialect::PbrtV3);
     } else if (type == "distant") {
         const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
         const Vec3f toward = transformVector(toWorld, fromL - toL);

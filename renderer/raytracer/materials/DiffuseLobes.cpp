@@ -1,5 +1,7 @@
 #include "materials/DiffuseLobes.h"
 
+#include "materials/Fresnel.h"
+
 #include <cmath>
 
 #include "sampling/Sampling.h"
@@ -47,6 +49,31 @@ Vec3f OrenNayar::f(Vec3f wo, Vec3f wi) const {
     const float tanBeta = iSteeper ? sinI / std::fabs(wi.z) : sinO / std::fabs(wo.z);
     const float v = kInvPi * (a_ + b_ * cosDeltaPhi * sinAlpha * tanBeta);
     return {v, v, v};
+}
+
+float CoatedDiffuse::throughCoat(float cosOutside) const {
+    const float c = std::fabs(cosOutside);
+    const float transmitted = 1 - fresnelDielectric(c, 1.0f, eta_);
+    const float cosInside = std::sqrt(std::max(0.0f, 1 - (1 - c * c) / (eta_ * eta_)));
+    return transmitted * (thickness_ > 0 && cosInside > 0 ? std::exp(-thickness_ / cosInside) : 1.0f);
+}
+
+Vec3f CoatedDiffuse::f(Vec3f wo, Vec3f wi) const {
+    if (!sameHemisphere(wo, wi)) return {};
+    const float k = throughCoat(wo.z) * throughCoat(wi.z) / (float(M_PI) * eta_ * eta_);
+    const Vec3f r = reflectance_;
+    return {k * r.x / (1 - r.x * internal_), k * r.y / (1 - r.y * internal_), k * r.z / (1 - r.z * internal_)};
+}
+
+float coatInternalReflectance(float eta) {
+    // Fdr outside = 2 * integral of F(mu) mu dmu over [0, 1], by the midpoint rule.
+    constexpr int kSteps = 256;
+    double outside = 0;
+    for (int i = 0; i < kSteps; ++i) {
+        const double mu = (i + 0.5) / kSteps;
+        outside += 2 * fresnelDielectric(float(mu), 1.0f, eta) * mu / kSteps;
+    }
+    return float(1 - (1 - outside) / (eta * eta));
 }
 
 }  // namespace lenslab

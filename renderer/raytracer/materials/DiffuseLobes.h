@@ -30,4 +30,30 @@ private:
     float a_, b_;
 };
 
+// The diffuse base of a coated surface seen through a smooth dielectric coat of index eta
+// (lenslab's closed-form stand-in for pbrt-v4's stochastic layered coateddiffuse): light enters
+// through 1 - F, is reflected diffusely with the base's reflectance, bounces between base and coat
+// (the coat reflects Fdr of diffuse light back: the 1 / (1 - R Fdr) series), leaves through 1 - F
+// spread over eta^2 more solid angle, and crosses the coat's thickness at the refracted angles with
+// pbrt-v4's transmittance exp(-thickness / cos). Energy-conserving; reciprocal. The coat's own
+// reflection is a separate lobe.
+class CoatedDiffuse final : public Lobe {
+public:
+    // internalReflectance: the coat's hemispherical reflectance of diffuse light from inside
+    // (coatInternalReflectance(eta)).
+    CoatedDiffuse(Vec3f reflectance, float eta, float thickness, float internalReflectance)
+        : reflectance_(reflectance), eta_(eta), thickness_(thickness), internal_(internalReflectance) {}
+    unsigned type() const override { return kReflection; }
+    Vec3f f(Vec3f wo, Vec3f wi) const override;
+
+private:
+    float throughCoat(float cosOutside) const;  // (1 - F) times the layer's transmittance
+    Vec3f reflectance_;
+    float eta_, thickness_, internal_;
+};
+
+// The hemispherical average reflectance of a smooth boundary for diffuse light arriving from
+// inside a medium of index eta (1 - (1 - Fdr outside) / eta^2, by reciprocity).
+float coatInternalReflectance(float eta);
+
 }  // namespace lenslab

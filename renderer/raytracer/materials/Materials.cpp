@@ -7,6 +7,7 @@
 #include "materials/MeasuredBrdf.h"
 #include "materials/MetalSpectra.h"
 #include "materials/MicrofacetLobes.h"
+#include "materials/Pbrt4Materials.h"
 #include "materials/SpecularLobes.h"
 
 namespace lenslab {
@@ -315,21 +316,37 @@ std::shared_ptr<Material> makeUber(const Reader& r) {
                                                r.roughness(u, v)});
 }
 
-std::shared_ptr<Material> makeMix(const Reader& r) {
-    auto a = r.named("namedmaterial1"), b = r.named("namedmaterial2");
+std::shared_ptr<Material> makeMix(const Reader& r, const ParamSet& p, const MaterialContext& c) {
+    // pbrt-v4 names both in "materials" and picks the second with probability "amount": the
+    // average is pbrt-v3's mix with the two swapped.
+    const bool v4 = p.has("materials");
+    std::shared_ptr<const Material> a, b;
+    if (v4) {
+        const std::vector<std::string> names = p.getStrings("materials");
+        if (names.size() != 2) p.fail("mix needs two names in \"materials\"");
+        for (int i = 0; i < 2; ++i) {
+            const auto it = c.named.find(names[i]);
+            if (it == c.named.end()) p.fail("\"materials\" names an undefined material \"" + names[i] + "\"");
+            (i == 0 ? b : a) = it->second;
+        }
+    } else {
+        a = r.named("namedmaterial1");
+        b = r.named("namedmaterial2");
+    }
     if (a->maxLobes() + b->maxLobes() > Bsdf::kMaxLobes)
         r.fail("mix of materials with more than " + std::to_string(Bsdf::kMaxLobes) + " lobes in all");
     // One hit has one shading frame, the mix's own, which has no bump map (as in pbrt-v3).
     if (a->hasBumpMap() || b->hasBumpMap())
         r.warn("the bump maps of the materials inside a mix are not applied");
-    return std::make_shared<Mix>(std::move(a), std::move(b), r.color("amount", grey(0.5f)));
+    return std::make_shared<Mix>(std::move(a), std::move(b), v4 ? r.number("amount", 0.5f) : r.color("amount", grey(0.5f)));
 }
 
 // pbrt-v3 reads a bump map for every material but mix and none (which has no surface to bump).
 bool takesBumpMap(const std::string& type) { return type != "mix" && type != "" && type != "none" && type != "interface"; }
 
 const char* kSupported =
-    "(matte, plastic, metal, mirror, glass, substrate, uber, translucent, mix, measured, none, interface)";
+    "(matte, plastic, metal, mirror, glass, substrate, uber, translucent, mix, measured, none, interface; pbrt-v4's "
+    "diffuse, conductor, dielectric, thindielectric, diffusetransmission, coateddiffuse, coatedconductor)";
 
 }  // namespace
 
@@ -361,17 +378,23 @@ std::shared_ptr<const Material> makeMaterial(const std::string& type, const Para
                                                               r.color("transmit", grey(0.5f)),
                                                               r.isotropicRoughness(0.1f)});
     } else if (type == "mix") {
-        m = makeMix(r);
+        m = makeMix(r, p, c);
     } else if (type == "measured") {
         const std::string name = p.getString("filename", "");
         if (name.empty()) p.fail("measured needs \"string filename\" (a .brdf or MERL file)");
         m = std::make_shared<Measured>(loadMeasuredBrdf(c.resolve(name, p.where()), name, p));
     } else if (type == "" || type == "none" || type == "interface") {
         m = std::make_shared<Passthrough>();
+    } else if (isPbrt4MaterialName(type)) {
+        m = makePbrt4Material(type, p, c);
+    } else if (type == "hair" || type == "subsurface") {
+        p.fail("material \"" + type + "\" is not supported: lenslab has no " +
+               (type == "hair" ? "hair scattering model" : "subsurface scattering") + " and the picture would differ");
     } else {
         p.fail("material \"" + type + "\" is not supported " + kSupported);
     }
     if (takesBumpMap(type) && p.has("bumpmap")) m->setBumpMap(r.number("bumpmap", 0));
+    if (takesBumpMap(type) && p.has("displacement")) m->setBumpMap(r.number("displacement", 0));  // pbrt-v4's name
     p.checkAllUsed(c.warnings, {"remaproughness"});
     return m;
 }

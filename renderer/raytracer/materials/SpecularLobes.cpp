@@ -56,4 +56,17 @@ bool FresnelSpecular::sample(Vec3f wo, float uc, float, float, LobeSample& s) co
     return true;
 }
 
+bool ThinDielectric::sample(Vec3f wo, float uc, float, float, LobeSample& s) const {
+    float r = fresnelDielectric(std::fabs(wo.z), 1.0f, eta_);
+    const float t = 1 - r;
+    if (r < 1) r += t * t * r / (1 - r * r);
+    const bool reflect = uc < r;
+    s.wi = reflect ? Vec3f{-wo.x, -wo.y, wo.z} : -wo;
+    s.pdf = reflect ? r : 1 - r;
+    s.specular = true;
+    const float v = s.pdf / std::fabs(s.wi.z);
+    s.f = {v, v, v};
+    return s.pdf > 0;
+}
+
 }  // namespace lenslab

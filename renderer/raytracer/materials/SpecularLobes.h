@@ -50,4 +50,19 @@ private:
     float etaA_, etaB_;
 };
 
+// A thin dielectric sheet (pbrt-v4's thindielectric): light bounces between its two faces, so it
+// reflects R + T^2 R / (1 - R^2) and the rest passes straight through, unbent. One is chosen in
+// proportion to its share.
+class ThinDielectric final : public Lobe {
+public:
+    explicit ThinDielectric(float eta) : eta_(eta) {}
+    unsigned type() const override { return kReflection | kTransmission | kSpecular; }
+    Vec3f f(Vec3f, Vec3f) const override { return {}; }
+    float pdf(Vec3f, Vec3f) const override { return 0; }
+    bool sample(Vec3f wo, float uc, float u1, float u2, LobeSample& out) const override;
+
+private:
+    float eta_;
+};
+
 }  // namespace lenslab

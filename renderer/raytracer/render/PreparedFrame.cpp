@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "cameras/CameraFactory.h"
+#include "film/WhiteBalance.h"
 
 namespace lenslab {
 
@@ -35,6 +36,13 @@ int threadCount(const RenderSettings& s) {
 Vec3f clampLuminance(Vec3f L, double limit) {
     const float y = luminance(L);
     return limit > 0 && y > limit ? float(limit / y) * L : L;
+}
+
+// pbrt-v4's maxcomponentvalue: a sample whose largest component (after the exposure `scale`) exceeds
+// the limit is scaled down to it, keeping its colour.
+Vec3f clampComponents(Vec3f L, double limit, double scale) {
+    const float m = float(scale) * std::max({L.x, L.y, L.z});
+    return limit > 0 && m > limit ? float(limit / m) * L : L;
 }
 
 std::string joinLines(const std::vector<std::string>& lines) {
@@ -94,6 +102,7 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
     std::vector<CameraSample> samples(std::size_t(runPixels) * spp_);
     std::vector<CameraRay> rays(samples.size());
     std::vector<float> filterWeights(samples.size());
+    const Rgb3x3 whiteBalance = whiteBalanceMatrix(scene_.film.whiteBalanceKelvin > 0 ? scene_.film.whiteBalanceKelvin : 6504);
     for (int py = rect.y0; py < rect.y1; ++py) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             counters += local;
@@ -126,13 +135,15 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                     }
                     Pcg32 rng(hashCombine(seed, std::uint64_t(s)));
                     pixel.add(filterWeights[first + s],
-                              clampLuminance(ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced),
-                                             scene_.film.maxSampleLuminance));
+                              clampComponents(clampLuminance(ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced),
+                                                             scene_.film.maxSampleLuminance),
+                                              scene_.film.maxComponentValue, scene_.film.scale));
                 }
                 local.cameraRays += spp_;
                 float* out = row + std::size_t(px - rect.x0) * 3;
                 // A filter's negative lobes can push a pixel below zero; pbrt-v3 clamps it there too.
-                const Vec3f v = float(scene_.film.scale) * pixel.value();
+                Vec3f v = float(scene_.film.scale) * pixel.value();
+                if (scene_.film.whiteBalanceKelvin > 0) v = applyRgbMatrix(whiteBalance, v);
                 out[0] = std::max(0.0f, v.x);
                 out[1] = std::max(0.0f, v.y);
                 out[2] = std::max(0.0f, v.z);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "GlassCatalog.h"
 #include "materials/MetalSpectra.h"
 #include "core/Spectrum.h"
 
@@ -56,10 +57,21 @@ Vec3f spectrumFile(const std::string& name, const SourceLocation& at, const Path
     return sampledPairs(v, at, name);
 }
 
+// pbrt-v4's named glasses ("glass-BK7"): the catalog glass's index at the d line (587.6 nm); an
+// RGB renderer has no dispersion (docs/pbrt-v4.md).
+std::optional<float> namedGlassIndex(const std::string& name) {
+    const std::string prefix = "glass-";
+    if (name.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
+    const GlassLookup found = findGlass(name.substr(prefix.size()), {"SCHOTT"});
+    if (!found.glass) return std::nullopt;
+    return float(found.glass->nd);
+}
+
 Vec3f spectralToRgb(Declared kind, const std::vector<Token>& values, const SourceLocation& at, const std::string& name,
                     const PathResolver& resolve) {
     if (kind == Declared::Spectrum && values.size() == 1 && values[0].quoted) {
         if (const auto named = namedSpectrumRgb(values[0].text)) return *named;  // "metal-Cu-eta"
+        if (const auto glass = namedGlassIndex(values[0].text)) return {*glass, *glass, *glass};
         return spectrumFile(values[0].text, at, resolve);
     }
     std::vector<double> v;
@@ -100,6 +112,7 @@ ParamSet readParamList(TokenCursor& in, const SourceLocation& where, const PathR
         if (type->second != Declared::Plain) {
             const Vec3f rgb = spectralToRgb(type->second, values, at, name, resolve);
             p.numbers = {rgb.x, rgb.y, rgb.z};
+            p.spectral = type->second == Declared::Spectrum || type->second == Declared::Blackbody;
             list.push_back(std::move(p));
             continue;
         }

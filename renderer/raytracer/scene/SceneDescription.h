@@ -12,6 +12,7 @@
 #include "materials/Material.h"
 #include "media/ParticipatingMedium.h"
 #include "core/ParamSet.h"
+#include "core/SceneDialect.h"
 #include "shapes/Shape.h"
 #include "core/Transform.h"
 
@@ -31,6 +32,9 @@ struct FilmSpec {
     std::array<double, 4> crop = {0, 1, 0, 1};  // x0, x1, y0, y1 in [0, 1]
     double scale = 1;                           // pbrt-v3's Film "scale": multiplies every pixel
     double maxSampleLuminance = 0;              // > 0: clamp each sample's luminance to this (pbrt-v3)
+    double maxComponentValue = 0;               // > 0: scale each sample down to this largest component (pbrt-v4)
+    double iso = 100;                           // pbrt-v4's sensor: the image scales by ISO / 100
+    double whiteBalanceKelvin = 0;              // pbrt-v4: adapt this illuminant's white to D65 (0: none)
     SourceLocation where;
 };
 
@@ -82,6 +86,7 @@ struct SceneDescription {
     std::string file;      // the top-level scene file
     std::string rootDir;   // its folder: relative file names in the scene resolve against it (as pbrt-v3's)
     bool confined = false; // files must lie inside rootDir (scenes reached through the HTTP service)
+    SceneDialect dialect = SceneDialect::PbrtV3;  // scene/DialectDetection.h
     CameraSpec camera;
     FilmSpec film;
     int pixelSamples = 16;

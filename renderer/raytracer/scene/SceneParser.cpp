@@ -9,6 +9,10 @@
 #include <map>
 #include <sstream>
 
+#include "core/CompressedFile.h"
+#include "scene/DialectDetection.h"
+#include "images/LinearImage.h"
+#include "lights/Pbrt4Emission.h"
 #include "scene/ParamList.h"
 #include "Render.h"
 #include "scene/SceneDescription.h"
@@ -51,6 +55,9 @@ struct GraphicsState {
     // Scoped by AttributeBegin/End as in pbrt-v3; shared with the saved states until a Texture
     // directive changes it (copy on write: entering a block copies no textures).
     std::shared_ptr<TextureMap> textures = std::make_shared<TextureMap>();
+    // pbrt-v4's Attribute "shape" | "light" | "material" | "texture": parameters every later
+    // directive of that kind takes unless it gives its own.
+    std::map<std::string, ParamSet> defaults;
 };
 
 struct StackEntry {
@@ -70,11 +77,11 @@ public:
 
     void parseFile(const std::string& path, int depth) {
         if (depth > kMaxIncludeDepth) throw SceneError(path + ": Include nested deeper than 32 (a cycle?)");
-        std::ifstream in(path, std::ios::binary);
-        if (!in) throw SceneError("cannot open scene file '" + path + "'");
-        std::stringstream text;
-        text << in.rdbuf();
-        files_.emplace_back(path, tokenizeScene(text.str(), path));
+        const std::optional<std::string> text = readPossiblyGzipped(path);  // pbrt-v4's .pbrt.gz too
+        if (!text) throw SceneError("cannot open scene file '" + path + "'");
+        std::vector<Token> tokens = tokenizeScene(*text, path);
+        if (depth == 0) scene_.dialect = detectDialect(tokens);
+        files_.emplace_back(path, std::move(tokens));
         while (!in_().atEnd()) {
             directive(depth);
             if (options_.progress && depth == 0) options_.progress(in_().fraction());
@@ -89,6 +96,7 @@ public:
         if (!stack_.empty())
             sceneFail(stack_.back().where, "not closed by " + std::string(stack_.back().attribute ? "AttributeEnd" : "TransformEnd"));
         if (!worldBegun_) throw SceneError(scene_.file + ": no WorldBegin: the scene describes no world");
+        if (scene_.dialect == SceneDialect::PbrtV4) applyPbrt4Exposure();
     }
 
 private:
@@ -156,7 +164,7 @@ private:
             {"ReverseOrientation", {&Parser::reverseOrientation, Phase::Anywhere}},
             {"Include", {&Parser::include, Phase::Anywhere}},
             {"Import", {&Parser::include, Phase::Anywhere}},
-            {"Option", {&Parser::ignoredWithParams, Phase::Options}},
+            {"Option", {&Parser::option, Phase::Anywhere}},
             {"ColorSpace", {&Parser::ignoredName, Phase::Anywhere}},
             {"Camera", {&Parser::camera, Phase::Options}},
             {"Film", {&Parser::film, Phase::Options}},
@@ -182,7 +190,7 @@ private:
             {"Texture", {&Parser::textureDirective, Phase::World}},
             {"LightSource", {&Parser::lightSource, Phase::World}},
             {"AreaLightSource", {&Parser::areaLightSource, Phase::World}},
-            {"Attribute", {&Parser::ignoredWithParams, Phase::World}},
+            {"Attribute", {&Parser::attribute, Phase::Anywhere}},
         };
         return table;
     }
@@ -275,19 +283,45 @@ private:
     void ignoredName(SourceLocation& where, int) {
         warn({where.file, where.line, where.directive + " \"" + quoted(where, "a name") + "\""}, "ignored (lenslab renders in linear sRGB)");
     }
-    void ignoredWithParams(SourceLocation& where, int) {
-        typeName(where, "a name");
+    // pbrt-v4's Option "TYPE NAME" value: renderer settings that do not change the picture's meaning.
+    void option(SourceLocation& where, int) {
         params(where);
-        warn(where, "ignored (a pbrt-v4 directive lenslab does not use)");
+        warn(where, "ignored (a pbrt-v4 rendering option lenslab does not use)");
+    }
+
+    // pbrt-v4's Attribute: defaults for the parameters of later directives of one kind, scoped
+    // like the rest of the graphics state.
+    void attribute(SourceLocation& where, int) {
+        const std::string target = typeName(where, "shape, light, material, medium or texture");
+        const ParamSet p = params(where);
+        if (target == "medium") {
+            warn(where, "ignored (no participating media in lenslab scenes)");
+            return;
+        }
+        if (target != "shape" && target != "light" && target != "material" && target != "texture")
+            p.fail("Attribute needs \"shape\", \"light\", \"material\", \"medium\" or \"texture\", not \"" + target + "\"");
+        g_.defaults[target] = p.withDefaults(g_.defaults[target]);
+    }
+    // A directive's parameters with the Attribute defaults of its kind.
+    ParamSet paramsOf(const char* kind, const SourceLocation& where) {
+        const ParamSet own = params(where);
+        const auto it = g_.defaults.find(kind);
+        return it == g_.defaults.end() ? own : own.withDefaults(it->second);
     }
 
     // --- rendering options ------------------------------------------------------------------
     void camera(SourceLocation& where, int) {
         const std::string type = typeName(where, "a camera type");
-        if (type != "perspective" && type != "realistic" && type != "orthographic" && type != "environment")
-            sceneFail(where, "camera \"" + type + "\" is not supported (perspective, orthographic, environment, realistic)");
-        scene_.camera.type = type;
+        if (type != "perspective" && type != "realistic" && type != "orthographic" && type != "environment" && type != "spherical")
+            sceneFail(where, "camera \"" + type + "\" is not supported (perspective, orthographic, environment, spherical, realistic)");
         scene_.camera.params = params(where);
+        scene_.camera.type = type;
+        if (type == "spherical") {  // pbrt-v4's; its equirectangular mapping is pbrt-v3's environment camera
+            const std::string mapping = scene_.camera.params.getString("mapping", "equalarea");
+            if (mapping != "equirectangular")
+                scene_.camera.params.fail("spherical camera mapping \"" + mapping + "\" is not supported (equirectangular)");
+            scene_.camera.type = "environment";
+        }
         scene_.camera.cameraToWorld = inverse(g_.ctm);
         // pbrt's camera sits in the outside medium current here; media may be named later.
         cameraMedium_ = g_.outsideMedium;
@@ -342,7 +376,9 @@ private:
     void film(SourceLocation& where, int) {
         const std::string type = typeName(where, "a film type");
         const ParamSet p = params(where);
-        if (type != "image") warn(where, "film \"" + type + "\" is rendered as pbrt-v3's \"image\" film (RGB)");
+        const bool v4 = scene_.dialect == SceneDialect::PbrtV4;
+        if (type != "image" && !(v4 && type == "rgb"))
+            warn(where, "film \"" + type + "\" is rendered as an RGB film");
         FilmSpec& f = scene_.film;
         f.where = where;
         f.xresolution = p.getInt("xresolution", 1280);
@@ -359,7 +395,31 @@ private:
         if (!(f.scale > 0)) p.fail("scale must be positive");
         f.maxSampleLuminance = p.getFloat("maxsampleluminance", 0);
         if (f.maxSampleLuminance < 0) p.fail("maxsampleluminance must not be negative");
-        p.checkAllUsed(scene_.warnings);
+        if (v4) readPbrt4Sensor(p, f);
+        p.checkAllUsed(scene_.warnings, {"savefp16", "writefp16"});
+    }
+
+    // pbrt-v4's sensor: an ISO speed and a white balance; the exposure time comes from the
+    // camera's shutter (applyPbrt4Exposure). Camera sensors other than the CIE 1931 observer need
+    // their measured curves, which lenslab does not have: the observer stands in for them.
+    void readPbrt4Sensor(const ParamSet& p, FilmSpec& f) {
+        f.iso = p.getFloat("iso", 100);
+        if (!(f.iso > 0)) p.fail("iso must be positive");
+        const std::string sensor = p.getString("sensor", "cie1931");
+        f.whiteBalanceKelvin = p.getFloat("whitebalance", sensor == "cie1931" ? 0 : 6500);
+        if (f.whiteBalanceKelvin != 0 && !(f.whiteBalanceKelvin >= 1000 && f.whiteBalanceKelvin <= 25000))
+            p.fail("whitebalance must lie in [1000, 25000] K (or 0: none)");
+        if (sensor != "cie1931")
+            warn(p.where(), "sensor \"" + sensor + "\" rendered as the CIE 1931 observer (no measured curves), white balanced");
+        f.maxComponentValue = p.getFloat("maxcomponentvalue", 0);
+        if (f.maxComponentValue < 0) p.fail("maxcomponentvalue must not be negative");
+    }
+    // pbrt-v4 scales the image by the exposure time (shutterclose - shutteropen) times ISO / 100.
+    void applyPbrt4Exposure() {
+        const ParamSet& c = scene_.camera.params;
+        const double exposure = c.getFloat("shutterclose", 1) - c.getFloat("shutteropen", 0);
+        if (!(exposure > 0)) c.fail("shutterclose must come after shutteropen");
+        scene_.film.scale *= exposure * scene_.film.iso / 100;
     }
 
     void sampler(SourceLocation& where, int) {
@@ -368,7 +428,7 @@ private:
         if (type == "stratified") scene_.pixelSamples = p.getInt("xsamples", 4) * p.getInt("ysamples", 4);
         else scene_.pixelSamples = p.getInt("pixelsamples", 16);
         p.checkAllUsed(scene_.warnings, {"jitter", "dimensions", "seed"});
-        if (type != "sobol" && type != "zerotwosequence" && type != "02sequence" && type != "lowdiscrepancy")
+        if (type != "sobol" && type != "zsobol" && type != "zerotwosequence" && type != "02sequence" && type != "lowdiscrepancy")
             warn(where, "lenslab uses its own Owen-scrambled Sobol'/Faure sampler (noise differs, not the image)");
     }
 
@@ -377,11 +437,14 @@ private:
         const ParamSet p = params(where);
         IntegratorSpec& spec = scene_.integrator;
         integratorWhere_ = where;
-        integratorRendersMedia_ = type == "volpath" || type == "bdpt" || type == "mlt" || type == "sppm";
+        integratorRendersMedia_ =
+            type == "volpath" || type == "simplevolpath" || type == "bdpt" || type == "mlt" || type == "sppm";
         // Global-illumination methods of pbrt-v3 and pbrt-v2 converge to the path tracer's picture
         // (media aside); the others compute something else and are refused.
         static const char* kGlobalIllumination[] = {"bdpt", "mlt", "sppm", "photonmap", "exphotonmap",
-                                                    "irradiancecache", "igi", "dipolesubsurface"};
+                                                    "irradiancecache", "igi", "dipolesubsurface",
+                                                    // pbrt-v4's
+                                                    "simplepath", "simplevolpath", "lightpath", "randomwalk"};
         if (type == "directlighting") {
             spec.type = IntegratorType::DirectLighting;
         } else if (type == "whitted") {
@@ -452,11 +515,11 @@ private:
     MaterialContext materialContext() { return {*g_.textures, namedMaterials_, resolver(), scene_.warnings}; }
     void material(SourceLocation& where, int) {
         const std::string type = typeName(where, "a material type");
-        g_.material = makeMaterial(type, params(where), materialContext());
+        g_.material = makeMaterial(type, paramsOf("material", where), materialContext());
     }
     void makeNamedMaterial(SourceLocation& where, int) {
         const std::string n = typeName(where, "a material name");
-        const ParamSet p = params(where);
+        const ParamSet p = paramsOf("material", where);
         if (!p.has("type")) p.fail("MakeNamedMaterial needs \"string type\"");
         namedMaterials_[n] = makeMaterial(p.getString("type", ""), p, materialContext());
     }
@@ -469,16 +532,31 @@ private:
     void textureDirective(SourceLocation& where, int) { texture(where); }
     void lightSource(SourceLocation& where, int) {
         const std::string type = typeName(where, "a light type");
-        scene_.lights.push_back(makeLight(type, params(where), g_.ctm, resolver(), scene_.warnings));
+        scene_.lights.push_back(makeLight(type, paramsOf("light", where), g_.ctm, scene_.dialect, resolver(), scene_.warnings));
         warnIfMoving(where);
     }
     // pbrt-v3 accepts "area" as another name for "diffuse".
     void areaLightSource(SourceLocation& where, int) {
         const std::string type = typeName(where, "an area light type");
         if (type != "diffuse" && type != "area") sceneFail(where, "area light \"" + type + "\" is not supported (diffuse)");
-        const ParamSet p = params(where);
-        g_.area = AreaEmission{p.getRgb("scale", {1, 1, 1}) * p.getRgb("L", {1, 1, 1}), p.getBool("twosided", false)};
+        const ParamSet p = paramsOf("light", where);
+        g_.area = scene_.dialect == SceneDialect::PbrtV4 ? pbrt4AreaEmission(p)
+                                                        : AreaEmission{p.getRgb("scale", {1, 1, 1}) * p.getRgb("L", {1, 1, 1}), p.getBool("twosided", false)};
         p.checkAllUsed(scene_.warnings, {"nsamples", "samples"});
+    }
+    // pbrt-v4's diffuse area light. An image ("filename") over the shape's uv renders as its mean
+    // colour (lenslab's area lights emit one radiance per shape), and "power" is not applied
+    // (pbrt-v4 normalises each triangle by its own area): both with a warning.
+    AreaEmission pbrt4AreaEmission(const ParamSet& p) {
+        Vec3f L = pbrt4Emission(p, "L");
+        const std::string image = p.getString("filename", "");
+        if (!image.empty()) {
+            if (p.has("L")) p.fail("give \"L\" or \"filename\", not both (as pbrt-v4)");
+            L = float(p.getFloat("scale", 1)) * readLinearImage(resolveScenePath(scene_, image, p.where()), image, p.where()).average();
+            warn(p.where(), "the emission image '" + image + "' is rendered as its mean colour over the shape");
+        }
+        if (p.has("power")) warn(p.where(), "\"power\" of an area light is not applied");
+        return AreaEmission{L, p.getBool("twosided", false)};
     }
     void shapeDirective(SourceLocation& where, int) {
         shape(where);
@@ -492,7 +570,7 @@ private:
         where.directive += " \"" + n + "\" \"" + kind + "\" \"" + cls + "\"";
         if (kind != "spectrum" && kind != "float" && kind != "color" && kind != "rgb")
             sceneFail(where, "texture type \"" + kind + "\" must be spectrum or float");
-        const ParamSet p = params(where);
+        const ParamSet p = paramsOf("texture", where);
         auto texture = makeTexture(cls, kind == "float" ? TextureKind::Float : TextureKind::Spectrum, p, g_.ctm,
                                    *g_.textures, resolver(), scene_.warnings);
         if (g_.textures.use_count() > 1) g_.textures = std::make_shared<TextureMap>(*g_.textures);
@@ -505,7 +583,7 @@ private:
 
     void shape(SourceLocation& where) {
         const std::string type = typeName(where, "a shape type");
-        const ParamSet p = params(where);
+        const ParamSet p = paramsOf("shape", where);
         std::optional<AreaEmission> emission = g_.area;
         if (emission && object_) {
             warn(where, "area lights inside ObjectBegin are not supported (as in pbrt-v3); this shape does not emit");

@@ -3,13 +3,22 @@
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 
+#include "core/CompressedFile.h"
+
 namespace lenslab {
 
 MeshData readPlyMesh(const std::string& path, const SourceLocation& where, std::vector<std::string>& warnings) {
     Assimp::Importer importer;
     // No post-processing: every step that helps games (joining vertices, generating normals) would
     // change the mesh pbrt-v3 renders.
-    const aiScene* scene = importer.ReadFile(path, 0);
+    const aiScene* scene = nullptr;
+    if (isGzipName(path)) {  // pbrt-v4's .ply.gz
+        const std::optional<std::string> bytes = readPossiblyGzipped(path);
+        if (!bytes) sceneFail(where, "cannot decompress '" + path + "'");
+        scene = importer.ReadFileFromMemory(bytes->data(), bytes->size(), 0, "ply");
+    } else {
+        scene = importer.ReadFile(path, 0);
+    }
     if (!scene) sceneFail(where, "cannot read PLY file '" + path + "': " + importer.GetErrorString());
     MeshData m;
     std::size_t skipped = 0;

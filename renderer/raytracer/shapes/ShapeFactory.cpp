@@ -50,6 +50,37 @@ MeshData triangleMesh(const ParamSet& p) {
     return m;
 }
 
+// pbrt-v4's bilinear patches, each four points p00 p10 p01 p11 ("indices", default 0 1 2 3), as
+// two triangles: exact for flat patches (the common case: quads), a fold along the diagonal for
+// twisted ones. Without "uv", each patch's corners take pbrt-v4's (0,0) (1,0) (0,1) (1,1).
+MeshData bilinearMesh(const ParamSet& p) {
+    MeshData m;
+    const std::vector<Vec3f> P = p.getPoints("P");
+    std::vector<int> corners = p.getInts("indices");
+    if (corners.empty() && P.size() == 4) corners = {0, 1, 2, 3};
+    if (corners.empty() || corners.size() % 4 != 0) p.fail("needs four \"indices\" per patch (or exactly four points \"P\")");
+    for (int i : corners)
+        if (std::size_t(i) >= P.size()) p.fail("index " + std::to_string(i) + " out of range (" + std::to_string(P.size()) + " points)");
+    const std::vector<Vec3f> N = p.getPoints("N");
+    const std::vector<double> uv = p.getFloats("uv");
+    if (!N.empty() && N.size() != P.size()) p.fail("\"N\" needs one normal per point");
+    if (!uv.empty() && uv.size() != 2 * P.size()) p.fail("\"uv\" needs two numbers per point");
+    static const float kCornerUv[4][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    // Vertices are unshared per patch so that default uvs can differ between patches.
+    for (std::size_t q = 0; q < corners.size(); q += 4) {
+        const auto base = std::uint32_t(m.p.size());
+        for (int c = 0; c < 4; ++c) {
+            const int i = corners[q + c];
+            m.p.push_back(P[i]);
+            if (!N.empty()) m.n.push_back(N[i]);
+            m.uv.push_back(uv.empty() ? kCornerUv[c][0] : float(uv[2 * i]));
+            m.uv.push_back(uv.empty() ? kCornerUv[c][1] : float(uv[2 * i + 1]));
+        }
+        m.indices.insert(m.indices.end(), {base, base + 1, base + 3, base, base + 3, base + 2});
+    }
+    return m;
+}
+
 // pbrt-v3's "discarddegenerateUVs": with shading normals, (u, v) that map a triangle's corners
 // onto each other would give no usable texture frame, so all (u, v) go.
 void discardDegenerateUvs(MeshData& m, const ParamSet& p, std::vector<std::string>& warnings) {
@@ -118,6 +149,8 @@ std::vector<std::shared_ptr<const Shape>> makeShapes(const std::string& type, co
         readCutouts(p, textures, m);
         discardDegenerateUvs(m, p, warnings);
         shape = makeTriangleMesh(std::move(m), toGroup, ro);
+    } else if (type == "bilinearmesh") {
+        shape = makeTriangleMesh(bilinearMesh(p), toGroup, ro);
     } else if (type == "loopsubdiv") {
         shape = loopSubdivisionSurface(p, toGroup, ro);
     } else if (type == "nurbs") {
@@ -126,7 +159,7 @@ std::vector<std::shared_ptr<const Shape>> makeShapes(const std::string& type, co
         shape = makeCurve(p, toGroup);
     } else {
         p.fail("shape \"" + type + "\" is not supported (sphere, disk, cylinder, cone, paraboloid, hyperboloid, "
-               "trianglemesh, plymesh, loopsubdiv, nurbs, curve)");
+               "trianglemesh, plymesh, bilinearmesh, loopsubdiv, nurbs, curve)");
     }
     // Tangents ("S") only turn an anisotropic shading frame; lenslab's materials are isotropic.
     // Embree intersects curves directly, without pbrt-v3's "splitdepth" refinement.

@@ -29,7 +29,9 @@ private:
 
 }  // namespace
 
+// pbrt-v3 multiplies tex1 by tex2; pbrt-v4 names them tex and scale.
 std::shared_ptr<const Texture> makeScaleTexture(const TextureRequest& r) {
+    if (r.params.has("tex") || r.params.has("scale")) return std::make_shared<ScaleTexture>(r.operand("tex", 1), r.operand("scale", 1));
     return std::make_shared<ScaleTexture>(r.operand("tex1", 1), r.operand("tex2", 1));
 }
 
