@@ -94,9 +94,11 @@ DiagramOptions previewDiagramOptions(const json& body, const LensSettings& lens)
 // The spot and MTF figures per field (the plots draw the points: the JSON keeps the statistics).
 json previewAnalysisJson(const LensDesignAnalysis& analysis) {
     json summary = designAnalysisJson(analysis);
-    for (const char* heavy : {"ray_fans", "curves"}) summary.erase(heavy);
-    for (json& field : summary["fields"])
+    for (const char* unshown : {"ray_fans", "curves", "relative_illumination", "field_curvature"}) summary.erase(unshown);
+    for (json& field : summary["fields"]) {
+        field.erase("relative_illumination");  // interpolated from the two curve samples: too coarse to show
         for (json& spot : field["spots"]) spot.erase("points");
+    }
     json plots = json::object();
     for (const NamedSvg& plot : designAnalysisPlots(analysis))
         if (plot.name.rfind("spot-", 0) == 0 || plot.name.rfind("mtf-", 0) == 0) plots[plot.name] = plot.svg;
@@ -120,6 +122,9 @@ void preview(const httplib::Request& req, httplib::Response& res) {
     DesignAnalysisInputs inputs;
     inputs.lens = settings;
     inputs.lens.wavelength.reset();  // the analysis's own F, d, C
+    // The curves against field (relative illumination above all: 4/10 of the analysis at 16
+    // samples) are not shown by the editor: their two end points keep it within the time of an edit.
+    inputs.curveSamples = 2;
     json analysis;
     try {
         analysis = previewAnalysisJson(analyzeLensDesign(system, inputs));

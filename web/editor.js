@@ -30,10 +30,13 @@ export async function loadPrescription(id) {
   const prescription = await api(`/api/lenses/${encodeURIComponent(id)}/prescription`);
   if (selectedLens() !== id) return;
   state.lensId = id;
+  state.pending = false;
+  state.editedAt = 0;
   state.prescription = prescription;
   state.history = new UndoHistory(prescription.rows);
   setRows(prescription.rows);
   $("editor-name").value = `${id}-edited`;
+  $("editor").dataset.lens = id;
   say("");
 }
 
@@ -270,11 +273,13 @@ function showAnalysis(analysis) {
       tr.insertCell().textContent = v;
   }
   const plots = $("editor-plots");
+  // Parsed as HTML, as the report embeds them (the plots leave out the SVG namespace); parsing does
+  // not run scripts, and the service wrote every byte.
   const parser = new DOMParser();
   const figures = Object.entries(analysis.plots_svg).map(([name, svg]) => {
     const figure = document.createElement("figure");
     figure.dataset.plot = name;
-    figure.append(document.importNode(parser.parseFromString(svg, "image/svg+xml").documentElement, true));
+    figure.append(document.importNode(parser.parseFromString(svg, "text/html").querySelector("svg"), true));
     return figure;
   });
   plots.replaceChildren(...figures);

@@ -166,7 +166,9 @@ async function selectLens(id) {
   $("lens-description").textContent = summary.description || summary.name;
   $("delete-lens").hidden = summary.bundled;
   trySetFstop(state.fstopMin);
-  await Promise.all([updateLensView(), loadPrescription(id).catch((e) => showMessage(`The prescription of ${id} cannot be edited: ${e.message}`))]);
+  // The editor's rows first: until they are this lens's, an edit of the last lens would be shown.
+  await loadPrescription(id).catch((e) => showMessage(`The prescription of ${id} cannot be edited: ${e.message}`));
+  await updateLensView();
 }
 
 function scheduleUpdate() {

@@ -65,7 +65,8 @@ export const COLUMNS = [
       if (glasses.size && !catalogGlass(name)) return { error: `no catalog glass is called '${name}'` };
       return { value: { glass: name } };
     },
-    apply: (r, v) => ({ ...r, glass: v.glass || "", mirror: !!v.mirror, index: v.index || 0, abbe: v.abbe || 0 }),
+    // Air keeps a table's N 1 (or 0); a catalog glass's nd is the catalog's (0).
+    apply: (r, v) => ({ ...r, glass: v.glass || "", mirror: !!v.mirror, index: v.index || (r.index === 1 && !v.glass ? 1 : 0), abbe: v.abbe || 0 }),
   },
   {
     key: "index", heading: "nd", title: "refractive index at the d line (empty or 1: air); typing one makes a model glass",
