@@ -54,6 +54,8 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
     addHealthRoutes(http_.routes(), parts_);
     addLensRoutes(http_.routes(), parts_);
     addAnalysisRoutes(http_.routes(), parts_);
+    addPrescriptionRoutes(http_.routes(), parts_);
+    addGlassRoutes(http_.routes(), parts_);
     addDiagramRoutes(http_.routes(), parts_);
     addRenderRoutes(http_.routes(), parts_);
     addReportRoutes(http_.routes(), parts_);

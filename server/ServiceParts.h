@@ -29,6 +29,8 @@ std::shared_ptr<const StoredLens> findLens(const ServiceParts& parts, const std:
 void addHealthRoutes(httplib::Server& server, ServiceParts& parts);
 void addLensRoutes(httplib::Server& server, ServiceParts& parts);
 void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts);
+void addPrescriptionRoutes(httplib::Server& server, ServiceParts& parts);  // the live editor
+void addGlassRoutes(httplib::Server& server, ServiceParts& parts);
 void addDiagramRoutes(httplib::Server& server, ServiceParts& parts);
 void addRenderRoutes(httplib::Server& server, ServiceParts& parts);
 void addReportRoutes(httplib::Server& server, ServiceParts& parts);

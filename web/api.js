@@ -20,7 +20,7 @@ export async function authorizedFetch(path, options = {}) {
   return response;
 }
 
-// Fetches JSON; throws an Error carrying the service's {"error"} text (and .status) or a description.
+// Fetches JSON; throws an Error carrying the service's {"error"} text (and .status, .body) or a description.
 export async function api(path, options = {}) {
   let response;
   try {
@@ -34,6 +34,7 @@ export async function api(path, options = {}) {
   if (!response.ok) {
     const error = new Error(body && body.error ? body.error : response.status + " " + response.statusText);
     error.status = response.status;
+    error.body = body;
     throw error;
   }
   return body;

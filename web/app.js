@@ -1,13 +1,14 @@
 // lenslab web page: the lens workbench. Plain ES modules against the service's API (docs/api.md),
 // no build step and no external resources: lens.js (lenses and their controls), renders.js (renders
 // and their history), viewer.js (exposure, comparison, zoom), report.js (the report build),
-// token.js (the API token field).
+// token.js (the API token field), editor.js (the live prescription editor).
 import { showMessage } from "./api.js";
 import { setUpTokenField } from "./token.js";
 import { loadLenses, setUpLensPanel } from "./lens.js";
 import { followReport, setUpReport } from "./report.js";
 import { loadHistory, loadScenes, setUpRenderPanel } from "./renders.js";
 import { setUpViewer } from "./viewer.js";
+import { setUpEditor } from "./editor.js";
 
 async function start() {
   setUpTokenField();
@@ -17,6 +18,7 @@ async function start() {
   setUpReport();
   followReport();
   try {
+    await setUpEditor();
     await Promise.all([loadLenses(), loadScenes()]);
     await loadHistory();
     document.body.dataset.ready = "true";

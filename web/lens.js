@@ -2,6 +2,7 @@
 // driven like the course's lens viewer (↑/↓ f-number by 0.1, Shift+↑/↓ a full stop, m the diagram
 // mode, ←/→ the focus). Out-of-range f-numbers are refused with the lens's range, never clamped.
 import { $, api, authorizedFetch, clearMessage, fixed, showMessage } from "./api.js";
+import { hasEdits, loadPrescription, requestPreview } from "./editor.js";
 
 const state = {
   lenses: [],
@@ -165,6 +166,8 @@ async function selectLens(id) {
   $("lens-description").textContent = summary.description || summary.name;
   $("delete-lens").hidden = summary.bundled;
   trySetFstop(state.fstopMin);
+  // The editor's rows first: until they are this lens's, an edit of the last lens would be shown.
+  await loadPrescription(id).catch((e) => showMessage(`The prescription of ${id} cannot be edited: ${e.message}`));
   await updateLensView();
 }
 
@@ -188,8 +191,18 @@ function wavelengthParameter() {
 const lensQuery = () => `fstop=${fstopParameter()}&focus=${currentFocus()}${wavelengthParameter()}`;
 const colourParameter = () => ($("colour-fans").checked ? "&colour=1" : "");
 
+// The settings above for the edited lens: no f-number at the widest, which an edit may move.
+export function lensPreviewSettings() {
+  const settings = { focus: currentFocus(), mode: currentMode(), colour: $("colour-fans").checked };
+  if (state.fstop > state.fstopMin + 1e-9) settings.fstop = fstopParameter();
+  const nm = $("wavelength").value.trim();
+  if (nm !== "") settings.wavelength = Number(nm);
+  return settings;
+}
+
 async function updateLensView() {
   if (!state.lensId || wavelengthParameter() === null) return;
+  if (hasEdits()) { requestPreview(); return; }  // the edited lens, not the stored one
   const id = encodeURIComponent(state.lensId);
   const request = ++state.dataRequest;
   $("diagram-status").textContent = "Drawing the diagram…";
@@ -214,16 +227,24 @@ async function loadDiagram(url, request) {
     }
     const blob = await response.blob();
     if (request !== state.dataRequest) return;
-    const img = $("diagram");
-    const old = img.src;
-    img.src = URL.createObjectURL(blob);
-    if (old.startsWith("blob:")) URL.revokeObjectURL(old);
-    const focus = currentFocus();
-    $("diagram-status").textContent = `${currentMode()} diagram at f/${shown(state.fstop)}, focus ${focus === "inf" ? "at infinity" : focus + " mm"}`;
+    await showDiagramPng(URL.createObjectURL(blob), state.lensId);
   } catch (e) {
     if (request !== state.dataRequest) return;
     $("diagram-status").textContent = "The diagram could not be drawn: " + e.message;
   }
+}
+
+// Shows a diagram once it is decoded, so that the old one stays until the new one can replace it.
+export async function showDiagramPng(url, lensLabel) {
+  const next = new Image();
+  next.src = url;
+  await next.decode().catch(() => {});
+  const img = $("diagram");
+  const old = img.src;
+  img.src = url;
+  if (old.startsWith("blob:")) URL.revokeObjectURL(old);
+  const focus = currentFocus();
+  $("diagram-status").textContent = `${currentMode()} diagram of ${lensLabel} at f/${shown(state.fstop)}, focus ${focus === "inf" ? "at infinity" : focus + " mm"}`;
 }
 
 // The engraved name of a full stop (f/22 rather than f/22.6).
@@ -247,7 +268,7 @@ function showFullStops(stops) {
   }
 }
 
-function showLensData(lens) {
+export function showLensData(lens) {
   const rows = [
     ["Effective focal length", fixed(lens.efl)],
     ["Back focal distance", fixed(lens.back_focal_distance)],

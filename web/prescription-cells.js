@@ -1,0 +1,142 @@
+// The prescription editor's columns: how each cell shows its row's value (as lens designers read
+// them: radii and thicknesses to 4 decimals, nd to 5, Vd to 2, aspheric terms in exponent form),
+// how typed text is checked (the reason when it is not acceptable), and what it changes in the row.
+// Rows are the service's JSON rows (server/PrescriptionRoutes.cpp): gap is the thickness after the
+// surface; a catalog glass by name (index 0: the catalog's nd), a model glass by index and abbe.
+
+const ASPHERIC_TERMS = 8;
+
+// The catalog glasses, keyed as the service matches names: case, spaces, underscores and hyphens
+// do not matter, and the maker's prefix may be left out ("BK7" for N-BK7).
+const glasses = new Map();
+const glassKey = (name) => name.toUpperCase().replace(/[\s_-]/g, "");
+
+export function setGlassCatalog(list) {
+  for (const g of list) {
+    glasses.set(glassKey(g.name), g);
+    const dash = g.name.indexOf("-");
+    if (dash > 0 && !glasses.has(glassKey(g.name.slice(dash + 1)))) glasses.set(glassKey(g.name.slice(dash + 1)), g);
+  }
+}
+
+export const catalogGlass = (name) => (name ? glasses.get(glassKey(name)) : undefined);
+
+function number(text, what) {
+  const t = text.trim().replace(",", ".");
+  const v = Number(t);
+  if (t === "" || !Number.isFinite(v)) return { error: `${what} must be a finite number` };
+  return { value: v };
+}
+
+const fixed = (v, digits) => (Math.abs(v) >= 1e5 || (v !== 0 && Math.abs(v) < Math.pow(10, -digits)) ? v.toExponential(4) : v.toFixed(digits));
+const exponent = (v) => (v === 0 ? "0" : v.toExponential(4).replace(/e([+-])(\d)$/, "e$10$2"));
+const isModelGlass = (row) => !row.glass && !row.mirror && row.index > 1;
+
+// Each column: key, heading, title (the header's tooltip), show(row) for the cell, exact(row) for
+// a cell being edited (every digit), read(text, row) -> { value } | { error }, and apply(row, value).
+export const COLUMNS = [
+  {
+    key: "radius", heading: "radius", title: "radius of curvature, mm (flat: 0 or 'flat'); positive: centre on the film side",
+    show: (r) => (r.radius === 0 ? "flat" : fixed(r.radius, 4)),
+    exact: (r) => (r.radius === 0 ? "flat" : String(r.radius)),
+    read: (t) => (/^\s*(flat|inf(inity)?|∞)\s*$/i.test(t) ? { value: 0 } : number(t, "the radius")),
+    apply: (r, v) => ({ ...r, radius: v }),
+  },
+  {
+    key: "gap", heading: "thickness", title: "thickness to the next surface, mm (negative only after a mirror)",
+    show: (r) => fixed(r.gap, 4), exact: (r) => String(r.gap),
+    read: (t) => number(t, "the thickness"),
+    apply: (r, v) => ({ ...r, gap: v }),
+  },
+  {
+    key: "glass", heading: "glass", title: "a catalog glass (N-BK7, SF2), nd/Vd for a model glass, MIRROR, or empty for air",
+    show: (r) => (r.mirror ? "MIRROR" : r.glass), exact: (r) => (r.mirror ? "MIRROR" : r.glass),
+    read: (t) => {
+      const name = t.trim();
+      if (name === "") return { value: { glass: "" } };
+      if (/^mirror$/i.test(name)) return { value: { mirror: true } };
+      const model = name.match(/^([0-9.]+)\s*\/\s*([0-9.]+)$/);
+      if (model) {
+        const [nd, vd] = [Number(model[1]), Number(model[2])];
+        if (!(nd > 1) || !(vd > 0)) return { error: "a model glass is nd/Vd with nd > 1 and Vd > 0" };
+        return { value: { index: nd, abbe: vd } };
+      }
+      if (/\s/.test(name)) return { error: "a glass name has no spaces" };
+      if (glasses.size && !catalogGlass(name)) return { error: `no catalog glass is called '${name}'` };
+      return { value: { glass: name } };
+    },
+    // Air keeps a table's N 1 (or 0); a catalog glass's nd is the catalog's (0).
+    apply: (r, v) => ({ ...r, glass: v.glass || "", mirror: !!v.mirror, index: v.index || (r.index === 1 && !v.glass ? 1 : 0), abbe: v.abbe || 0 }),
+  },
+  {
+    key: "index", heading: "nd", title: "refractive index at the d line (empty or 1: air); typing one makes a model glass",
+    show: (r) => { const g = catalogGlass(r.glass); return g ? g.nd.toFixed(5) : r.index > 1 ? r.index.toFixed(5) : ""; },
+    exact: (r) => { const g = catalogGlass(r.glass); return g ? String(g.nd) : r.index > 1 ? String(r.index) : ""; },
+    read: (t) => {
+      if (t.trim() === "" || t.trim() === "1") return { value: 0 };
+      const n = number(t, "nd");
+      return n.error || n.value >= 1 ? n : { error: "nd must be at least 1 (empty for air)" };
+    },
+    // A catalog glass given another nd becomes a model glass that keeps the catalog's Vd.
+    apply: (r, v) => ({ ...r, index: v, abbe: v > 1 ? (catalogGlass(r.glass) || {}).vd || r.abbe : 0, glass: "", mirror: false }),
+    derived: (r) => !!catalogGlass(r.glass),
+  },
+  {
+    key: "abbe", heading: "Vd", title: "Abbe number (empty: no dispersion); needs nd > 1",
+    show: (r) => { const g = catalogGlass(r.glass); return g ? (g.vd ? g.vd.toFixed(2) : "") : r.abbe > 0 ? r.abbe.toFixed(2) : ""; },
+    exact: (r) => { const g = catalogGlass(r.glass); return g ? String(g.vd || "") : r.abbe > 0 ? String(r.abbe) : ""; },
+    read: (t, r) => {
+      if (t.trim() === "") return { value: 0 };
+      const n = number(t, "Vd");
+      if (n.error) return n;
+      if (!(n.value > 0)) return { error: "Vd must be positive (empty: no dispersion)" };
+      if (!isModelGlass(r) && !catalogGlass(r.glass)) return { error: "a Vd needs a glass: give nd first" };
+      return n;
+    },
+    apply: (r, v) => { const g = catalogGlass(r.glass); return { ...r, abbe: v, index: g ? g.nd : r.index, glass: "" }; },
+    derived: (r) => !!catalogGlass(r.glass),
+  },
+  {
+    key: "diameter", heading: "diameter", title: "clear aperture diameter, mm",
+    show: (r) => fixed(r.diameter, 3), exact: (r) => String(r.diameter),
+    read: (t) => { const n = number(t, "the diameter"); return n.error || n.value > 0 ? n : { error: "the diameter must be positive" }; },
+    apply: (r, v) => ({ ...r, diameter: v }),
+  },
+  {
+    key: "conic", heading: "conic", title: "conic constant k (0 sphere, -1 paraboloid)",
+    show: (r) => (r.conic === 0 ? "0" : fixed(r.conic, 4)), exact: (r) => String(r.conic),
+    read: (t) => (t.trim() === "" ? { value: 0 } : number(t, "the conic constant")),
+    apply: (r, v) => ({ ...r, conic: v }),
+  },
+  {
+    key: "aspheric", heading: "aspheric r², r⁴, … r¹⁶", title: "even-asphere coefficients of r^2 .. r^16, separated by spaces",
+    show: (r) => trimTerms(r.aspheric).map(exponent).join(" "),
+    exact: (r) => trimTerms(r.aspheric).map(String).join(" "),
+    read: (t) => {
+      const parts = t.trim() === "" ? [] : t.trim().split(/[\s;]+/);
+      if (parts.length > ASPHERIC_TERMS) return { error: `at most ${ASPHERIC_TERMS} terms (r² to r¹⁶)` };
+      const terms = [];
+      for (const [k, p] of parts.entries()) {
+        const n = number(p, `term ${k + 1}`);
+        if (n.error) return n;
+        terms.push(n.value);
+      }
+      while (terms.length < ASPHERIC_TERMS) terms.push(0);
+      return { value: terms };
+    },
+    apply: (r, v) => ({ ...r, aspheric: v }),
+  },
+];
+
+function trimTerms(terms) {
+  const t = [...(terms || [])];
+  while (t.length && t[t.length - 1] === 0) t.pop();
+  return t;
+}
+
+// A new surface after `row`: flat, in air, 1 mm on, as wide as its neighbour.
+export const newRow = (row) => ({ radius: 0, gap: 1, index: 0, diameter: row ? row.diameter : 10, stop: false, glass: "", abbe: 0,
+  conic: 0, aspheric: new Array(ASPHERIC_TERMS).fill(0), mirror: false, obscuration_diameter: 0 });
+
+// Whether only a .zmx can hold the rows (a lens table has no conic, aspheric, mirror or obscuration).
+export const needsZemax = (rows) => rows.some((r) => r.conic !== 0 || r.mirror || r.obscuration_diameter > 0 || (r.aspheric || []).some((a) => a !== 0));
