@@ -1,5 +1,5 @@
 // The pixel sampler: every pair of camera dimensions used together (film x/y, lens u/v, film against
-// lens) is stratified, and no dimension repeats another.
+// lens) is stratified, the time is stratified on its own, and no dimension repeats another.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -86,6 +86,60 @@ TEST(PixelSampler, SampleMeansConvergeToOneHalf) {
         }
     for (double m : mean) EXPECT_NEAR(m / (pixels * spp), 0.5, 0.005);
     EXPECT_NEAR(cross / (pixels * spp), 0.0, 0.002);
+}
+
+std::vector<float> times(std::uint64_t pixelSeed, int count) {
+    const PixelSampler sampler(pixelSeed);
+    std::vector<float> t;
+    for (int i = 0; i < count; ++i) t.push_back(sampler(std::uint32_t(i)).time);
+    return t;
+}
+
+TEST(PixelSampler, AnyPowerOfTwoSamplesFallOneInEachSliceOfTheShutterInterval) {
+    for (std::uint64_t seed : {0ull, 3ull, 0x5eedull})
+        for (int count : {2, 16, 256}) {
+            std::set<int> slices;
+            for (float t : times(seed, count)) slices.insert(int(t * count));
+            EXPECT_EQ(int(slices.size()), count) << "seed " << seed << ", " << count << " samples";
+        }
+}
+
+// The 4 x 4 cells that 16 samples of (time, dimension d) fill, on average over many pixels. A
+// dimension with the time's own matrix (scrambled apart, but nested alike) fills only 4: each
+// quarter of the shutter would always meet the same quarter of the lens.
+double cellsFilledWithTime(int d, bool timeCopiesLensU) {
+    const int pixels = 500;
+    double filled = 0;
+    for (int px = 0; px < pixels; ++px) {
+        const PixelSampler sampler(mix64(px));
+        std::set<std::pair<int, int>> cells;
+        for (std::uint32_t i = 0; i < 16; ++i) {
+            const PixelSample s = sampler(i);
+            const float other[4] = {s.filmX, s.filmY, s.lensU, s.lensV};
+            const float t = timeCopiesLensU ? PixelSampler(mix64(px) + 99)(i).lensU : s.time;
+            cells.insert({int(t * 4), int(other[d] * 4)});
+        }
+        filled += double(cells.size());
+    }
+    return filled / pixels;
+}
+
+TEST(PixelSampler, TimeIsIndependentOfFilmAndLens) {
+    // Independent uniform points fill 16 (1 - (15/16)^16) = 10.3 of 16 cells on average; stratified
+    // pairs fill all 16.
+    for (int d = 0; d < 4; ++d) EXPECT_GT(cellsFilledWithTime(d, false), 10.0) << "dimension " << d;
+    EXPECT_LT(cellsFilledWithTime(2, true), 4.5);  // the check sees a time that repeats the lens's matrix
+    double mean = 0, cross = 0;
+    for (int px = 0; px < 2000; ++px) {
+        const PixelSampler sampler(mix64(px));
+        for (std::uint32_t i = 0; i < 16; ++i) {
+            const PixelSample s = sampler(i);
+            mean += s.time;
+            cross += (s.time - 0.5) * (s.lensU - 0.5);
+        }
+    }
+    EXPECT_NEAR(mean / 32000, 0.5, 0.005);
+    EXPECT_NEAR(cross / 32000, 0.0, 0.002);
 }
 
 }  // namespace

@@ -38,9 +38,10 @@ private:
     std::uint64_t state_ = 0, inc_;
 };
 
-// The four camera dimensions of one pixel sample: where it falls in the pixel and on the lens.
+// The camera dimensions of one pixel sample: where it falls in the pixel and on the lens, and when
+// in the shutter interval.
 struct PixelSample {
-    float filmX, filmY, lensU, lensV;  // [0, 1)
+    float filmX, filmY, lensU, lensV, time;  // [0, 1)
 };
 
 // A pixel's camera samples, each dimension Owen-scrambled with its own seed drawn from the pixel's
@@ -49,14 +50,17 @@ struct PixelSample {
 // with a + b = k. The lens takes the generalised Faure dimensions of base 4 that complete them to
 // a 4D sequence stratified pair by pair: every pair of dimensions (film x/y, lens u/v, film against
 // lens) fills each cell of a 4 x 4 grid with 16 samples, of a 16 x 16 grid with 256. The lens
-// samples are thus spread over the pupil independently of where the film samples fall.
+// samples are thus spread over the pupil independently of where the film samples fall. The time
+// takes Sobol's third dimension (primitive polynomial x^2 + x + 1), a matrix none of the others
+// shares: any 2^k samples fall one in each 1/2^k of the shutter interval, and its own scramble seed
+// leaves it uncorrelated with film and lens (tests/renderer/test_sampler.cpp).
 class PixelSampler {
 public:
     explicit PixelSampler(std::uint64_t pixelSeed);
     PixelSample operator()(std::uint32_t index) const;
 
 private:
-    std::uint32_t seeds_[4];
+    std::uint32_t seeds_[5];
 };
 
 inline Vec3f cosineHemisphere(float u1, float u2) {

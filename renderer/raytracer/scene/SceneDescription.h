@@ -12,14 +12,14 @@
 #include "materials/Material.h"
 #include "core/ParamSet.h"
 #include "shapes/Shape.h"
-#include "core/Transform.h"
+#include "core/AnimatedTransform.h"
 
 namespace lenslab {
 
 struct CameraSpec {
     std::string type = "perspective";  // perspective | realistic
     ParamSet params;
-    Transform cameraToWorld;
+    AnimatedTransform cameraToWorld;  // pbrt's CameraToWorld at the two transform times
 };
 
 struct FilmSpec {
@@ -69,9 +69,10 @@ struct ObjectDefinition {
     std::vector<ShapeEntry> shapes;
 };
 
+// An ObjectInstance, or a moving world shape (placed, as in pbrt, by an instance of a one-shape object).
 struct ObjectInstance {
-    std::size_t object = 0;      // index into SceneDescription::objects
-    Transform instanceToWorld;   // the current transform at ObjectInstance
+    std::size_t object = 0;              // index into SceneDescription::objects
+    AnimatedTransform instanceToWorld;   // the current transforms at ObjectInstance
 };
 
 struct SceneDescription {
@@ -79,6 +80,7 @@ struct SceneDescription {
     std::string rootDir;   // its folder: relative file names in the scene resolve against it (as pbrt-v3's)
     bool confined = false; // files must lie inside rootDir (scenes reached through the HTTP service)
     CameraSpec camera;
+    TransformTimes transformTimes;  // when the current transforms of ActiveTransform StartTime and EndTime hold
     FilmSpec film;
     int pixelSamples = 16;
     FilterSpec filter;
