@@ -46,19 +46,8 @@ std::array<std::uint32_t, 32> makeFilmYDirections() {
     return v;
 }
 
-// Sobol's third dimension (primitive polynomial x^2 + x + 1, initial numbers m = 1, 3): each
-// direction number from the two before it, v_k = v_(k-1) ^ v_(k-2) ^ (v_(k-2) >> 2).
-std::array<std::uint32_t, 32> makeTimeDirections() {
-    std::array<std::uint32_t, 32> v{};
-    v[0] = 1u << 31;
-    v[1] = 3u << 30;
-    for (int k = 2; k < 32; ++k) v[k] = v[k - 1] ^ v[k - 2] ^ (v[k - 2] >> 2);
-    return v;
-}
-
 const Terms kLensTerms = makeLensTerms();
 const auto kFilmYDirections = makeFilmYDirections();
-const auto kTimeDirections = makeTimeDirections();
 
 // The lens's index digits are relabelled so that samples 0 and 1 (and 2 and 3) of each group of
 // four fall in opposite halves of both lens dimensions, as the film's do: 2 spp is stratified too.
@@ -92,16 +81,13 @@ float unitFloat(std::uint32_t bits) { return std::min(float(bits >> 8) * 0x1p-24
 }  // namespace
 
 PixelSampler::PixelSampler(std::uint64_t pixelSeed) {
-    for (int k = 0; k < 5; ++k) seeds_[k] = std::uint32_t(mix64(pixelSeed + k));
+    for (int k = 0; k < 6; ++k) seeds_[k] = std::uint32_t(mix64(pixelSeed + k));
 }
 
 PixelSample PixelSampler::operator()(std::uint32_t index) const {
-    std::uint32_t filmY = 0, lensU = 0, lensV = 0, time = 0;
+    std::uint32_t filmY = 0, lensU = 0, lensV = 0;
     for (int k = 0; k < 32 && (index >> k) != 0; ++k)
-        if ((index >> k) & 1u) {
-            filmY ^= kFilmYDirections[k];
-            time ^= kTimeDirections[k];
-        }
+        if ((index >> k) & 1u) filmY ^= kFilmYDirections[k];
     for (int c = 0; c < kDigits && (index >> (2 * c)) != 0; ++c) {
         const std::uint8_t d = kRelabel[(index >> (2 * c)) & 3u];
         lensU ^= kLensTerms[0][c][d];
@@ -109,7 +95,7 @@ PixelSample PixelSampler::operator()(std::uint32_t index) const {
     }
     return {unitFloat(owenScramble(reverseBits(index), seeds_[0])), unitFloat(owenScramble(filmY, seeds_[1])),
             unitFloat(owenScramble(lensU, seeds_[2])), unitFloat(owenScramble(lensV, seeds_[3])),
-            unitFloat(owenScramble(time, seeds_[4]))};
+            unitFloat(owenScramble(reverseBits(owenScramble(index, seeds_[5])), seeds_[4]))};
 }
 
 }  // namespace lenslab
