@@ -43,7 +43,8 @@ double expectedPixel(int px, int py, double open, double close) {
         const double t = open + (close - open) * (k + 0.5) / kTimes, c = -1 + 2 * std::clamp(t, 0.0, 1.0);
         for (int i = 0; i < kSub; ++i)
             for (int j = 0; j < kSub; ++j) {
-                const double x = -4 + (px + (i + 0.5) / kSub) / kPixelsPerUnit, y = 0.5 - (py + (j + 0.5) / kSub) / kPixelsPerUnit;
+                const double x = -4 + (px + (i + 0.5) / kSub) / kPixelsPerUnit;
+                const double y = 0.5 - (py + (j + 0.5) / kSub) / kPixelsPerUnit;
                 const double rho2 = ((x - c) * (x - c) + y * y) / (kRadius * kRadius);
                 if (rho2 < 1) sum += std::sqrt(1 - rho2);
             }

@@ -30,9 +30,7 @@ struct TransformParts {
 
 class AnimatedTransform {
 public:
-    AnimatedTransform() = default;
-    // A still transform.
-    AnimatedTransform(const Transform& still) : start_(still), end_(still) {}  // NOLINT: a still one converts
+    AnimatedTransform() = default;  // the identity, still
     // Throws std::domain_error when the keyframes differ and one of them is not affine.
     AnimatedTransform(const Transform& start, const Transform& end);
 

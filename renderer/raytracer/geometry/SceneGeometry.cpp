@@ -30,7 +30,8 @@ RTCQuaternionDecomposition embreeParts(const TransformParts& p) {
     rtcInitQuaternionDecomposition(&q);
     rtcQuaternionDecompositionSetScale(&q, float(p.stretch[0][0]), float(p.stretch[1][1]), float(p.stretch[2][2]));
     rtcQuaternionDecompositionSetSkew(&q, float(p.stretch[0][1]), float(p.stretch[0][2]), float(p.stretch[1][2]));
-    rtcQuaternionDecompositionSetQuaternion(&q, float(p.rotation.r), float(p.rotation.i), float(p.rotation.j), float(p.rotation.k));
+    const Quaternion& r = p.rotation;
+    rtcQuaternionDecompositionSetQuaternion(&q, float(r.r), float(r.i), float(r.j), float(r.k));
     rtcQuaternionDecompositionSetTranslation(&q, float(p.translation[0]), float(p.translation[1]), float(p.translation[2]));
     return q;
 }

@@ -35,7 +35,8 @@ Vec3f bsdfSampleEstimate(const SceneGeometry& geometry, const Intersection& it, 
     if (!it.material->sample(it.hit, wo, uLobe, u1, u2, bs) || bs.specular || isBlack(bs.weight)) return {};
     Intersection next;
     ++raysTraced;
-    const bool hit = geometry.intersect(offsetRayOrigin(it.hit, bs.wi), bs.wi, std::numeric_limits<float>::infinity(), it.time, next);
+    const bool hit =
+        geometry.intersect(offsetRayOrigin(it.hit, bs.wi), bs.wi, std::numeric_limits<float>::infinity(), it.time, next);
     Vec3f Le;
     float lightPdf = 0;
     if (hit && next.light == &light) {

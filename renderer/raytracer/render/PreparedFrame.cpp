@@ -128,7 +128,8 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                         continue;
                     }
                     Pcg32 rng(hashCombine(seed, std::uint64_t(s)));
-                    const Vec3f L = integrator_->radiance(ray.origin, ray.direction, samples[first + s].time, rng, local.raysTraced);
+                    const Vec3f L =
+                        integrator_->radiance(ray.origin, ray.direction, samples[first + s].time, rng, local.raysTraced);
                     pixel.add(filterWeights[first + s], clampLuminance(ray.weight * L, scene_.film.maxSampleLuminance));
                 }
                 local.cameraRays += spp_;
