@@ -29,7 +29,7 @@ public:
     Vec3f once(Vec3f origin, Vec3f direction, std::uint64_t sample) const {
         Pcg32 rng(hashCombine(0x5eed, sample));
         std::uint64_t rays = 0;
-        return integrator_->radiance(origin, normalize(direction), rng, rays);
+        return integrator_->radiance(origin, normalize(direction), 0, rng, rays);
     }
     // The mean of n estimates, as luminance.
     double mean(Vec3f origin, Vec3f direction, int n) const {

@@ -28,7 +28,7 @@ inline std::unique_ptr<SceneGeometry> geometryOf(const TempDir& dir, const std::
 }
 
 inline bool trace(const SceneGeometry& g, Vec3f o, Vec3f d, Intersection& it) {
-    return g.intersect(o, normalize(d), std::numeric_limits<float>::infinity(), it);
+    return g.intersect(o, normalize(d), std::numeric_limits<float>::infinity(), 0, it);
 }
 
 // Pixels whose mean of R, G, B exceeds `threshold`, in rows [y0, y1).

@@ -22,7 +22,7 @@ double irradianceFromLightSamples(const SceneGeometry& g, Vec3f p, Vec3f n) {
             LightSample s;
             if (!light->sample(p, rng.uniform(), rng.uniform(), s)) continue;
             const float cosP = dot(s.wi, n);
-            if (cosP <= 0 || g.occluded(p, s.wi, s.distance * (1 - 1e-4f))) continue;
+            if (cosP <= 0 || g.occluded(p, s.wi, s.distance * (1 - 1e-4f), 0)) continue;
             e += s.radiance.x * cosP / s.pdf;
         }
     return e / kSamples;

@@ -1,8 +1,9 @@
 // The pixel sampler: every pair of camera dimensions used together (film x/y, lens u/v, film against
-// lens) is stratified, and no dimension repeats another.
+// lens) is stratified, the time is stratified on its own, and no dimension repeats another.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <set>
 #include <vector>
 
@@ -86,6 +87,62 @@ TEST(PixelSampler, SampleMeansConvergeToOneHalf) {
         }
     for (double m : mean) EXPECT_NEAR(m / (pixels * spp), 0.5, 0.005);
     EXPECT_NEAR(cross / (pixels * spp), 0.0, 0.002);
+}
+
+std::vector<float> times(std::uint64_t pixelSeed, int count) {
+    const PixelSampler sampler(pixelSeed);
+    std::vector<float> t;
+    for (int i = 0; i < count; ++i) t.push_back(sampler(std::uint32_t(i)).time);
+    return t;
+}
+
+TEST(PixelSampler, AnyPowerOfTwoSamplesFallOneInEachSliceOfTheShutterInterval) {
+    for (std::uint64_t seed : {0ull, 3ull, 0x5eedull})
+        for (int count : {2, 16, 256}) {
+            std::set<int> slices;
+            for (float t : times(seed, count)) slices.insert(int(t * count));
+            EXPECT_EQ(int(slices.size()), count) << "seed " << seed << ", " << count << " samples";
+        }
+}
+
+// The 4 x 4 cells that 16 samples of (time, dimension d) fill, on average over many pixels. A time
+// that shared the lens's matrix (scrambled apart, but nested alike) would fill only 4: each quarter
+// of the shutter would always meet the same quarter of the lens. So would any time stratified at
+// every power of two without its index shuffle: its quarter, like the lens's, is fixed by i mod 4.
+double cellsFilledWithTime(int d, bool timeCopiesLensU) {
+    const int pixels = 500;
+    double filled = 0;
+    for (int px = 0; px < pixels; ++px) {
+        const PixelSampler sampler(mix64(px));
+        std::set<std::pair<int, int>> cells;
+        for (std::uint32_t i = 0; i < 16; ++i) {
+            const PixelSample s = sampler(i);
+            const float other[4] = {s.filmX, s.filmY, s.lensU, s.lensV};
+            const float t = timeCopiesLensU ? PixelSampler(mix64(px) + 99)(i).lensU : s.time;
+            cells.insert({int(t * 4), int(other[d] * 4)});
+        }
+        filled += double(cells.size());
+    }
+    return filled / pixels;
+}
+
+TEST(PixelSampler, TimeIsIndependentOfFilmAndLens) {
+    // With the shuffle each aligned block of 4 samples meets every quarter of the other dimension once
+    // (a permutation), and the 4 blocks' permutations are drawn apart: a cell stays empty with
+    // probability (3/4)^4, so 16 samples fill 10.9 of 16 cells on average.
+    for (int d = 0; d < 4; ++d) EXPECT_NEAR(cellsFilledWithTime(d, false), 16 * (1 - std::pow(0.75, 4)), 0.3) << "dimension " << d;
+    EXPECT_LT(cellsFilledWithTime(2, true), 4.5);  // the check sees a time that repeats the lens's matrix
+    double mean = 0, cross = 0;
+    for (int px = 0; px < 2000; ++px) {
+        const PixelSampler sampler(mix64(px));
+        for (std::uint32_t i = 0; i < 16; ++i) {
+            const PixelSample s = sampler(i);
+            mean += s.time;
+            cross += (s.time - 0.5) * (s.lensU - 0.5);
+        }
+    }
+    EXPECT_NEAR(mean / 32000, 0.5, 0.005);
+    EXPECT_NEAR(cross / 32000, 0.0, 0.002);
 }
 
 }  // namespace

@@ -138,13 +138,13 @@ TEST(SceneParameters, SubstitutesAreAnnouncedAndPbrtV2VolumesRefused) {
     }
 }
 
-TEST(SceneParameters, MovingObjectsRenderAtShutterOpenWithAWarning) {
+TEST(SceneParameters, MovingAreaLightsStandAtTheStartTimeWithAWarning) {
     test::TempDir dir;
-    // The emitter moves 100 m aside by shutter close: drawn where it starts, in view.
+    // The emitter moves 100 m aside by the end time: drawn where it starts, in view (docs/motion-blur.md).
     const std::string p = dir.write("mv.pbrt", emitterScene("", "ActiveTransform EndTime\nTranslate 100 0 0\nActiveTransform All\n"
                                                                 "AreaLightSource \"diffuse\" \"rgb L\" [1 1 1]"));
     EXPECT_NEAR(centrePixel(p).y, 1, 1e-4);
-    EXPECT_TRUE(hasWarning(parseSceneFile(p), "motion blur is not rendered"));
+    EXPECT_TRUE(hasWarning(parseSceneFile(p), "an area light cannot move during the exposure"));
     // Moved at shutter open instead: out of view.
     const std::string q = dir.write("mv2.pbrt", emitterScene("", "ActiveTransform StartTime\nTranslate 100 0 0\nActiveTransform All\n"
                                                                  "AreaLightSource \"diffuse\" \"rgb L\" [1 1 1]"));

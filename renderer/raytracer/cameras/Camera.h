@@ -18,6 +18,7 @@ struct CameraRay {
 struct CameraSample {
     double rasterX = 0, rasterY = 0;
     float u1 = 0, u2 = 0;     // lens sample
+    float time = 0;           // the ray's moment, a TransformTimes::fraction (core/AnimatedTransform.h)
 };
 
 class Camera {

@@ -6,9 +6,11 @@
 #include "NumberText.h"
 #include "OpticsError.h"
 #include "cameras/EnvironmentCamera.h"
+#include "cameras/MovingCamera.h"
 #include "cameras/OrthographicCamera.h"
 #include "cameras/PerspectiveCamera.h"
 #include "cameras/RealisticCamera.h"
+#include "cameras/Shutter.h"
 
 namespace lenslab {
 
@@ -26,10 +28,9 @@ void refuseSynonyms(const ParamSet& p, std::initializer_list<const char*> names,
 
 // The shutter interval. The course's scenes open and close it at 0: unit exposure, with a warning.
 double exposureTime(const ParamSet& p, std::vector<std::string>& warnings) {
-    const double open = p.getFloat("shutteropen", 0), close = p.getFloat("shutterclose", 1);
-    if (close < open) p.fail("shutterclose (" + formatNumber(close) + ") comes before shutteropen (" + formatNumber(open) + ")");
-    if (close > open) return close - open;
-    warnings.push_back(describe(p.where()) + ": shutteropen = shutterclose = " + formatNumber(open) +
+    const Shutter s = readShutter(p);
+    if (s.close > s.open) return s.close - s.open;
+    warnings.push_back(describe(p.where()) + ": shutteropen = shutterclose = " + formatNumber(s.open) +
                        ": no exposure interval, rendering with unit exposure");
     return 1;
 }
@@ -71,8 +72,8 @@ ApertureShape apertureShape(const SceneDescription& scene, const ParamSet& p) {
     }
 }
 
-std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverrides& o, int width, int height,
-                                      double margin, const std::atomic<bool>* cancel) {
+std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverrides& o, const Transform& cameraToWorld,
+                                      int width, int height, double margin, const std::atomic<bool>* cancel) {
     const ParamSet& p = scene.camera.params;
     refuseSynonyms(p, {"specfile", "lensfile"}, "the lens table");
     refuseSynonyms(p, {"fstop", "aperture_diameter", "aperturediameter"}, "the aperture");
@@ -156,11 +157,11 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     r.aperture = apertureShape(scene, p);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
     return atCamera(p, [&]() -> std::unique_ptr<Camera> {
-        return std::make_unique<RealisticCamera>(r, scene.camera.cameraToWorld, width, height, margin, cancel);
+        return std::make_unique<RealisticCamera>(r, cameraToWorld, width, height, margin, cancel);
     });
 }
 
-std::unique_ptr<Camera> makeOrthographic(const SceneDescription& scene, int width, int height) {
+std::unique_ptr<Camera> makeOrthographic(const SceneDescription& scene, const Transform& cameraToWorld, int width, int height) {
     const ParamSet& p = scene.camera.params;
     OrthographicParams o;
     o.screen = ScreenWindow::forImage(width, height);
@@ -172,24 +173,23 @@ std::unique_ptr<Camera> makeOrthographic(const SceneDescription& scene, int widt
     o.lensRadius = p.getFloat("lensradius", 0);
     o.focalDistance = p.getFloat("focaldistance", 1e6);
     if (o.lensRadius < 0 || !(o.focalDistance > 0)) p.fail("lensradius must be >= 0 and focaldistance > 0");
-    return std::make_unique<OrthographicCamera>(o, scene.camera.cameraToWorld, width, height);
+    return std::make_unique<OrthographicCamera>(o, cameraToWorld, width, height);
 }
 
-}  // namespace
-
-std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverrides& o, int width, int height,
-                                   double filmMarginPixels, const std::atomic<bool>* cancel) {
+// The camera of the scene's type, placed in the world by cameraToWorld.
+std::unique_ptr<Camera> makePlacedCamera(SceneDescription& scene, const CameraOverrides& o, const Transform& cameraToWorld,
+                                         int width, int height, double filmMarginPixels, const std::atomic<bool>* cancel) {
     const ParamSet& p = scene.camera.params;
-    if (scene.camera.type == "realistic") return makeRealistic(scene, o, width, height, filmMarginPixels, cancel);
+    if (scene.camera.type == "realistic") return makeRealistic(scene, o, cameraToWorld, width, height, filmMarginPixels, cancel);
     if (o.lensFile || o.fstop || o.focusDistance || o.wavelength || o.filmDiagonal || o.mode)
         throw SceneError(scene.file + ": the lens overrides need a Camera \"realistic\"; this scene has a " +
                          scene.camera.type + " camera");
     if (scene.camera.type == "environment") {
         p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose", "frameaspectratio", "screenwindow"});
-        return std::make_unique<EnvironmentCamera>(scene.camera.cameraToWorld, width, height);
+        return std::make_unique<EnvironmentCamera>(cameraToWorld, width, height);
     }
     if (scene.camera.type == "orthographic") {
-        auto camera = makeOrthographic(scene, width, height);
+        auto camera = makeOrthographic(scene, cameraToWorld, width, height);
         p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose", "frameaspectratio"});
         return camera;
     }
@@ -203,7 +203,18 @@ std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverride
     pp.focalDistance = p.getFloat("focaldistance", 1e6);
     if (pp.lensRadius < 0 || !(pp.focalDistance > 0)) p.fail("lensradius must be >= 0 and focaldistance > 0 (metres)");
     p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose"});
-    return std::make_unique<PerspectiveCamera>(pp, scene.camera.cameraToWorld, width, height);
+    return std::make_unique<PerspectiveCamera>(pp, cameraToWorld, width, height);
+}
+
+}  // namespace
+
+std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverrides& o, int width, int height,
+                                   double filmMarginPixels, const std::atomic<bool>* cancel) {
+    const AnimatedTransform& cameraToWorld = scene.camera.cameraToWorld;
+    if (!cameraToWorld.moves())
+        return makePlacedCamera(scene, o, cameraToWorld.start(), width, height, filmMarginPixels, cancel);
+    return std::make_unique<MovingCamera>(makePlacedCamera(scene, o, Transform{}, width, height, filmMarginPixels, cancel),
+                                          cameraToWorld);
 }
 
 }  // namespace lenslab

@@ -11,7 +11,8 @@ namespace lenslab {
 // width/height: the full image in pixels; filmMarginPixels: the pixel filter's reach beyond it.
 // Throws SceneError naming the Camera directive for bad or out-of-range parameters. A lens file is
 // resolved like every file the scene names (resolveScenePath), never looked up elsewhere.
-// A set *cancel stops a realistic camera's setup with RenderCancelled.
+// A set *cancel stops a realistic camera's setup with RenderCancelled. A camera that moves during the
+// exposure is a MovingCamera around the one built in camera space.
 std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverrides& overrides, int width, int height,
                                    double filmMarginPixels, const std::atomic<bool>* cancel = nullptr);
 

@@ -24,14 +24,34 @@ RTCScene newScene(RTCDevice device) {
 
 static_assert(sizeof(EmbreeSphere) == 4 * sizeof(float), "Embree reads spheres as x, y, z, radius");
 
-// Embree's instance transform: the affine 3x4 part, column by column.
-unsigned attachInstance(RTCDevice device, RTCScene world, RTCScene object, const Transform& toWorld) {
+// A keyframe as Embree's quaternion decomposition (T R S, S upper triangular; no shift).
+RTCQuaternionDecomposition embreeParts(const TransformParts& p) {
+    RTCQuaternionDecomposition q;
+    rtcInitQuaternionDecomposition(&q);
+    rtcQuaternionDecompositionSetScale(&q, float(p.stretch[0][0]), float(p.stretch[1][1]), float(p.stretch[2][2]));
+    rtcQuaternionDecompositionSetSkew(&q, float(p.stretch[0][1]), float(p.stretch[0][2]), float(p.stretch[1][2]));
+    const Quaternion& r = p.rotation;
+    rtcQuaternionDecompositionSetQuaternion(&q, float(r.r), float(r.i), float(r.j), float(r.k));
+    rtcQuaternionDecompositionSetTranslation(&q, float(p.translation[0]), float(p.translation[1]), float(p.translation[2]));
+    return q;
+}
+
+// A still instance takes Embree's affine 3x4 matrix, column by column; a moving one its two keyframes
+// as time steps, which Embree blends as AnimatedTransform::at does.
+unsigned attachInstance(RTCDevice device, RTCScene world, RTCScene object, const AnimatedTransform& toWorld) {
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(g, object);
-    float m[12];
-    for (int col = 0; col < 4; ++col)
-        for (int row = 0; row < 3; ++row) m[3 * col + row] = float(toWorld.forward.m[row][col]);
-    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
+    if (toWorld.moves()) {
+        rtcSetGeometryTimeStepCount(g, 2);
+        const RTCQuaternionDecomposition start = embreeParts(toWorld.startParts()), end = embreeParts(toWorld.endParts());
+        rtcSetGeometryTransformQuaternion(g, 0, &start);
+        rtcSetGeometryTransformQuaternion(g, 1, &end);
+    } else {
+        float m[12];
+        for (int col = 0; col < 4; ++col)
+            for (int row = 0; row < 3; ++row) m[3 * col + row] = float(toWorld.start().forward.m[row][col]);
+        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
+    }
     rtcCommitGeometry(g);
     const unsigned id = rtcAttachGeometry(world, g);
     rtcReleaseGeometry(g);
@@ -117,7 +137,7 @@ const ShapeEntry& SceneGeometry::hitShape(const Group& group, unsigned geomID, u
     return e;
 }
 
-bool SceneGeometry::intersect(Vec3f o, Vec3f d, float tMax, Intersection& out) const {
+bool SceneGeometry::intersect(Vec3f o, Vec3f d, float tMax, float time, Intersection& out) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
@@ -125,7 +145,7 @@ bool SceneGeometry::intersect(Vec3f o, Vec3f d, float tMax, Intersection& out) c
     rh.ray.dir_x = d.x; rh.ray.dir_y = d.y; rh.ray.dir_z = d.z;
     rh.ray.tnear = 0;
     rh.ray.tfar = tMax;
-    rh.ray.time = 0;
+    rh.ray.time = time;
     rh.ray.mask = 0xFFFFFFFFu;
     rh.ray.id = 0;
     rh.ray.flags = 0;
@@ -135,6 +155,7 @@ bool SceneGeometry::intersect(Vec3f o, Vec3f d, float tMax, Intersection& out) c
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
 
     out.t = rh.ray.tfar;
+    out.time = time;
     out.light = nullptr;
     SurfaceHit& h = out.hit;
     unsigned prim = rh.hit.primID;
@@ -142,16 +163,16 @@ bool SceneGeometry::intersect(Vec3f o, Vec3f d, float tMax, Intersection& out) c
         // Shapes inside an object answer in the object's space; bring the hit back to the world
         // (normals by the inverse transpose, as pbrt-v3's TransformedPrimitive).
         const ObjectInstance& inst = *world_.instances[rh.hit.instID[0]];
-        const Transform toObject = inverse(inst.instanceToWorld);
+        const Transform toWorld = inst.instanceToWorld.at(time), toObject = inverse(toWorld);
         const ShapeEntry& e = hitShape(objectGroups_[inst.object], rh.hit.geomID, prim);
         e.shape->surface(transformPoint(toObject, o), transformVector(toObject, d), out.t, prim, rh.hit.u, rh.hit.v, h);
-        h.p = transformPoint(inst.instanceToWorld, h.p);
-        h.ng = normalize(transformNormal(inst.instanceToWorld, h.ng));
-        h.dndu = transformNormalPartial(inst.instanceToWorld, h.ns, h.dndu);
-        h.dndv = transformNormalPartial(inst.instanceToWorld, h.ns, h.dndv);
-        h.ns = normalize(transformNormal(inst.instanceToWorld, h.ns));
-        h.dpdu = transformVector(inst.instanceToWorld, h.dpdu);
-        h.dpdv = transformVector(inst.instanceToWorld, h.dpdv);
+        h.p = transformPoint(toWorld, h.p);
+        h.ng = normalize(transformNormal(toWorld, h.ng));
+        h.dndu = transformNormalPartial(toWorld, h.ns, h.dndu);
+        h.dndv = transformNormalPartial(toWorld, h.ns, h.dndv);
+        h.ns = normalize(transformNormal(toWorld, h.ns));
+        h.dpdu = transformVector(toWorld, h.dpdu);
+        h.dpdv = transformVector(toWorld, h.dpdv);
         out.material = e.material.get();
         out.media = &e.media;
         out.material->applyBump(h);
@@ -166,7 +187,7 @@ bool SceneGeometry::intersect(Vec3f o, Vec3f d, float tMax, Intersection& out) c
     return true;
 }
 
-bool SceneGeometry::occluded(Vec3f o, Vec3f d, float tMax) const {
+bool SceneGeometry::occluded(Vec3f o, Vec3f d, float tMax, float time) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay r;
@@ -174,7 +195,7 @@ bool SceneGeometry::occluded(Vec3f o, Vec3f d, float tMax) const {
     r.dir_x = d.x; r.dir_y = d.y; r.dir_z = d.z;
     r.tnear = 0;
     r.tfar = tMax;
-    r.time = 0;
+    r.time = time;
     r.mask = 0xFFFFFFFFu;
     r.id = 0;
     r.flags = 0;

@@ -2,7 +2,8 @@
 // The scene's geometry in Embree 3: the world's shapes in one scene, every instanced object in a
 // scene of its own that each ObjectInstance places with an Embree instance (one copy of the object
 // however many instances). Answers closest-hit and shadow queries and turns hits into world-space
-// shading records.
+// shading records. Moving instances (and moving shapes, which the parser makes instances) are
+// Embree motion-blurred instances: every query is at a moment, a TransformTimes::fraction in [0, 1].
 #include <embree3/rtcore.h>
 
 #include <memory>
@@ -17,6 +18,7 @@ namespace lenslab {
 struct Intersection {
     SurfaceHit hit;  // in world space, the material's bump map applied
     float t = 0;
+    float time = 0;  // the query's moment: rays leaving the hit (shadow rays, bounces) keep it
     const Material* material = nullptr;
     const Light* light = nullptr;  // the area light when the surface emits
     const MediumInterface* media = nullptr;  // the media on the surface's two sides
@@ -31,8 +33,8 @@ public:
     SceneGeometry(const SceneGeometry&) = delete;
     SceneGeometry& operator=(const SceneGeometry&) = delete;
 
-    bool intersect(Vec3f origin, Vec3f direction, float tMax, Intersection& out) const;
-    bool occluded(Vec3f origin, Vec3f direction, float tMax) const;
+    bool intersect(Vec3f origin, Vec3f direction, float tMax, float time, Intersection& out) const;
+    bool occluded(Vec3f origin, Vec3f direction, float tMax, float time) const;
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
 
 private:

@@ -20,7 +20,7 @@ Vec3f lightSampleEstimate(const SceneGeometry& geometry, const Intersection& it,
     const Vec3f o = offsetRayOrigin(it.hit, ls.wi);
     const float tMax = std::isinf(ls.distance) ? std::numeric_limits<float>::infinity() : ls.distance * (1.0f - 1e-3f);
     ++raysTraced;
-    if (geometry.occluded(o, ls.wi, tMax)) return {};
+    if (geometry.occluded(o, ls.wi, tMax, it.time)) return {};
     const float pdf = ls.pdf * choicePdf;
     const float w = ls.delta || weighting == LightSampleWeight::Alone
                         ? 1.0f
@@ -35,7 +35,8 @@ Vec3f bsdfSampleEstimate(const SceneGeometry& geometry, const Intersection& it, 
     if (!it.material->sample(it.hit, wo, uLobe, u1, u2, bs) || bs.specular || isBlack(bs.weight)) return {};
     Intersection next;
     ++raysTraced;
-    const bool hit = geometry.intersect(offsetRayOrigin(it.hit, bs.wi), bs.wi, std::numeric_limits<float>::infinity(), next);
+    const bool hit =
+        geometry.intersect(offsetRayOrigin(it.hit, bs.wi), bs.wi, std::numeric_limits<float>::infinity(), it.time, next);
     Vec3f Le;
     float lightPdf = 0;
     if (hit && next.light == &light) {

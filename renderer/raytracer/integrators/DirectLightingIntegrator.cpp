@@ -18,13 +18,14 @@ Vec3f DirectLightingIntegrator::directLight(const Intersection& it, Vec3f wo, Pc
     return L;
 }
 
-Vec3f DirectLightingIntegrator::radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const {
+Vec3f DirectLightingIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg32& rng,
+                                         std::uint64_t& raysTraced) const {
     Vec3f L{}, beta{1, 1, 1};
     Vec3f o = origin, d = direction;
     for (int depth = 0;; ++depth) {
         Intersection it;
         ++raysTraced;
-        if (!geometry_.intersect(o, d, std::numeric_limits<float>::infinity(), it)) {
+        if (!geometry_.intersect(o, d, std::numeric_limits<float>::infinity(), time, it)) {
             L += beta * environmentRadiance(geometry_, d);
             break;
         }

@@ -16,7 +16,7 @@ class DirectLightingIntegrator : public Integrator {
 public:
     DirectLightingIntegrator(const SceneGeometry& geometry, int maxDepth, LightSampleWeight weighting)
         : geometry_(geometry), maxDepth_(maxDepth), weighting_(weighting) {}
-    Vec3f radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const override;
+    Vec3f radiance(Vec3f origin, Vec3f direction, float time, Pcg32& rng, std::uint64_t& raysTraced) const override;
 
 private:
     Vec3f directLight(const Intersection& it, Vec3f wo, Pcg32& rng, std::uint64_t& raysTraced) const;

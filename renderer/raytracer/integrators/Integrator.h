@@ -13,8 +13,9 @@ namespace lenslab {
 class Integrator {
 public:
     virtual ~Integrator() = default;
-    // Radiance arriving along the ray (world space). raysTraced counts closest-hit and shadow rays.
-    virtual Vec3f radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const = 0;
+    // Radiance arriving along the ray (world space) at its moment `time` (SceneGeometry's), which
+    // every ray of the path shares. raysTraced counts closest-hit and shadow rays.
+    virtual Vec3f radiance(Vec3f origin, Vec3f direction, float time, Pcg32& rng, std::uint64_t& raysTraced) const = 0;
 };
 
 // The geometry (with its lights' scene bounds set) and the camera's medium (null: vacuum; only

@@ -11,7 +11,7 @@ float PathIntegrator::lightPdf(const Light& light, Vec3f from, Vec3f w, const Su
     return light.pdf(from, w, at) * lightSampler_.probability(light);
 }
 
-Vec3f PathIntegrator::radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const {
+Vec3f PathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg32& rng, std::uint64_t& raysTraced) const {
     Vec3f L{}, beta{1, 1, 1};
     Vec3f o = origin, d = direction;
     bool lastSpecular = true;  // the camera ray counts as specular: emission seen directly is unweighted
@@ -20,7 +20,7 @@ Vec3f PathIntegrator::radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::u
     for (int depth = 0;; ++depth) {
         Intersection it;
         ++raysTraced;
-        const bool hit = geometry_.intersect(o, d, std::numeric_limits<float>::infinity(), it);
+        const bool hit = geometry_.intersect(o, d, std::numeric_limits<float>::infinity(), time, it);
         if (!hit) {
             for (const auto& light : geometry_.lights()) {
                 if (!light->isInfinite()) continue;

@@ -11,7 +11,7 @@ class PathIntegrator : public Integrator {
 public:
     PathIntegrator(const SceneGeometry& geometry, int maxDepth)
         : geometry_(geometry), lightSampler_(geometry.lights()), maxDepth_(maxDepth) {}
-    Vec3f radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const override;
+    Vec3f radiance(Vec3f origin, Vec3f direction, float time, Pcg32& rng, std::uint64_t& raysTraced) const override;
 
 private:
     // The solid-angle pdf with which next-event estimation from `from` picks direction w toward

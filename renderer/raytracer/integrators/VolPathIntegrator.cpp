@@ -21,6 +21,7 @@ struct VolPathIntegrator::Vertex {
     Vec3f p, wo;                          // wo: back along the path
     const Intersection* surface;          // null: a point in `medium`
     const ParticipatingMedium* medium;                 // the medium the path travels in
+    float time;                           // the camera ray's moment, kept by every ray of the path
 
     Vec3f f(Vec3f wi) const {
         if (surface) return surface->material->evaluate(surface->hit, wo, wi);
@@ -40,13 +41,13 @@ float VolPathIntegrator::lightPdf(const Light& light, Vec3f from, Vec3f w, const
     return light.pdf(from, w, at) * lightSampler_.probability(light);
 }
 
-Vec3f VolPathIntegrator::transmittance(Vec3f o, Vec3f w, float distance, const ParticipatingMedium* medium, Pcg32& rng,
-                                       std::uint64_t& raysTraced) const {
+Vec3f VolPathIntegrator::transmittance(Vec3f o, Vec3f w, float distance, float time, const ParticipatingMedium* medium,
+                                       Pcg32& rng, std::uint64_t& raysTraced) const {
     Vec3f tr{1, 1, 1};
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         Intersection it;
         ++raysTraced;
-        const bool hit = geometry_.intersect(o, w, distance, it);
+        const bool hit = geometry_.intersect(o, w, distance, time, it);
         if (hit && !it.material->isPassthrough()) return {};
         if (medium) tr *= medium->transmittance(o, w, hit ? it.t : distance, rng);
         if (!hit || isBlack(tr)) return tr;
@@ -66,14 +67,14 @@ Vec3f VolPathIntegrator::sampleLight(const Vertex& v, Pcg32& rng, std::uint64_t&
     const Vec3f f = v.f(ls.wi);
     if (isBlack(f)) return {};
     const float tMax = std::isinf(ls.distance) ? kInf : ls.distance * (1.0f - 1e-3f);
-    const Vec3f tr = transmittance(v.origin(ls.wi), ls.wi, tMax, v.mediumToward(ls.wi), rng, raysTraced);
+    const Vec3f tr = transmittance(v.origin(ls.wi), ls.wi, tMax, v.time, v.mediumToward(ls.wi), rng, raysTraced);
     if (isBlack(tr)) return {};
     const float pdf = ls.pdf * choicePdf;
     const float w = ls.delta ? 1.0f : powerHeuristic(pdf, v.pdf(ls.wi));
     return w * f * tr * ls.radiance / pdf;
 }
 
-Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const {
+Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg32& rng, std::uint64_t& raysTraced) const {
     Vec3f L{}, beta{1, 1, 1};
     Vec3f o = origin, d = direction;
     const ParticipatingMedium* medium = cameraMedium_;
@@ -96,7 +97,7 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std
     for (;;) {
         Intersection it;
         ++raysTraced;
-        const bool hit = geometry_.intersect(o, d, kInf, it);
+        const bool hit = geometry_.intersect(o, d, kInf, time, it);
         if (medium) {
             const MediumEvent e = medium->sample(o, d, hit ? it.t : kInf, hero, rng);
             ratio *= e.pdfRatio;
@@ -106,7 +107,7 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std
             if (isBlack(beta)) break;
             if (e.scattered) {
                 if (bounces++ >= maxDepth_) break;
-                const Vertex v{o + e.t * d, -d, nullptr, medium};
+                const Vertex v{o + e.t * d, -d, nullptr, medium, time};
                 L += beta * sampleLight(v, rng, raysTraced);
                 const float u1 = rng.uniform(), u2 = rng.uniform();
                 const Vec3f wi = medium->phase().sample(d, u1, u2);  // weight 1: sampled exactly
@@ -138,7 +139,7 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std
             continue;
         }
         if (bounces++ >= maxDepth_) break;
-        const Vertex v{it.hit.p, -d, &it, medium};
+        const Vertex v{it.hit.p, -d, &it, medium, time};
         if (!it.material->isSpecular()) L += beta * sampleLight(v, rng, raysTraced);
         BsdfSample bs;
         const float uLobe = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();

@@ -15,7 +15,7 @@ class VolPathIntegrator : public Integrator {
 public:
     VolPathIntegrator(const SceneGeometry& geometry, int maxDepth, const ParticipatingMedium* cameraMedium)
         : geometry_(geometry), lightSampler_(geometry.lights()), maxDepth_(maxDepth), cameraMedium_(cameraMedium) {}
-    Vec3f radiance(Vec3f origin, Vec3f direction, Pcg32& rng, std::uint64_t& raysTraced) const override;
+    Vec3f radiance(Vec3f origin, Vec3f direction, float time, Pcg32& rng, std::uint64_t& raysTraced) const override;
 
 private:
     struct Vertex;
@@ -25,7 +25,7 @@ private:
     Vec3f sampleLight(const Vertex& v, Pcg32& rng, std::uint64_t& raysTraced) const;
     // Transmittance from o along unit w over `distance`, starting in `medium` and crossing medium
     // boundaries; zero when a surface blocks the way.
-    Vec3f transmittance(Vec3f o, Vec3f w, float distance, const ParticipatingMedium* medium, Pcg32& rng,
+    Vec3f transmittance(Vec3f o, Vec3f w, float distance, float time, const ParticipatingMedium* medium, Pcg32& rng,
                         std::uint64_t& raysTraced) const;
 
     const SceneGeometry& geometry_;

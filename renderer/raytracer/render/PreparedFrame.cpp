@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "cameras/CameraFactory.h"
+#include "cameras/Shutter.h"
 #include "film/WhiteBalance.h"
 
 namespace lenslab {
@@ -63,7 +64,8 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
       settings_(checked(settings)),
       scene_(parseSceneFile(settings.scenePath, {settings.confined, settings.loadProgress})),
       arena_(threadCount(settings)),
-      filter_(scene_.filter) {
+      filter_(scene_.filter),
+      shutter_(readShutter(scene_.camera.params)) {
     width_ = settings.width.value_or(scene_.film.xresolution);
     height_ = settings.height.value_or(scene_.film.yresolution);
     const std::string from = settings.width || settings.height ? "the render settings" : describe(scene_.film.where);
@@ -118,7 +120,8 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                     const PixelSample u = sampler(std::uint32_t(s));
                     float dx, dy;
                     filterWeights[first + s] = filter_.sample(u.filmX, u.filmY, dx, dy);
-                    samples[first + s] = {px + 0.5 + dx, py + 0.5 + dy, u.lensU, u.lensV};
+                    samples[first + s] = {px + 0.5 + dx, py + 0.5 + dy, u.lensU, u.lensV,
+                                          shutter_.moment(u.time, scene_.transformTimes)};
                 }
             }
             camera_->generateRays(samples.data(), std::size_t(runEnd - runStart) * spp_, rays.data());
@@ -134,9 +137,10 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                         continue;
                     }
                     Pcg32 rng(hashCombine(seed, std::uint64_t(s)));
+                    const Vec3f L =
+                        integrator_->radiance(ray.origin, ray.direction, samples[first + s].time, rng, local.raysTraced);
                     pixel.add(filterWeights[first + s],
-                              clampComponents(clampLuminance(ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced),
-                                                             scene_.film.maxSampleLuminance),
+                              clampComponents(clampLuminance(ray.weight * L, scene_.film.maxSampleLuminance),
                                               scene_.film.maxComponentValue, scene_.film.scale));
                 }
                 local.cameraRays += spp_;

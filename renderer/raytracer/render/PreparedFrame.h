@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cameras/Camera.h"
+#include "cameras/Shutter.h"
 #include "integrators/Integrator.h"
 #include "film/PixelFilter.h"
 #include "Render.h"
@@ -71,6 +72,7 @@ private:
     std::vector<PixelRect> tiles_;
     tbb::task_arena arena_;
     PixelFilter filter_;
+    Shutter shutter_;
     std::unique_ptr<Camera> camera_;
     std::unique_ptr<SceneGeometry> geometry_;
     std::unique_ptr<Integrator> integrator_;

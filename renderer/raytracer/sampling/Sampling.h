@@ -38,9 +38,10 @@ private:
     std::uint64_t state_ = 0, inc_;
 };
 
-// The four camera dimensions of one pixel sample: where it falls in the pixel and on the lens.
+// The camera dimensions of one pixel sample: where it falls in the pixel and on the lens, and when
+// in the shutter interval.
 struct PixelSample {
-    float filmX, filmY, lensU, lensV;  // [0, 1)
+    float filmX, filmY, lensU, lensV, time;  // [0, 1)
 };
 
 // A pixel's camera samples, each dimension Owen-scrambled with its own seed drawn from the pixel's
@@ -49,14 +50,20 @@ struct PixelSample {
 // with a + b = k. The lens takes the generalised Faure dimensions of base 4 that complete them to
 // a 4D sequence stratified pair by pair: every pair of dimensions (film x/y, lens u/v, film against
 // lens) fills each cell of a 4 x 4 grid with 16 samples, of a 16 x 16 grid with 256. The lens
-// samples are thus spread over the pupil independently of where the film samples fall.
+// samples are thus spread over the pupil independently of where the film samples fall. The time is
+// a fifth dimension no base-2 or base-4 net can stratify against all four: a time stratified at
+// every power of two has its quarter fixed by the sample index mod 4, as the lens's is. So it is
+// padded, as pbrt-v4 pads: van der Corput over the index shuffled per pixel by a nested permutation
+// (each aligned block of 2^k indices onto another), then Owen-scrambled. Any aligned 2^k samples
+// still fall one in each 1/2^k of the shutter interval, and the pairing with film and lens is
+// random (tests/renderer/test_sampler.cpp).
 class PixelSampler {
 public:
     explicit PixelSampler(std::uint64_t pixelSeed);
     PixelSample operator()(std::uint32_t index) const;
 
 private:
-    std::uint32_t seeds_[4];
+    std::uint32_t seeds_[6];  // film x, film y, lens u, lens v, time, time's index shuffle
 };
 
 inline Vec3f cosineHemisphere(float u1, float u2) {

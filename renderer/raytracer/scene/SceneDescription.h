@@ -14,14 +14,14 @@
 #include "core/ParamSet.h"
 #include "core/SceneDialect.h"
 #include "shapes/Shape.h"
-#include "core/Transform.h"
+#include "core/AnimatedTransform.h"
 
 namespace lenslab {
 
 struct CameraSpec {
     std::string type = "perspective";  // perspective | realistic
     ParamSet params;
-    Transform cameraToWorld;
+    AnimatedTransform cameraToWorld;  // pbrt's CameraToWorld at the two transform times
     std::shared_ptr<const ParticipatingMedium> medium;  // where camera rays start; null: vacuum
 };
 
@@ -77,9 +77,10 @@ struct ObjectDefinition {
     std::vector<ShapeEntry> shapes;
 };
 
+// An ObjectInstance, or a moving world shape (placed, as in pbrt, by an instance of a one-shape object).
 struct ObjectInstance {
-    std::size_t object = 0;      // index into SceneDescription::objects
-    Transform instanceToWorld;   // the current transform at ObjectInstance
+    std::size_t object = 0;              // index into SceneDescription::objects
+    AnimatedTransform instanceToWorld;   // the current transforms at ObjectInstance
 };
 
 struct SceneDescription {
@@ -88,6 +89,7 @@ struct SceneDescription {
     bool confined = false; // files must lie inside rootDir (scenes reached through the HTTP service)
     SceneDialect dialect = SceneDialect::PbrtV3;  // scene/DialectDetection.h
     CameraSpec camera;
+    TransformTimes transformTimes;  // when the current transforms of ActiveTransform StartTime and EndTime hold
     FilmSpec film;
     int pixelSamples = 16;
     FilterSpec filter;

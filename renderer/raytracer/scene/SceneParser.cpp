@@ -46,8 +46,8 @@ struct TransformPair {
 };
 
 struct GraphicsState {
-    Transform ctm;      // at shutter open: what lenslab renders
-    Transform ctmEnd;   // at shutter close
+    Transform ctm;      // at the start time (TransformTimes)
+    Transform ctmEnd;   // at the end time
     std::shared_ptr<const Material> material;
     std::optional<AreaEmission> area;
     bool reverseOrientation = false;
@@ -250,15 +250,14 @@ private:
     void transformTimes(SourceLocation& where, int) {
         const double start = number(where), end = number(where);
         if (!(end >= start)) sceneFail(where, "the end time must not precede the start time");
+        scene_.transformTimes = {start, end};
     }
-    // Motion blur is not rendered: objects that move are drawn where they stand at shutter open.
-    void warnIfMoving(const SourceLocation& where) {
-        for (int r = 0; r < 4; ++r)
-            for (int c = 0; c < 4; ++c)
-                if (g_.ctm.forward.m[r][c] != g_.ctmEnd.forward.m[r][c]) {
-                    warn(where, "moves during the exposure: motion blur is not rendered, drawn at shutter open");
-                    return;
-                }
+    AnimatedTransform currentMotion() const { return {g_.ctm, g_.ctmEnd}; }
+    // What cannot move in lenslab (as in pbrt-v3: lights, textures; and, unlike pbrt-v4, area lights
+    // and shapes inside an object, which Embree would have to instance two levels deep) stands where
+    // the start transform puts it.
+    void warnIfMoving(const SourceLocation& where, const char* what) {
+        if (currentMotion().moves()) warn(where, std::string(what) + " cannot move during the exposure: drawn at the start time");
     }
 
     // --- blocks and files -------------------------------------------------------------------
@@ -322,12 +321,11 @@ private:
                 scene_.camera.params.fail("spherical camera mapping \"" + mapping + "\" is not supported (equirectangular)");
             scene_.camera.type = "environment";
         }
-        scene_.camera.cameraToWorld = inverse(g_.ctm);
+        scene_.camera.cameraToWorld = AnimatedTransform(inverse(g_.ctm), inverse(g_.ctmEnd));
         // pbrt's camera sits in the outside medium current here; media may be named later.
         cameraMedium_ = g_.outsideMedium;
         cameraMediumWhere_ = where;
         namedCoordinates_["camera"] = {inverse(g_.ctm), inverse(g_.ctmEnd)};
-        warnIfMoving(where);
     }
     void accelerator(SourceLocation& where, int) {
         typeName(where, "an accelerator type");
@@ -533,7 +531,7 @@ private:
     void lightSource(SourceLocation& where, int) {
         const std::string type = typeName(where, "a light type");
         scene_.lights.push_back(makeLight(type, paramsOf("light", where), g_.ctm, scene_.dialect, resolver(), scene_.warnings));
-        warnIfMoving(where);
+        warnIfMoving(where, "a light");
     }
     // pbrt-v3 accepts "area" as another name for "diffuse".
     void areaLightSource(SourceLocation& where, int) {
@@ -558,10 +556,7 @@ private:
         if (p.has("power")) warn(p.where(), "\"power\" of an area light is not applied");
         return AreaEmission{L, p.getBool("twosided", false)};
     }
-    void shapeDirective(SourceLocation& where, int) {
-        shape(where);
-        warnIfMoving(where);
-    }
+    void shapeDirective(SourceLocation& where, int) { shape(where); }
 
     void texture(SourceLocation& where) {
         const std::string n = quoted(where, "a texture name");
@@ -577,7 +572,7 @@ private:
         auto& slot = (kind == "float" ? g_.textures->floats : g_.textures->spectra)[n];
         if (slot) warn(where, "redefines texture \"" + n + "\"");
         slot = std::move(texture);
-        warnIfMoving(where);
+        warnIfMoving(where, "a texture's space");
     }
 
 
@@ -589,12 +584,28 @@ private:
             warn(where, "area lights inside ObjectBegin are not supported (as in pbrt-v3); this shape does not emit");
             emission.reset();
         }
-        std::vector<ShapeEntry>& group = object_ ? scene_.objects[*object_].shapes : scene_.shapes;
+        if (object_ || emission) warnIfMoving(where, object_ ? "a shape inside ObjectBegin" : "an area light");
+        const AnimatedTransform motion = currentMotion();
         const MediumInterface media{namedMedium(where, g_.insideMedium), namedMedium(where, g_.outsideMedium)};
+        if (motion.moves() && !object_ && !emission) return movingShape(type, p, motion, media);
+        std::vector<ShapeEntry>& group = object_ ? scene_.objects[*object_].shapes : scene_.shapes;
         for (auto& s : makeShapes(type, p, g_.ctm, g_.reverseOrientation, *g_.textures, resolver(), scene_.warnings)) {
             if (emission && s->primitiveCount() == 0) warn(where, "this shape cannot emit (as in pbrt-v3): no area light");
             group.push_back({std::move(s), g_.material, emission, media});
         }
+    }
+
+    // A moving shape is made in its own space and placed by an instance that moves (pbrt-v3's
+    // TransformedPrimitive), so Embree interpolates one transform, not every vertex. Its orientation
+    // is flipped here for a mirroring transform, as the still shape would flip it.
+    void movingShape(const std::string& type, const ParamSet& p, const AnimatedTransform& motion,
+                     const MediumInterface& media) {
+        const bool flip = g_.reverseOrientation != swapsHandedness(g_.ctm);
+        ObjectDefinition own{"", {}};
+        for (auto& s : makeShapes(type, p, Transform{}, flip, *g_.textures, resolver(), scene_.warnings))
+            own.shapes.push_back({std::move(s), g_.material, std::nullopt, media});
+        scene_.instances.push_back({scene_.objects.size(), motion});
+        scene_.objects.push_back(std::move(own));
     }
 
     // pbrt-v3: ObjectBegin opens an attribute block that ObjectEnd closes; shapes inside keep the
@@ -625,8 +636,7 @@ private:
         if (object_) sceneFail(where, "inside the definition of object \"" + scene_.objects[*object_].name + "\"");
         const auto it = objectIndex_.find(n);
         if (it == objectIndex_.end()) sceneFail(where, "unknown object \"" + n + "\" (no ObjectBegin defines it before here)");
-        scene_.instances.push_back({it->second, g_.ctm});
-        warnIfMoving(where);
+        scene_.instances.push_back({it->second, currentMotion()});
     }
 
     SceneDescription& scene_;
