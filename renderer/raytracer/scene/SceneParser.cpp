@@ -339,7 +339,7 @@ private:
         if (!p.has("type")) p.fail("MakeNamedMedium needs \"string type\"");
         if (namedMedia_.count(name)) warn(where, "redefines medium \"" + name + "\" for what follows");
         namedMedia_[name] = makeMedium(p.getString("type", ""), p, g_.ctm, scene_.warnings);
-        warnIfMoving(where);
+        warnIfMoving(where, "a medium");
     }
     // pbrt-v3 gives one name for both sides too.
     void mediumInterface(SourceLocation& where, int) {
