@@ -59,7 +59,10 @@ int runReportCommand(const std::vector<std::string>& args) {
     o.lenses = commaList(p.get("--lenses"));
     o.extraLenses = commaList(p.get("--extra-lenses"));
     o.fstop = p.number("--fstop");
-    if (p.has("--focus")) o.focusDistance = parseDistance(p.get("--focus"), "--focus");
+    if (p.has("--focus")) {
+        o.focusDistance = parseDistance(p.get("--focus"), "--focus");
+        o.focusGiven = true;
+    }
     o.renderFstop = p.number("--render-fstop").value_or(o.renderFstop);
     o.spp = static_cast<int>(p.integer("--spp").value_or(o.spp));
     o.width = static_cast<int>(p.integer("--width").value_or(o.width));

@@ -76,8 +76,10 @@ std::string fstopText(std::optional<double> fstop) {
 
 // The settings shown in the page's header.
 std::vector<std::string> parameterLines(const ReportOptions& o, const RenderPlan& plan) {
-    char focus[64] = "infinity";
-    if (!std::isinf(o.focusDistance)) std::snprintf(focus, sizeof focus, "%g mm from the front vertex", o.focusDistance);
+    char focus[128] = "infinity";
+    if (!std::isinf(o.focusDistance))
+        std::snprintf(focus, sizeof focus, "%g mm from the front vertex%s", o.focusDistance,
+                      o.focusGiven ? "" : " (20 focal lengths for a lens that cannot focus so close)");
     return {
         std::string("Lens tables and diagrams: ") + fstopText(o.fstop) + ", focused at " + focus,
         "Renders: " + std::to_string(plan.width) + " pixels wide, " + std::to_string(plan.spp) + " samples per pixel, " +

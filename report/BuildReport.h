@@ -23,6 +23,7 @@ struct ReportOptions {
     std::vector<std::string> renderLenses = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
     std::optional<double> fstop;      // tables and diagrams; nullopt: each lens at its widest
     double focusDistance = 2000;      // mm from the front vertex, tables and diagrams (infinity allowed)
+    bool focusGiven = false;          // --focus given: every lens at it (else 20 focal lengths where 2 m is too close)
     double renderFstop = 5.6;         // renders; a lens slower than this renders at its widest
     int spp = 128;                    // renders' samples per pixel
     int width = 360;                  // renders' width in pixels; height from the scene's aspect

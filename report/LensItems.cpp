@@ -1,5 +1,8 @@
 #include "LensItems.h"
 
+#include <exception>
+
+#include "Focus.h"
 #include "LensDiagram.h"
 #include "SiteFiles.h"
 
@@ -8,10 +11,23 @@ namespace lenslab {
 namespace {
 
 // The report's one setting for every lens's tables and diagrams (the report command's flags).
-LensSettings tableSettings(const ReportOptions& o) {
+// Without --focus a lens that cannot focus as close as the default (a 500 mm reflex lens at 2 m)
+// focuses at kLongLensFocus focal lengths instead.
+constexpr double kLongLensFocus = 20;
+
+LensSettings tableSettings(const ReportOptions& o, const std::string& path) {
     LensSettings s;
     if (o.fstop) s.fstop = Setting{*o.fstop, "report --fstop"};
-    s.focusDistance = Setting{o.focusDistance, "report --focus"};
+    double focus = o.focusDistance;
+    if (!o.focusGiven) {
+        try {
+            const FirstOrder fo = computeFirstOrder(loadLensSystem(path));
+            if (closestFocusDistance(fo) > focus) focus = kLongLensFocus * fo.efl;
+        } catch (const std::exception&) {
+            // measureLens reports what is wrong with the lens
+        }
+    }
+    s.focusDistance = Setting{focus, o.focusGiven ? "report --focus" : "report's default focus"};
     return s;
 }
 
@@ -19,7 +35,8 @@ LensSettings tableSettings(const ReportOptions& o) {
 
 LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::string& path, const ReportOptions& o) {
     LensEntry entry;
-    const LensFactsRequest request{tableSettings(o), o.quick};
+    const LensSettings settings = tableSettings(o, path);
+    const LensFactsRequest request{settings, o.quick};
     InputsHash lensInputs = itemInputs("lens");
     lensInputs.addFile(path).add(o.fstop.value_or(0)).add(o.focusDistance).add(o.quick ? "quick" : "full");
     const std::string jsonFile = "assets/lenses/" + id + ".json";
@@ -50,7 +67,7 @@ LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::s
         }
         DiagramOptions d;
         d.mode = parseDiagramMode(mode);
-        d.lens = tableSettings(o);
+        d.lens = settings;
         d.width = o.quick ? 480 : 960;
         d.height = o.quick ? 240 : 480;
         const std::string image = "assets/lenses/" + id + "-" + mode + ".png";

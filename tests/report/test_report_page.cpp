@@ -59,6 +59,19 @@ std::vector<std::string> stems(const fs::path& dir, const std::string& extension
     return ids;
 }
 
+// The bundled lens file of an id: its table, else its Zemax file.
+fs::path lensFile(const fs::path& source, const std::string& id) {
+    const fs::path table = source / "lenses" / (id + ".dat");
+    return fs::exists(table) ? table : source / "lenses" / (id + ".zmx");
+}
+
+// The bundled lenses: tables and Zemax files.
+std::vector<std::string> bundledLenses(const fs::path& source) {
+    std::vector<std::string> ids = stems(source / "lenses", ".dat");
+    for (const std::string& id : stems(source / "lenses", ".zmx")) ids.push_back(id);
+    return ids;
+}
+
 // The numbers `report: ... N built, M reused; K renders` from the command's summary line.
 struct Counts {
     int built = -1, reused = -1, renders = -1;
@@ -105,7 +118,7 @@ TEST_F(ReportPage, BuildsQuicklyAndWellFormed) {
 TEST_F(ReportPage, EveryLensAndSceneAppears) {
     ASSERT_EQ(first_.status, 0) << first_.out;
     const fs::path source = LENSLAB_SOURCE_DIR;
-    for (const std::string& lens : stems(source / "lenses", ".dat")) {
+    for (const std::string& lens : bundledLenses(source)) {
         EXPECT_NE(html_.find("id=\"lens-" + lens + "\""), std::string::npos) << lens;
         for (const char* mode : {"exact", "thick", "overlay"})
             EXPECT_NE(html_.find("src=\"assets/lenses/" + lens + "-" + mode + ".png\""), std::string::npos) << lens << " " << mode;
@@ -122,7 +135,7 @@ TEST_F(ReportPage, EveryLensAndSceneAppears) {
     // One inline SVG plot per lens for each of thick error, illumination and distortion, plus the comparisons.
     std::size_t plots = 0;
     for (std::size_t at = html_.find("<svg"); at != std::string::npos; at = html_.find("<svg", at + 1)) ++plots;
-    EXPECT_EQ(plots, 3 * stems(source / "lenses", ".dat").size() + 3);
+    EXPECT_EQ(plots, 3 * bundledLenses(source).size() + 3);
 }
 
 TEST_F(ReportPage, EveryImageIsAValidPngOfItsStatedSizeAndEveryLinkIsLocal) {
@@ -171,13 +184,20 @@ TEST_F(ReportPage, TablesHoldTheNumbersOfLensJson) {
     ASSERT_EQ(first_.status, 0) << first_.out;
     const fs::path source = LENSLAB_SOURCE_DIR;
     const std::regex cell(R"re(<td data-key="([^"]+)">([^<]*)</td>)re");
-    for (const std::string& lens : stems(source / "lenses", ".dat")) {
+    for (const std::string& lens : bundledLenses(source)) {
         SCOPED_TRACE(lens);
-        const CommandRun cli = run(std::string(LENSLAB_BINARY) + " lens " + (source / "lenses" / (lens + ".dat")).string() +
-                            " --focus 2000 --json");
+        // At the report's focus: 2 m, or 20 focal lengths for a lens that cannot focus so close.
+        const nlohmann::json stored = nlohmann::json::parse(readFile(site_ / "assets/lenses" / (lens + ".json")));
+        const double focus = stored["focus"]["distance"].get<double>();
+        EXPECT_TRUE(focus == 2000 || std::fabs(focus - 20 * stored["efl"].get<double>()) < 1e-9) << focus;
+        std::ostringstream focusText;
+        focusText.precision(17);
+        focusText << focus;
+        const CommandRun cli =
+            run(std::string(LENSLAB_BINARY) + " lens " + lensFile(source, lens).string() + " --focus " + focusText.str() + " --json");
         ASSERT_EQ(cli.status, 0) << cli.out;
         const nlohmann::json expected = nlohmann::json::parse(cli.out);
-        EXPECT_EQ(nlohmann::json::parse(readFile(site_ / "assets/lenses" / (lens + ".json"))), expected);
+        EXPECT_EQ(stored, expected);
 
         const std::size_t begin = html_.find("<article class=\"lens\" id=\"lens-" + lens + "\">");
         ASSERT_NE(begin, std::string::npos);
