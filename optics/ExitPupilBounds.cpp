@@ -14,25 +14,31 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxVertices = 256;
 
-// Which aiming-plane points (x, y) pass the lens from the film point (r, 0, filmZ).
+// Which aiming-plane points (x, y) pass the lens, at any of its wavelengths, from the film point (r, 0, filmZ).
 class PassTest {
 public:
-    PassTest(const LensSystem& lens, double filmZ, double aimZ) : lens_(lens), filmZ_(filmZ), aimZ_(aimZ) {}
+    PassTest(const LensSystem& lens, const std::vector<double>& wavelengthsNm, double filmZ, double aimZ)
+        : filmZ_(filmZ), aimZ_(aimZ) {
+        if (wavelengthsNm.empty()) lenses_.push_back(lens);
+        for (double nm : wavelengthsNm) lenses_.push_back(atWavelength(lens, nm));
+    }
 
     std::vector<bool> operator()(double r, const std::vector<double>& xs, const std::vector<double>& ys) {
         batch_.resize(xs.size());
-        for (std::size_t i = 0; i < xs.size(); ++i) {
-            const Vec3 from{r, 0, filmZ_};
-            batch_.set(i, {from, normalize(Vec3{xs[i], ys[i], aimZ_} - from)});
+        std::vector<bool> pass(xs.size(), false);
+        for (const LensSystem& lens : lenses_) {
+            for (std::size_t i = 0; i < xs.size(); ++i) {
+                const Vec3 from{r, 0, filmZ_};
+                batch_.set(i, {from, normalize(Vec3{xs[i], ys[i], aimZ_} - from)});
+            }
+            traceBatch(lens, batch_, TraceDirection::FilmToScene);
+            for (std::size_t i = 0; i < xs.size(); ++i) pass[i] = pass[i] || batch_.blocked[i] == BlockReason::None;
         }
-        traceBatch(lens_, batch_, TraceDirection::FilmToScene);
-        std::vector<bool> pass(xs.size());
-        for (std::size_t i = 0; i < xs.size(); ++i) pass[i] = batch_.blocked[i] == BlockReason::None;
         return pass;
     }
 
 private:
-    const LensSystem& lens_;
+    std::vector<LensSystem> lenses_;
     double filmZ_, aimZ_;
     RayBatch batch_;
 };
@@ -198,7 +204,7 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
     const int n = options.vertices, count = lastRadius - firstRadius + 1;
     b.centreX.assign(count, 0.0);
     b.rho.assign(static_cast<std::size_t>(count) * n, 0.0);
-    PassTest passes(lens, filmZ, b.aimZ);
+    PassTest passes(lens, options.wavelengthsNm, filmZ, b.aimZ);
     const double rearRadius = lens.surfaces.back().apertureRadius;
     for (int i = 0; i < count; ++i) {
         if (options.progress && i > 0) options.progress(double(i) / count);

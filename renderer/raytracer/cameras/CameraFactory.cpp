@@ -134,6 +134,9 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
         s.filmDistance.reset();
     }
     s.wavelength = o.wavelength;
+    if (o.spectral.value_or(false) && o.wavelength)
+        throw SceneError(o.wavelength->source + " traces the lens at one wavelength; a spectral render traces them all");
+    r.spectral = o.spectral.value_or(!o.wavelength) && r.lens.isDispersive();
     const double sceneDiagonal = p.has("filmdiag") ? p.getFloat("filmdiag", 35) : p.getFloat("filmdiagonal", scene.film.diagonalMm);
     r.filmDiagonalMm = o.filmDiagonal.value_or(sceneDiagonal);
     const std::string mode = o.mode.value_or(p.getString("mode", "exact"));

@@ -80,6 +80,7 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
         geometry_ = std::make_unique<SceneGeometry>(scene_);
     });
     integrator_ = makeIntegrator(*geometry_, scene_.integrator);
+    spectral_ = settings.camera.spectral.value_or(camera_->spectral());
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
@@ -94,6 +95,7 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
     std::vector<CameraSample> samples(std::size_t(runPixels) * spp_);
     std::vector<CameraRay> rays(samples.size());
     std::vector<float> filterWeights(samples.size());
+    std::vector<WavelengthSample> wavelengths(spectral_ ? samples.size() : 0);
     for (int py = rect.y0; py < rect.y1; ++py) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             counters += local;
@@ -110,6 +112,10 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                     float dx, dy;
                     filterWeights[first + s] = filter_.sample(u.filmX, u.filmY, dx, dy);
                     samples[first + s] = {px + 0.5 + dx, py + 0.5 + dy, u.lensU, u.lensV};
+                    if (spectral_) {
+                        wavelengths[first + s] = sensor_.sample(u.wavelength);
+                        samples[first + s].wavelengthNm = wavelengths[first + s].nm;
+                    }
                 }
             }
             camera_->generateRays(samples.data(), std::size_t(runEnd - runStart) * spp_, rays.data());
@@ -125,8 +131,9 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                         continue;
                     }
                     Pcg32 rng(hashCombine(seed, std::uint64_t(s)));
+                    const Vec3f radiance = ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced);
                     pixel.add(filterWeights[first + s],
-                              clampLuminance(ray.weight * integrator_->radiance(ray.origin, ray.direction, rng, local.raysTraced),
+                              clampLuminance(spectral_ ? sensor_.toRgb(radiance, wavelengths[first + s]) : radiance,
                                              scene_.film.maxSampleLuminance));
                 }
                 local.cameraRays += spp_;
@@ -156,6 +163,9 @@ std::map<std::string, std::string> PreparedFrame::metadata() const {
     m["integrator"] = std::string(kIntegrators[int(scene_.integrator.type)]) + " maxdepth " +
                       std::to_string(scene_.integrator.maxDepth);
     m["units"] = "world metres, lens millimetres";
+    m["film"] = spectral_ ? "spectral: a wavelength per sample, RGB radiance to spectrum by Smits (1999), CIE 1931 "
+                            "matching functions (Wyman, Sloan & Shirley 2013 fit), linear Rec. 709"
+                          : "RGB, linear Rec. 709";
     if (!scene_.film.filename.empty()) m["filmFilename"] = scene_.film.filename;
     if (!scene_.warnings.empty()) m["warnings"] = joinLines(scene_.warnings);
     return m;

@@ -41,6 +41,9 @@ private:
 // The four camera dimensions of one pixel sample: where it falls in the pixel and on the lens.
 struct PixelSample {
     float filmX, filmY, lensU, lensV;  // [0, 1)
+    // A fifth dimension for the spectral film's wavelength: the scrambled van der Corput sequence,
+    // so any 2^k of a pixel's samples take one wavelength in each 2^-k of the distribution.
+    float wavelength;
 };
 
 // A pixel's camera samples, each dimension Owen-scrambled with its own seed drawn from the pixel's
@@ -56,7 +59,7 @@ public:
     PixelSample operator()(std::uint32_t index) const;
 
 private:
-    std::uint32_t seeds_[4];
+    std::uint32_t seeds_[5];
 };
 
 inline Vec3f cosineHemisphere(float u1, float u2) {
