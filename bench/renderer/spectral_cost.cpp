@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
     };
     std::printf("%d pixels wide, %d spp, 2 threads, best of %d interleaved rounds; CPU = user + system, setup included\n\n",
                 width, spp, rounds);
-    std::printf("| scene, lens | RGB CPU s | spectral CPU s | spectral / RGB | colour noise RGB | spectral | spectral at equal time | mean level |\n");
-    std::printf("|---|---|---|---|---|---|---|---|\n");
+    std::printf("| scene, lens | RGB CPU s | spectral CPU s | spectral / RGB | colour noise RGB | spectral | spectral at equal time | mean level | blocked RGB / spectral |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|\n");
     for (const Case& c : cases) {
         const auto settings = [&](bool spectral, std::uint64_t seed) {
             lenslab::RenderSettings s;
@@ -63,21 +63,23 @@ int main(int argc, char** argv) {
             s.seed = seed;
             return s;
         };
-        double best[2] = {1e300, 1e300};
+        double best[2] = {1e300, 1e300}, blocked[2] = {0, 0};
         lenslab::Image first[2];
         for (int r = 0; r < rounds; ++r)
             for (int spectral = 0; spectral < 2; ++spectral) {
                 const double cpu0 = lenslab::bench::processCpuSeconds();
                 lenslab::RenderOutput out = lenslab::renderScene(settings(spectral, 1));
                 best[spectral] = std::min(best[spectral], lenslab::bench::processCpuSeconds() - cpu0);
+                blocked[spectral] = double(out.stats.blockedCameraRays) / double(out.stats.cameraRays);
                 first[spectral] = std::move(out.image);
             }
         double noise[2];
         for (int spectral = 0; spectral < 2; ++spectral)
             noise[spectral] = colourNoise(first[spectral], lenslab::renderScene(settings(spectral, 2)).image);
         const double ratio = best[1] / best[0];
-        std::printf("| %s | %.3f | %.3f | %.3f | %.5f | %.5f | %.5f | %.4f |\n", c.name.c_str(), best[0], best[1], ratio,
-                    noise[0], noise[1], noise[1] * std::sqrt(ratio), meanLevel(first[0]));
+        std::printf("| %s | %.3f | %.3f | %.3f | %.5f | %.5f | %.5f | %.4f | %.2f%% / %.2f%% |\n", c.name.c_str(), best[0],
+                    best[1], ratio, noise[0], noise[1], noise[1] * std::sqrt(ratio), meanLevel(first[0]), 100 * blocked[0],
+                    100 * blocked[1]);
         std::fflush(stdout);
     }
     return 0;
