@@ -14,31 +14,25 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxVertices = 256;
 
-// Which aiming-plane points (x, y) pass the lens, at any of its wavelengths, from the film point (r, 0, filmZ).
+// Which aiming-plane points (x, y) pass the lens from the film point (r, 0, filmZ).
 class PassTest {
 public:
-    PassTest(const LensSystem& lens, const std::vector<double>& wavelengthsNm, double filmZ, double aimZ)
-        : filmZ_(filmZ), aimZ_(aimZ) {
-        if (wavelengthsNm.empty()) lenses_.push_back(lens);
-        for (double nm : wavelengthsNm) lenses_.push_back(atWavelength(lens, nm));
-    }
+    PassTest(LensSystem lens, double filmZ, double aimZ) : lens_(std::move(lens)), filmZ_(filmZ), aimZ_(aimZ) {}
 
     std::vector<bool> operator()(double r, const std::vector<double>& xs, const std::vector<double>& ys) {
         batch_.resize(xs.size());
-        std::vector<bool> pass(xs.size(), false);
-        for (const LensSystem& lens : lenses_) {
-            for (std::size_t i = 0; i < xs.size(); ++i) {
-                const Vec3 from{r, 0, filmZ_};
-                batch_.set(i, {from, normalize(Vec3{xs[i], ys[i], aimZ_} - from)});
-            }
-            traceBatch(lens, batch_, TraceDirection::FilmToScene);
-            for (std::size_t i = 0; i < xs.size(); ++i) pass[i] = pass[i] || batch_.blocked[i] == BlockReason::None;
+        for (std::size_t i = 0; i < xs.size(); ++i) {
+            const Vec3 from{r, 0, filmZ_};
+            batch_.set(i, {from, normalize(Vec3{xs[i], ys[i], aimZ_} - from)});
         }
+        traceBatch(lens_, batch_, TraceDirection::FilmToScene);
+        std::vector<bool> pass(xs.size());
+        for (std::size_t i = 0; i < xs.size(); ++i) pass[i] = batch_.blocked[i] == BlockReason::None;
         return pass;
     }
 
 private:
-    std::vector<LensSystem> lenses_;
+    LensSystem lens_;
     double filmZ_, aimZ_;
     RayBatch batch_;
 };
@@ -118,6 +112,38 @@ std::vector<double> boundaryDistances(PassTest& passes, double r, const GridScan
         }
     }
     return hi;  // the failing side of the bisection: never inside the passing region
+}
+
+// Widens the boundary distances `half` (measured for the lens's own wavelength, the failing side)
+// to where the lens at another wavelength still passes rays, direction by direction: a region
+// shifts only slightly with the wavelength, so a bisection between the own boundary and a quarter
+// beyond it finds the other's at a small fraction of a full measurement's rays.
+void widenForWavelength(PassTest& passes, double r, double centreX, int vertices, std::vector<double>& half) {
+    constexpr int kBisections = 10;
+    const int count = static_cast<int>(half.size());
+    std::vector<double> cosA(count), sinA(count), lo(half), hi(count);
+    for (int k = 0; k < count; ++k) {
+        cosA[k] = std::cos(2.0 * kPi * k / vertices);
+        sinA[k] = std::sin(2.0 * kPi * k / vertices);
+        hi[k] = 1.25 * half[k];
+    }
+    std::vector<double> xs(count), ys(count);
+    const auto test = [&](const std::vector<double>& rho) {
+        for (int k = 0; k < count; ++k) {
+            xs[k] = centreX + rho[k] * cosA[k];
+            ys[k] = rho[k] * sinA[k];
+        }
+        return passes(r, xs, ys);
+    };
+    const std::vector<bool> beyondOwn = test(lo);
+    for (int it = 0; it < kBisections; ++it) {
+        std::vector<double> mid(count);
+        for (int k = 0; k < count; ++k) mid[k] = 0.5 * (lo[k] + hi[k]);
+        const std::vector<bool> midPass = test(mid);
+        for (int k = 0; k < count; ++k) (midPass[k] ? lo[k] : hi[k]) = mid[k];
+    }
+    for (int k = 0; k < count; ++k)
+        if (beyondOwn[k] && half[k] > 0) half[k] = hi[k];
 }
 
 // The polygon seen from film radius r, interpolated between the measured radii (full circle).
@@ -204,7 +230,9 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
     const int n = options.vertices, count = lastRadius - firstRadius + 1;
     b.centreX.assign(count, 0.0);
     b.rho.assign(static_cast<std::size_t>(count) * n, 0.0);
-    PassTest passes(lens, options.wavelengthsNm, filmZ, b.aimZ);
+    PassTest passes(lens, filmZ, b.aimZ);
+    std::vector<PassTest> otherWavelengths;
+    for (double nm : options.wavelengthsNm) otherWavelengths.emplace_back(atWavelength(lens, nm), filmZ, b.aimZ);
     const double rearRadius = lens.surfaces.back().apertureRadius;
     for (int i = 0; i < count; ++i) {
         if (options.progress && i > 0) options.progress(double(i) / count);
@@ -218,7 +246,8 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
         }
         if (!g.any) g = scanGrid(passes, r, extent, 256);  // a sliver the coarse grid missed
         if (!g.any) continue;
-        const std::vector<double> half = boundaryDistances(passes, r, g, n);
+        std::vector<double> half = boundaryDistances(passes, r, g, n);
+        for (PassTest& other : otherWavelengths) widenForWavelength(other, r, g.centreX, n, half);
         b.centreX[i] = g.centreX;
         for (int k = 0; k < n; ++k) {
             const int m = k <= n / 2 ? k : n - k;  // mirror image about y = 0

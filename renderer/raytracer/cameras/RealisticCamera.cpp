@@ -92,7 +92,7 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         measure.cancel = cancel;
         measure.progress = progress;
         if (params.spectral) {
-            measure.wavelengthsNm = {kSpectralFirstNm, analysis_.lens.wavelength, kSpectralLastNm};
+            measure.wavelengthsNm = {kSpectralFirstNm, kSpectralLastNm};
             etas_ = tabulateEtas(analysis_.lens, TraceDirection::FilmToScene, kSpectralFirstNm, kSpectralLastNm);
             if (!params.aperture.isCircular())
                 for (int k = 0; k < etas_.bands; ++k) bandLenses_.push_back(atWavelength(analysis_.lens, etas_.bandCentreNm(k)));
