@@ -94,7 +94,7 @@ std::optional<RenderRecord> renderItem(ItemRunner& runner, const RenderJob& job,
     const std::string id = "render/" + job.scene.id + "/" + job.lens.facts.id + "/" + job.mode + film;
     const std::string image = "assets/renders/" + job.scene.id + "/" + job.lens.facts.id + "-" + job.mode + film + ".png";
     const ManifestItem* item =
-        runner.run(id, "render " + job.lens.facts.id + " in " + job.scene.id + " (" + job.mode + ")", job.hash(), [&] {
+        runner.run(id, "render " + job.lens.facts.id + " in " + job.scene.id + " (" + job.mode + film + ")", job.hash(), [&] {
             runner.countRender();
             const RenderOutput out = renderScene(job.settings(threads), {}, runner.cancel());
             writeSiteFile(runner.site(), image, encodePng(out.image, job.exposure()));
