@@ -97,7 +97,7 @@ TEST(SpectralCamera, GreyCardStaysNeutralThroughADispersiveLens) {
                          "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
                          "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point P\" [-5 -5 2  5 -5 2  5 5 2  -5 5 2]\n"
                          "WorldEnd\n");
-    const RenderOutput out = renderWith(scene, 48, 32, 16, true, 3);
+    const RenderOutput out = renderWith(scene, 96, 64, 32, true, 3);
     ASSERT_NE(out.metadata.at("lensWavelengths").find("each exact ray"), std::string::npos);
     const Vec3f m = channelMeans(out.image);
     const double mean = (m.x + m.y + m.z) / 3;
