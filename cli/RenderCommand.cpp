@@ -132,6 +132,11 @@ RenderSettings renderSettings(const ArgParser& p) {
     s.camera.wavelength = flags.wavelength;
     if (auto v = p.number("--filmdiag")) s.camera.filmDiagonal = *v;
     if (p.has("--mode")) s.camera.mode = p.get("--mode");
+    if (p.has("--spectral")) {
+        const std::string v = p.get("--spectral");
+        if (v != "on" && v != "off") throw UsageError("render: --spectral must be on or off, got '" + v + "'");
+        s.camera.spectral = v == "on";
+    }
     return s;
 }
 
@@ -168,7 +173,9 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.option("--height", "N", "image height (default: the scene's)");
     p.option("--seed", "N", "random seed (default 0)");
     p.option("--exposure", "E", "PNG exposure scale (default 1)");
-    p.option("--lens", "FILE", "realistic camera: lens table instead of the scene's specfile");
+    p.option("--lens", "FILE", "realistic camera: lens table or .zmx prescription instead of the scene's specfile");
+    p.option("--spectral", "on|off", "a wavelength per sample through the lens's dispersion, the film through the CIE "
+             "matching functions (default: on when the lens disperses and no --wavelength is given)");
     declareLensFlags(p);
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
     p.option("--layout", "L", "realistic camera: the --lens table's layout, gap-before | gap-after (default: detect)");

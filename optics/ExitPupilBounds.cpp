@@ -17,7 +17,7 @@ constexpr int kMaxVertices = 256;
 // Which aiming-plane points (x, y) pass the lens from the film point (r, 0, filmZ).
 class PassTest {
 public:
-    PassTest(const LensSystem& lens, double filmZ, double aimZ) : lens_(lens), filmZ_(filmZ), aimZ_(aimZ) {}
+    PassTest(LensSystem lens, double filmZ, double aimZ) : lens_(std::move(lens)), filmZ_(filmZ), aimZ_(aimZ) {}
 
     std::vector<bool> operator()(double r, const std::vector<double>& xs, const std::vector<double>& ys) {
         batch_.resize(xs.size());
@@ -32,7 +32,7 @@ public:
     }
 
 private:
-    const LensSystem& lens_;
+    LensSystem lens_;
     double filmZ_, aimZ_;
     RayBatch batch_;
 };
@@ -112,6 +112,38 @@ std::vector<double> boundaryDistances(PassTest& passes, double r, const GridScan
         }
     }
     return hi;  // the failing side of the bisection: never inside the passing region
+}
+
+// Widens the boundary distances `half` (measured for the lens's own wavelength, the failing side)
+// to where the lens at another wavelength still passes rays, direction by direction: a region
+// shifts only slightly with the wavelength, so a bisection between the own boundary and a quarter
+// beyond it finds the other's at a small fraction of a full measurement's rays.
+void widenForWavelength(PassTest& passes, double r, double centreX, int vertices, std::vector<double>& half) {
+    constexpr int kBisections = 10;
+    const int count = static_cast<int>(half.size());
+    std::vector<double> cosA(count), sinA(count), lo(half), hi(count);
+    for (int k = 0; k < count; ++k) {
+        cosA[k] = std::cos(2.0 * kPi * k / vertices);
+        sinA[k] = std::sin(2.0 * kPi * k / vertices);
+        hi[k] = 1.25 * half[k];
+    }
+    std::vector<double> xs(count), ys(count);
+    const auto test = [&](const std::vector<double>& rho) {
+        for (int k = 0; k < count; ++k) {
+            xs[k] = centreX + rho[k] * cosA[k];
+            ys[k] = rho[k] * sinA[k];
+        }
+        return passes(r, xs, ys);
+    };
+    const std::vector<bool> beyondOwn = test(lo);
+    for (int it = 0; it < kBisections; ++it) {
+        std::vector<double> mid(count);
+        for (int k = 0; k < count; ++k) mid[k] = 0.5 * (lo[k] + hi[k]);
+        const std::vector<bool> midPass = test(mid);
+        for (int k = 0; k < count; ++k) (midPass[k] ? lo[k] : hi[k]) = mid[k];
+    }
+    for (int k = 0; k < count; ++k)
+        if (beyondOwn[k] && half[k] > 0) half[k] = hi[k];
 }
 
 // The polygon seen from film radius r, interpolated between the measured radii (full circle).
@@ -199,6 +231,8 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
     b.centreX.assign(count, 0.0);
     b.rho.assign(static_cast<std::size_t>(count) * n, 0.0);
     PassTest passes(lens, filmZ, b.aimZ);
+    std::vector<PassTest> otherWavelengths;
+    for (double nm : options.wavelengthsNm) otherWavelengths.emplace_back(atWavelength(lens, nm), filmZ, b.aimZ);
     const double rearRadius = lens.surfaces.back().apertureRadius;
     for (int i = 0; i < count; ++i) {
         if (options.progress && i > 0) options.progress(double(i) / count);
@@ -212,7 +246,8 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
         }
         if (!g.any) g = scanGrid(passes, r, extent, 256);  // a sliver the coarse grid missed
         if (!g.any) continue;
-        const std::vector<double> half = boundaryDistances(passes, r, g, n);
+        std::vector<double> half = boundaryDistances(passes, r, g, n);
+        for (PassTest& other : otherWavelengths) widenForWavelength(other, r, g.centreX, n, half);
         b.centreX[i] = g.centreX;
         for (int k = 0; k < n; ++k) {
             const int m = k <= n / 2 ? k : n - k;  // mirror image about y = 0

@@ -25,6 +25,11 @@ struct ExitPupilBoundsOptions {
     int filmRadii = 64;      // film radii sampled from 0 to the maximum (whole-disc form)
     int vertices = 64;       // polygon vertices (even), at equal angles around the centre
     double margin = 0.01;    // relative widening of every polygon
+    // Widen each region, direction by direction, to also hold the regions at these wavelengths
+    // (nm). A spectral camera passes the ends of the visible range: a region shifts smoothly with
+    // the wavelength, so the widened regions (with the margin) hold the wavelengths between; the
+    // rays they still lose are measured in tests/optics/test_wavelength_etas.cpp.
+    std::vector<double> wavelengthsNm;
     // Checked before each film radius (a radius costs ~1/64 of the whole, milliseconds even for a
     // lens at the surface limit): once set, the measurement stops by throwing SetupCancelled.
     const std::atomic<bool>* cancel = nullptr;

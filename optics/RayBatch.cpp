@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "WavelengthEtas.h"
+
 namespace lenslab {
 
 void RayBatch::resize(std::size_t n) {
@@ -45,21 +47,35 @@ inline void keep(const BatchArrays& a, std::size_t r, double x, double y, double
     a.at[r] = stops ? index : a.at[r];
 }
 
+// The index ratio each ray refracts with: the surface's own, or the ray's wavelength band's.
+struct SurfaceEta {
+    double eta;
+    double operator()(std::size_t) const { return eta; }
+};
+struct BandEtas {
+    const double* etaOfBand;  // this surface's row of WavelengthEtas
+    const std::uint16_t* band;
+    double operator()(std::size_t r) const { return etaOfBand[band[r]]; }
+};
+
 // One quadric surface for every ray. Rays are independent (ivdep) and the step uses selects instead
 // of branches, so this loop vectorises.
-template <bool kConic>
-void stepQuadric(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s, std::int16_t index) {
+template <bool kConic, class EtaOf>
+void stepQuadric(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s, EtaOf etaOf,
+                 std::int16_t index) {
 #pragma GCC ivdep
     for (std::size_t r = 0; r < count; ++r) {
         double x = a.px[r], y = a.py[r], z = a.pz[r], u = a.vx[r], v = a.vy[r], w = a.vz[r];
-        const BlockReason b = stepThroughQuadric<double, kConic>(x, y, z, u, v, w, s);
+        const BlockReason b = stepThroughQuadric<double, kConic>(x, y, z, u, v, w, s, etaOf(r));
         keep(a, r, x, y, z, u, v, w, b, index);
     }
 }
 
 // One asphere for every ray: Newton's passes run over the whole batch (each vectorises), a ray's t
 // frozen once its own step converged, so every ray sees exactly the scalar trace's iterations.
-void stepAsphere(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s, std::int16_t index) {
+template <class EtaOf>
+void stepAsphere(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s, EtaOf etaOf,
+                 std::int16_t index) {
     thread_local std::vector<double> t;
     thread_local std::vector<std::uint8_t> done;
     t.resize(count);
@@ -89,14 +105,14 @@ void stepAsphere(std::size_t count, const BatchArrays& a, const SurfaceConstants
 #pragma GCC ivdep
     for (std::size_t r = 0; r < count; ++r) {
         double x = a.px[r], y = a.py[r], z = a.pz[r], u = a.vx[r], v = a.vy[r], w = a.vz[r];
-        const BlockReason b = finishAsphere(x, y, z, u, v, w, tt[r], z - s.zVertex, dn[r] == 2, s);
+        const BlockReason b = finishAsphere(x, y, z, u, v, w, tt[r], z - s.zVertex, dn[r] == 2, s, etaOf(r));
         keep(a, r, x, y, z, u, v, w, b, index);
     }
 }
 
-}  // namespace
-
-void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection direction) {
+// Both traces: etaOfSurface(i, constants) gives surface i's ratio per ray.
+template <class EtaOfSurface>
+void traceBatchWith(const LensSystem& lens, RayBatch& batch, TraceDirection direction, EtaOfSurface etaOfSurface) {
     const int n = static_cast<int>(lens.surfaces.size());
     const bool toFilm = direction == TraceDirection::SceneToFilm;
     std::fill(batch.blocked.begin(), batch.blocked.end(), BlockReason::None);
@@ -109,10 +125,23 @@ void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection directio
         const int i = toFilm ? k : n - 1 - k;
         const SurfaceConstants<double> s = surfaceConstants<double>(lens, i, direction);
         const auto index = static_cast<std::int16_t>(i);
-        if (s.asphericTerms > 0) stepAsphere(batch.size(), arrays, s, index);
-        else if (s.conicFactor != 1) stepQuadric<true>(batch.size(), arrays, s, index);
-        else stepQuadric<false>(batch.size(), arrays, s, index);
+        const auto etaOf = etaOfSurface(i, s);
+        if (s.asphericTerms > 0) stepAsphere(batch.size(), arrays, s, etaOf, index);
+        else if (s.conicFactor != 1) stepQuadric<true>(batch.size(), arrays, s, etaOf, index);
+        else stepQuadric<false>(batch.size(), arrays, s, etaOf, index);
     }
+}
+
+}  // namespace
+
+void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection direction) {
+    traceBatchWith(lens, batch, direction, [](int, const SurfaceConstants<double>& s) { return SurfaceEta{s.eta}; });
+}
+
+void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection direction, const WavelengthEtas& etas,
+                const std::uint16_t* bands) {
+    traceBatchWith(lens, batch, direction,
+                   [&](int i, const SurfaceConstants<double>&) { return BandEtas{etas.etasOf(i), bands}; });
 }
 
 }  // namespace lenslab

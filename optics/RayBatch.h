@@ -23,4 +23,11 @@ struct RayBatch {
 // had in front of the surface that stopped them.
 void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection direction);
 
+struct WavelengthEtas;
+// The same with each ray at its own wavelength: ray r refracts with the ratios of band bands[r] of
+// `etas` (tabulated for this lens and direction), bit for bit the trace of atWavelength(lens, that
+// band's centre).
+void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection direction, const WavelengthEtas& etas,
+                const std::uint16_t* bands);
+
 }  // namespace lenslab

@@ -112,10 +112,11 @@ inline T asphereStart(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConstants
 
 // After the intersection: the aperture and obscuration tests, then refraction (or reflection) about
 // the surface normal (nx, ny, nz), any length, pointing toward +z. Everything is selects rather than
-// branches so that the batch loop vectorises; a blocked ray keeps its state.
+// branches so that the batch loop vectorises; a blocked ray keeps its state. rayEta is the index
+// ratio at the ray's own wavelength: s.eta, or one of a spectral batch's (WavelengthEtas.h).
 template <class T>
 inline BlockReason bendAtHit(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz, bool missed, T nx, T ny, T nz,
-                             const SurfaceConstants<T>& s) {
+                             const SurfaceConstants<T>& s, T rayEta) {
     const T hx = px + t * dx, hy = py + t * dy, hqz = qz + t * dz;
     const T r2 = hx * hx + hy * hy;
     const bool outside = r2 > s.apertureRadius2;
@@ -126,7 +127,7 @@ inline BlockReason bendAtHit(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz
     const T nDotD = (nx * dx + ny * dy + nz * dz) * inv;
     const T sign = nDotD > T(0) ? T(-1) : T(1);
     const T cosi = -sign * nDotD;
-    const T eta = s.mirror ? T(1) : s.eta;
+    const T eta = s.mirror ? T(1) : rayEta;
     const T k = T(1) - eta * eta * (T(1) - cosi * cosi);
     const bool tir = !s.mirror & !(k >= T(0));
     const bool pass = !missed & !outside & !obscured & !tir;
@@ -148,24 +149,25 @@ inline BlockReason bendAtHit(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz
 
 // A quadric (sphere when kConic is false): intersection and bend in one step.
 template <class T, bool kConic = false>
-inline BlockReason stepThroughQuadric(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s) {
+inline BlockReason stepThroughQuadric(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s,
+                                      T rayEta) {
     const T qz = pz - s.zVertex;
     bool missed = false;
     const T t = intersectQuadric<T, kConic>(px, py, qz, dx, dy, dz, s, missed);
     const T c = s.curvature, K = kConic ? s.conicFactor : T(1);
     const T hx = px + t * dx, hy = py + t * dy, hqz = qz + t * dz;
-    return bendAtHit(px, py, pz, dx, dy, dz, t, qz, missed, c * hx, c * hy, T(1) + K * c * hqz, s);
+    return bendAtHit(px, py, pz, dx, dy, dz, t, qz, missed, c * hx, c * hy, T(1) + K * c * hqz, s, rayEta);
 }
 
 // The asphere's bend once Newton has its t (shared by the scalar and the batch trace).
 template <class T>
 inline BlockReason finishAsphere(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz, bool converged,
-                                 const SurfaceConstants<T>& s) {
+                                 const SurfaceConstants<T>& s, T rayEta) {
     const T hx = px + t * dx, hy = py + t * dy;
     T sag, g, u;
     asphereSag(hx * hx + hy * hy, s, sag, g, u);
     const bool missed = !converged | !(t >= T(-1e-9)) | !(u >= T(0)) | !(t < T(1e30));
-    return bendAtHit(px, py, pz, dx, dy, dz, t, qz, missed, g * hx, g * hy, T(1), s);
+    return bendAtHit(px, py, pz, dx, dy, dz, t, qz, missed, g * hx, g * hy, T(1), s, rayEta);
 }
 
 // An even asphere: Newton from the base quadric's hit, converged per ray; a ray that does not
@@ -180,15 +182,15 @@ inline BlockReason stepThroughAsphere(T& px, T& py, T& pz, T& dx, T& dy, T& dz, 
         t += step;
         converged = asphereStepConverged(step, t);
     }
-    return finishAsphere(px, py, pz, dx, dy, dz, t, qz, converged, s);
+    return finishAsphere(px, py, pz, dx, dy, dz, t, qz, converged, s, s.eta);
 }
 
 // Any surface, for one ray.
 template <class T>
 inline BlockReason stepThroughSurface(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s) {
     if (s.asphericTerms > 0) return stepThroughAsphere(px, py, pz, dx, dy, dz, s);
-    if (s.conicFactor != T(1)) return stepThroughQuadric<T, true>(px, py, pz, dx, dy, dz, s);
-    return stepThroughQuadric<T, false>(px, py, pz, dx, dy, dz, s);
+    if (s.conicFactor != T(1)) return stepThroughQuadric<T, true>(px, py, pz, dx, dy, dz, s, s.eta);
+    return stepThroughQuadric<T, false>(px, py, pz, dx, dy, dz, s, s.eta);
 }
 
 }  // namespace lenslab

@@ -25,6 +25,10 @@ struct CameraOverrides {
     std::optional<Setting> wavelength;     // nm: the lens traced at one wavelength (default its primary)
     std::optional<double> filmDiagonal;
     std::optional<std::string> mode;       // "exact" | "thick" | "auto"
+    // Not a scene parameter: render spectrally (a wavelength per sample, the lens's dispersion, the
+    // film through the colour matching functions) or in RGB. Unset: spectral when the lens disperses
+    // and no single wavelength is asked for.
+    std::optional<bool> spectral;
 };
 
 struct RenderSettings {

@@ -95,6 +95,14 @@ void buildItems(ItemRunner& runner, const std::vector<LensSource>& lensSources, 
                 const std::vector<std::string>& renderIds, const RenderPlan& plan, const ReportOptions& o,
                 ReportContent& content) {
     for (const LensSource& l : lensSources) content.lenses.push_back(buildLensEntry(runner, l.id, l.path, o));
+    const auto chart = std::find_if(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kColourChartSceneId; });
+    if (chart != scenes.end())
+        for (LensEntry& lens : content.lenses) {
+            if (lens.facts.error.empty() && lens.facts.analysis.value("dispersive", false))
+                lens.colourFringes = buildColourFringes(runner, *chart, lens, plan, o);
+            else
+                for (const char* film : {"spectral", "rgb"}) runner.skip("colour chart " + lens.facts.id + " (" + film + ")");
+        }
     for (const SceneSource& s : scenes) {
         ReportScene entry{s, {}};
         if (s.realisticCamera)
@@ -138,7 +146,8 @@ ReportSummary buildReport(const ReportOptions& options, const std::function<void
     int realisticScenes = 0;
     for (const SceneSource& s : scenes) realisticScenes += s.realisticCamera;
     const bool speed = realisticScenes > 0 && !renderIds.empty();
-    const int total = 4 * static_cast<int>(lensSources.size()) + 3 * realisticScenes * static_cast<int>(renderIds.size()) +
+    const bool chart = std::any_of(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kColourChartSceneId; });
+    const int total = (chart ? 6 : 4) * static_cast<int>(lensSources.size()) + 3 * realisticScenes * static_cast<int>(renderIds.size()) +
                       (speed ? 2 * static_cast<int>(plan.speedSpps.size()) : 0) + 1;
 
     ReportSummary summary;

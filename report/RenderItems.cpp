@@ -59,6 +59,7 @@ struct RenderJob {
     std::string mode;
     int spp, width, height;
     double fstop;
+    std::optional<bool> spectral = std::nullopt;  // unset: as the lens decides
 
     // The radiometric camera weight averages the exit pupil's solid angle, about pi / (4 N^2) of the
     // scene radiance: scaling by its inverse shows every lens and f-number at the scene's brightness.
@@ -70,6 +71,7 @@ struct RenderJob {
         s.camera.lensFile = lens.facts.path;
         s.camera.fstop = Setting{fstop, "report --render-fstop"};
         s.camera.mode = mode;
+        s.camera.spectral = spectral;
         s.spp = spp;
         s.width = width;
         s.height = height;
@@ -81,16 +83,18 @@ struct RenderJob {
         InputsHash h = itemInputs("render");
         for (const std::string& f : scene.files) h.addFile(f);
         h.addFile(lens.facts.path).add(mode).add(double(spp)).add(double(width)).add(double(height)).add(fstop).add(exposure());
+        if (spectral) h.add(*spectral ? "spectral" : "rgb");
         return h.hex();
     }
 };
 
 // Runs a render through the cache, counting actual renders; nullopt when it failed.
 std::optional<RenderRecord> renderItem(ItemRunner& runner, const RenderJob& job, int threads) {
-    const std::string id = "render/" + job.scene.id + "/" + job.lens.facts.id + "/" + job.mode;
-    const std::string image = "assets/renders/" + job.scene.id + "/" + job.lens.facts.id + "-" + job.mode + ".png";
+    const std::string film = job.spectral ? (*job.spectral ? "-spectral" : "-rgb") : "";
+    const std::string id = "render/" + job.scene.id + "/" + job.lens.facts.id + "/" + job.mode + film;
+    const std::string image = "assets/renders/" + job.scene.id + "/" + job.lens.facts.id + "-" + job.mode + film + ".png";
     const ManifestItem* item =
-        runner.run(id, "render " + job.lens.facts.id + " in " + job.scene.id + " (" + job.mode + ")", job.hash(), [&] {
+        runner.run(id, "render " + job.lens.facts.id + " in " + job.scene.id + " (" + job.mode + film + ")", job.hash(), [&] {
             runner.countRender();
             const RenderOutput out = renderScene(job.settings(threads), {}, runner.cancel());
             writeSiteFile(runner.site(), image, encodePng(out.image, job.exposure()));
@@ -165,6 +169,24 @@ RenderPair buildRenderPair(ItemRunner& runner, const SceneSource& scene, const L
         pair.problem = "the difference image failed (see the problems list)";
     }
     return pair;
+}
+
+ColourFringes buildColourFringes(ItemRunner& runner, const SceneSource& chart, const LensEntry& lens,
+                                 const RenderPlan& plan, const ReportOptions& o) {
+    ColourFringes c;
+    const int height = heightFor(chart, plan.width);
+    const double fstop = renderFstopFor(lens, o.renderFstop);
+    const std::optional<RenderRecord> spectral =
+        renderItem(runner, RenderJob{chart, lens, "exact", plan.spp, plan.width, height, fstop, true}, o.threads);
+    const std::optional<RenderRecord> rgb =
+        renderItem(runner, RenderJob{chart, lens, "exact", plan.spp, plan.width, height, fstop, false}, o.threads);
+    if (spectral && rgb) {
+        c.spectral = *spectral;
+        c.rgb = *rgb;
+    } else {
+        c.problem = "the chart render failed (see the problems list)";
+    }
+    return c;
 }
 
 // The error of lower sample counts against the accurate render at the report's count, in both modes.

@@ -21,6 +21,13 @@ RenderPlan renderPlan(const ReportOptions& options);
 RenderPair buildRenderPair(ItemRunner& runner, const SceneSource& scene, const LensEntry& lens, const RenderPlan& plan,
                            const ReportOptions& options);
 
+// The scene that shows lateral colour (scenes/lateral-colour-chart.pbrt), by its id.
+constexpr const char* kColourChartSceneId = "lateral-colour-chart";
+
+// A dispersive lens through the colour chart, exact, spectral and RGB.
+ColourFringes buildColourFringes(ItemRunner& runner, const SceneSource& chart, const LensEntry& lens,
+                                 const RenderPlan& plan, const ReportOptions& options);
+
 // Lower sample counts of `lens` in the scene against its accurate render at the plan's count (taken
 // from scene.pairs; the study is empty when that render is missing).
 SpeedStudy buildSpeedStudy(ItemRunner& runner, const ReportScene& scene, const LensEntry& lens, const RenderPlan& plan,

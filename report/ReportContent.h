@@ -1,6 +1,7 @@
 #pragma once
 // Everything the report page shows, gathered (or read from the cache) before the HTML is written.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,6 @@ struct DiagramImage {
     int width = 0, height = 0;
 };
 
-struct LensEntry {
-    LensFacts facts;
-    std::vector<DiagramImage> diagrams;
-    std::string jsonFile;  // the table's JSON, as `lenslab lens --json` prints it
-    std::string problem;   // a diagram that could not be drawn
-};
-
 struct RenderRecord {
     std::string image;  // relative to the site folder
     std::string mode;   // "exact" | "thick"
@@ -31,6 +25,22 @@ struct RenderRecord {
     double setupSeconds = 0, renderSeconds = 0;
     std::uint64_t cameraRays = 0, blockedCameraRays = 0, raysTraced = 0;
 };
+
+// A dispersive lens through the lateral colour chart: the spectral render (colour fringes) beside
+// the RGB render at the lens's own wavelength (none).
+struct ColourFringes {
+    RenderRecord spectral, rgb;
+    std::string problem;  // why they are missing
+};
+
+struct LensEntry {
+    LensFacts facts;
+    std::vector<DiagramImage> diagrams;
+    std::string jsonFile;  // the table's JSON, as `lenslab lens --json` prints it
+    std::string problem;   // a diagram that could not be drawn
+    std::optional<ColourFringes> colourFringes;  // dispersive lenses, when the chart scene exists
+};
+
 
 struct RenderPair {
     std::string lensId;

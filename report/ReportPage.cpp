@@ -169,6 +169,25 @@ Plot distortionPlot(const LensFacts& f) {
     return p;
 }
 
+// The chart through a dispersive lens: a wavelength per sample through the glasses' dispersion,
+// beside every ray at the lens's own wavelength.
+void colourFringes(std::ostringstream& out, const LensFacts& f, const ColourFringes& c) {
+    out << "<section class=\"colour\">\n<h4>Lateral colour: the chart at f/" << formatNumber(c.spectral.fstop, 3) << "</h4>\n";
+    if (!c.problem.empty()) {
+        out << "<p class=\"problem\">" << escapeMarkup(c.problem) << "</p>\n</section>\n";
+        return;
+    }
+    const int w = c.spectral.width, h = c.spectral.height;
+    out << "<div class=\"triptych\">\n"
+        << figure(img(c.spectral.image, "colour chart through " + f.id + ", spectral", w, h),
+                  "Spectral: each sample at its own wavelength through the glasses' dispersion")
+        << figure(img(c.rgb.image, "colour chart through " + f.id + ", one wavelength", w, h),
+                  "RGB: every ray at the lens's own wavelength, no dispersion")
+        << "</div>\n<p class=\"params\">" << w << "\u00d7" << h << " pixels, " << c.spectral.spp
+        << " samples per pixel; render " << formatFixed(c.spectral.renderSeconds, 2) << " s spectral, "
+        << formatFixed(c.rgb.renderSeconds, 2) << " s RGB.</p>\n</section>\n";
+}
+
 void lensArticle(std::ostringstream& out, const LensEntry& lens) {
     const LensFacts& f = lens.facts;
     out << "<article class=\"lens\" id=\"" << escapeMarkup(lensAnchor(f.id)) << "\">\n<h3>" << escapeMarkup(f.id) << "</h3>\n";
@@ -191,7 +210,9 @@ void lensArticle(std::ostringstream& out, const LensEntry& lens) {
     out << figure(svgPlot(illuminationPlot(f)),
                   "Irradiance from a uniform scene on the film at the exact focus, by exact tracing; 1 at the centre.");
     out << figure(svgPlot(distortionPlot(f)), "Chief ray height on the F\u2032 plane against f tan \u03b8; negative is barrel.");
-    out << "</div>\n<p class=\"download\"><a href=\"" << escapeMarkup(lens.jsonFile) << "\">The table as JSON</a> (the output of <code>lenslab lens "
+    out << "</div>\n";
+    if (lens.colourFringes) colourFringes(out, f, *lens.colourFringes);
+    out << "<p class=\"download\"><a href=\"" << escapeMarkup(lens.jsonFile) << "\">The table as JSON</a> (the output of <code>lenslab lens "
         << escapeMarkup(f.id) << ".dat --json</code> with the settings above).</p>\n</article>\n";
 }
 

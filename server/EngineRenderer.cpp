@@ -14,6 +14,7 @@ RenderedImages EngineRenderer::render(const RenderJobInput& job, const TileCallb
     settings.camera.focusDistance = lens.focusDistance;
     settings.camera.filmDiagonal = job.request.filmDiagonal;
     settings.camera.mode = job.request.mode;
+    settings.camera.spectral = job.request.spectral;
     settings.spp = job.request.spp;
     settings.width = job.request.width;
     settings.height = job.request.height;

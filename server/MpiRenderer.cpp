@@ -70,6 +70,7 @@ RenderedImages MpiRenderer::render(const RenderJobInput& job, const TileCallback
     if (r.fstop) argv.insert(argv.end(), {"--fstop", exactNumber(*r.fstop)});
     if (r.focusDistance) argv.insert(argv.end(), {"--focus", exactNumber(*r.focusDistance)});
     if (r.filmDiagonal) argv.insert(argv.end(), {"--filmdiag", exactNumber(*r.filmDiagonal)});
+    if (r.spectral) argv.insert(argv.end(), {"--spectral", *r.spectral ? "on" : "off"});
 
     struct Cleanup {
         std::vector<std::string> paths;

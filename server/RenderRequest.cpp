@@ -54,7 +54,7 @@ std::string identifierField(const json& body, const char* field, const std::stri
 RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, const std::string& defaultScene) {
     if (!body.is_object()) throw HttpError(400, "the render request must be a JSON object");
     static const char* kFields[] = {"scene", "lens", "fstop", "focaldistance", "filmdiagonal",
-                                    "mode", "spp", "width", "height"};
+                                    "mode", "spectral", "spp", "width", "height"};
     for (const auto& item : body.items()) {
         bool known = false;
         for (const char* f : kFields) known = known || item.key() == f;
@@ -72,6 +72,10 @@ RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, c
     const std::optional<LensMode> mode = parseLensMode(r.mode);
     if (!mode) throw HttpError(400, "mode must be exact|thick|auto, got '" + r.mode.substr(0, 40) + "'");
     r.mode = lensModeName(*mode);  // round one's accurate/approximate, stored under today's names
+    if (body.contains("spectral") && !body["spectral"].is_null()) {
+        if (!body["spectral"].is_boolean()) throw HttpError(400, "spectral must be true, false or null");
+        r.spectral = body["spectral"].get<bool>();
+    }
     r.spp = fieldInteger(body, "spp", r.spp, 1, limits.maxSpp, "the service's spp limit");
     r.width = fieldInteger(body, "width", r.width, 8, limits.maxWidth, "the service's width limit");
     r.height = fieldInteger(body, "height", r.height, 8, limits.maxHeight, "the service's height limit");
@@ -93,6 +97,7 @@ nlohmann::json renderRequestJson(const RenderRequest& r) {
             {"focaldistance", optional(r.focusDistance)},
             {"filmdiagonal", optional(r.filmDiagonal)},
             {"mode", r.mode},
+            {"spectral", r.spectral ? json(*r.spectral) : json(nullptr)},
             {"spp", r.spp},
             {"width", r.width},
             {"height", r.height}};

@@ -17,6 +17,7 @@ struct RenderRequest {
     std::optional<double> fstop;         // unset: as in the scene
     std::optional<double> focusDistance; // front vertex to the plane of focus (field focaldistance); unset: as in the scene
     std::optional<double> filmDiagonal;  // unset: as in the scene
+    std::optional<bool> spectral;        // unset: spectral when the lens disperses
     std::string mode = "exact";          // exact (every ray traced) | thick (thick lens) | auto
     int spp = 16;
     int width = 320, height = 240;

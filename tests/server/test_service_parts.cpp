@@ -29,13 +29,15 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
     EXPECT_EQ(r.mode, "exact");
     EXPECT_FALSE(r.fstop.has_value());
     EXPECT_EQ(r.spp, 16);
+    EXPECT_FALSE(r.spectral.has_value());  // spectral when the lens disperses
+    EXPECT_FALSE(parseRenderRequest(json{{"spectral", nullptr}}, limits, "s").spectral.has_value());
     const json full = {{"scene", "s"}, {"lens", "l"}, {"fstop", 2.8}, {"focaldistance", 1500}, {"filmdiagonal", 43.3},
-                       {"mode", "thick"}, {"spp", 4}, {"width", 64}, {"height", 48}};
+                       {"mode", "thick"}, {"spectral", true}, {"spp", 4}, {"width", 64}, {"height", 48}};
     EXPECT_EQ(renderRequestJson(parseRenderRequest(full, limits, "")), full);
     for (const json& bad : {json{{"spp", 0}}, json{{"spp", limits.maxSpp + 1}}, json{{"width", 7}},
                             json{{"height", limits.maxHeight + 1}}, json{{"fstop", "wide"}}, json{{"focaldistance", "near"}},
                             json{{"filmdiagonal", "big"}}, json{{"mode", "fast"}}, json{{"scene", "../x"}},
-                            json{{"lens", ""}}, json{{"colour", 1}}, json{{"spp", 1.5}}}) {
+                            json{{"lens", ""}}, json{{"colour", 1}}, json{{"spp", 1.5}}, json{{"spectral", "on"}}}) {
         try {
             parseRenderRequest(bad, limits, "s");
             ADD_FAILURE() << "accepted " << bad.dump();

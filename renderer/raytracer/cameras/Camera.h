@@ -19,6 +19,7 @@ struct CameraSample {
     double rasterX = 0, rasterY = 0;
     float u1 = 0, u2 = 0;     // lens sample
     float time = 0;           // the ray's moment, a TransformTimes::fraction (core/AnimatedTransform.h)
+    double wavelengthNm = 0;  // a spectral render's wavelength for this sample (0: none)
 };
 
 class Camera {
@@ -32,6 +33,9 @@ public:
         for (std::size_t i = 0; i < n; ++i)
             if (!generateRay(samples[i].rasterX, samples[i].rasterY, samples[i].u1, samples[i].u2, out[i])) out[i].weight = 0;
     }
+    // Whether its rays depend on each sample's wavelength (a lens traced with dispersion): the
+    // frame is then rendered spectrally unless told otherwise.
+    virtual bool spectral() const { return false; }
     // Camera and lens parameters for the image metadata.
     virtual std::map<std::string, std::string> describe() const = 0;
 };

@@ -135,12 +135,16 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
         s.filmDistance.reset();
     }
     s.wavelength = o.wavelength;
+    if (o.spectral.value_or(false) && o.wavelength)
+        throw SceneError(o.wavelength->source + " traces the lens at one wavelength; a spectral render traces them all");
     const double sceneDiagonal = p.has("filmdiag") ? p.getFloat("filmdiag", 35) : p.getFloat("filmdiagonal", scene.film.diagonalMm);
     r.filmDiagonalMm = o.filmDiagonal.value_or(sceneDiagonal);
     const std::string mode = o.mode.value_or(p.getString("mode", "exact"));
     const std::optional<LensMode> lensMode = parseLensMode(mode);
     if (!lensMode) p.fail("mode must be exact|thick|auto, got \"" + mode + "\"");
     r.mode = *lensMode;
+    // The thick lens has no dispersion: its film stays RGB unless asked.
+    r.spectral = o.spectral.value_or(!o.wavelength && r.mode != LensMode::Thick) && r.lens.isDispersive();
     r.autoThresholdPixels = p.getFloat("autothreshold", r.autoThresholdPixels);
     r.crop = scene.film.crop;  // the effective window: the render settings' crop overrides the scene's
     checkClipping(p, scene.warnings);

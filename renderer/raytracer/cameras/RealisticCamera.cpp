@@ -17,6 +17,9 @@ namespace {
 
 double cos4(double c) { return (c * c) * (c * c); }
 
+// The wavelengths a spectral camera traces (nm), those of the spectral film.
+constexpr double kSpectralFirstNm = 360, kSpectralLastNm = 830;
+
 // A film point's distance from the axis. Film coordinates are millimetres under 10^4: no overflow,
 // and the square root costs a fraction of std::hypot's on every camera ray.
 double filmRadius(double x, double y) { return std::sqrt(x * x + y * y); }
@@ -88,6 +91,12 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         ExitPupilBoundsOptions measure;
         measure.cancel = cancel;
         measure.progress = progress;
+        if (params.spectral) {
+            measure.wavelengthsNm = {kSpectralFirstNm, kSpectralLastNm};
+            etas_ = tabulateEtas(analysis_.lens, TraceDirection::FilmToScene, kSpectralFirstNm, kSpectralLastNm);
+            if (!params.aperture.isCircular())
+                for (int k = 0; k < etas_.bands; ++k) bandLenses_.push_back(atWavelength(analysis_.lens, etas_.bandCentreNm(k)));
+        }
         bounds_ = computeExitPupilBounds(analysis_.lens, filmZExact_, step, first, last, measure);
         const double centreWeight = params.simpleWeighting ? exactCentreWeight() : 0;
         weightScaleExact_ = params.simpleWeighting ? (centreWeight > 0 ? 1.0 / centreWeight : 0.0) : params.exposureTime;
@@ -136,8 +145,9 @@ double RealisticCamera::thickShareOfCrop() const {
 }
 
 double RealisticCamera::exactCentreWeight() const {
-    // The film centre's region, measured apart when the crop leaves the centre out.
-    const ExitPupilBounds centre = bounds_.firstRadius == 0
+    // The film centre's region, measured apart when the crop leaves the centre out, or at the lens's
+    // own wavelength when the bounds hold every wavelength's (the exposure stays the RGB film's).
+    const ExitPupilBounds centre = bounds_.firstRadius == 0 && !params_.spectral
                                        ? bounds_
                                        : computeExitPupilBounds(analysis_.lens, filmZExact_, bounds_.radiusStep, 0, 1);
     const double dz = centre.aimZ - filmZExact_;
@@ -170,19 +180,19 @@ double RealisticCamera::aimThick(double fx, double fy, float u1, float u2, Ray& 
     return shape * cos4(ray.direction.z) * (M_PI * 0.25 * xp.diameter * xp.diameter) / (dz * dz) * weightScaleThick_;
 }
 
-TraceResult RealisticCamera::traceShaped(const Ray& ray, double& weight) const {
-    if (params_.aperture.isCircular()) return traceRay(analysis_.lens, ray, TraceDirection::FilmToScene);
+TraceResult RealisticCamera::traceShaped(const LensSystem& lens, const Ray& ray, double& weight) const {
+    if (params_.aperture.isCircular()) return traceRay(lens, ray, TraceDirection::FilmToScene);
     // Film to stop (the stop included), the shape where the ray crosses it, then on to the front.
-    const int stop = analysis_.lens.stopIndex;
+    const int stop = lens.stopIndex;
     TraceOptions toStop;
     toStop.begin = stop;
-    const TraceResult atStop = traceRay(analysis_.lens, ray, TraceDirection::FilmToScene, toStop);
+    const TraceResult atStop = traceRay(lens, ray, TraceDirection::FilmToScene, toStop);
     if (!atStop.ok()) return atStop;
-    const double radius = analysis_.lens.stop().apertureRadius;
+    const double radius = lens.stop().apertureRadius;
     weight *= params_.aperture.weight(atStop.ray.origin.x / radius, atStop.ray.origin.y / radius);
     TraceOptions toFront;
     toFront.end = stop;
-    return traceRay(analysis_.lens, atStop.ray, TraceDirection::FilmToScene, toFront);
+    return traceRay(lens, atStop.ray, TraceDirection::FilmToScene, toFront);
 }
 
 bool RealisticCamera::finish(const Ray& lensRay, double weight, CameraRay& out) const {
@@ -224,6 +234,7 @@ void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, C
     b.u1.resize(n);
     b.u2.resize(n);
     b.sampleOf.resize(n);
+    b.bands.resize(n);
     std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const CameraSample& s = samples[i];
@@ -237,6 +248,7 @@ void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, C
         b.filmY[m] = fy;
         b.u1[m] = s.u1;
         b.u2[m] = s.u2;
+        if (params_.spectral) b.bands[m] = etas_.band(s.wavelengthNm > 0 ? s.wavelengthNm : analysis_.lens.wavelength);
         b.sampleOf[m++] = i;
     }
     if (m == 0) return;
@@ -244,7 +256,10 @@ void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, C
     b.rays.resize(m);
     b.weights.resize(m);
     aimExactRays(m, b);
-    if (params_.aperture.isCircular()) traceBatch(analysis_.lens, b.rays, TraceDirection::FilmToScene);
+    if (params_.aperture.isCircular()) {
+        if (params_.spectral) traceBatch(analysis_.lens, b.rays, TraceDirection::FilmToScene, etas_, b.bands.data());
+        else traceBatch(analysis_.lens, b.rays, TraceDirection::FilmToScene);
+    }
     for (std::size_t k = 0; k < m; ++k) {
         CameraRay& o = out[b.sampleOf[k]];
         o.weight = 0;
@@ -254,7 +269,8 @@ void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, C
             continue;
         }
         double weight = b.weights[k];  // a shaped stop is met ray by ray
-        const TraceResult r = traceShaped(b.rays.get(k), weight);
+        const LensSystem& lens = params_.spectral ? bandLenses_[b.bands[k]] : analysis_.lens;
+        const TraceResult r = traceShaped(lens, b.rays.get(k), weight);
         if (r.ok() && weight > 0) finish(r.ray, weight, o);
     }
 }
@@ -305,7 +321,9 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
                           : params_.pbrtExposure ? "simple, pbrt-v3's exposure (d^2 / first pupil box)"
                                                  : "simple (centre = 1)"},
             {"cameraSpaceUnitMm", formatNumber(params_.cameraUnitMm)},
-            {"cameraSpaceOrigin", params_.originAtFilm ? "film" : "front vertex"}};
+            {"cameraSpaceOrigin", params_.originAtFilm ? "film" : "front vertex"},
+            {"lensWavelengths", params_.spectral ? "each exact ray at its sample's wavelength, 360-830 nm in 1 nm bands"
+                                                 : formatNumber(a.lens.wavelength) + " nm"}};
     if (params_.mode == LensMode::Auto) {
         // The prediction behind the split, per radius: the thick lens's worst film error in pixels
         // and its brightness against the exact lens's; and the share of the film it was allowed.

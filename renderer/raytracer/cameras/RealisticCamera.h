@@ -26,6 +26,7 @@
 #include "LensSettings.h"
 #include "cameras/LensModeMap.h"
 #include "RayBatch.h"
+#include "WavelengthEtas.h"
 #include "core/Transform.h"
 
 namespace lenslab {
@@ -48,6 +49,9 @@ struct RealisticParams {
     bool simpleWeighting = false;          // pbrt-v3: weights normalised to 1 at the image centre
     // With simpleWeighting: pbrt-v3's exposure (optics/PbrtPupilBox.h) instead of the centre at 1.
     bool pbrtExposure = false;
+    // Trace each exact ray at its sample's wavelength (CameraSample::wavelengthNm), with the lens's
+    // dispersion; the thick lens stays at the lens's wavelength. Only for a dispersive lens.
+    bool spectral = false;
 };
 
 // Parameters for a lens file at an f-number (nullopt: the widest) focused at focusDistanceMm from the
@@ -65,6 +69,7 @@ public:
     bool generateRay(double rasterX, double rasterY, float u1, float u2, CameraRay& out) const override;
     void generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const override;
     std::map<std::string, std::string> describe() const override;
+    bool spectral() const override { return params_.spectral; }
 
     const LensAnalysis& analysis() const { return analysis_; }
     double filmZ() const;  // mm, lens space: the thick-lens film in approximate mode, else the exact one
@@ -92,14 +97,15 @@ private:
     struct ExactRayBatch {
         std::vector<double> filmX, filmY, u1, u2;
         std::vector<std::size_t> sampleOf;  // the caller's index of each exact sample
+        std::vector<std::uint16_t> bands;   // spectral: each ray's wavelength band
         PupilSampleBatch pupil;
         RayBatch rays;
         std::vector<double> weights;
     };
     void aimExactRays(std::size_t count, ExactRayBatch& batch) const;
-    // The exact trace with the stop's shape applied where the ray crosses the stop; the weight is
-    // multiplied by the shape's.
-    TraceResult traceShaped(const Ray& ray, double& weight) const;
+    // The exact trace through `lens` with the stop's shape applied where the ray crosses the stop;
+    // the weight is multiplied by the shape's.
+    TraceResult traceShaped(const LensSystem& lens, const Ray& ray, double& weight) const;
     bool finish(const Ray& lensRay, double weight, CameraRay& out) const;
 
     RealisticParams params_;
@@ -113,7 +119,9 @@ private:
     std::vector<ThickLensFilmError> errors_;
     LensModeMap modes_;
     double thickShare_ = 0;          // auto: thickShareOfCrop() of the allowed bands
-    ExitPupilBounds bounds_;         // for the exact trace's film radii
+    ExitPupilBounds bounds_;         // for the exact trace's film radii (spectral: every wavelength's)
+    WavelengthEtas etas_;            // spectral: the lens's index ratios per 1 nm band
+    std::vector<LensSystem> bandLenses_;  // spectral with a shaped stop: the lens at each band
     // Exposure time, or 1 / centre weight for simple weighting (each model normalised by its own).
     double weightScaleExact_ = 1, weightScaleThick_ = 1;
 };

@@ -3,33 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/ColourMatching.h"
+
 namespace lenslab {
 
 namespace {
-
-constexpr int kFirstNm = 360, kLastNm = 830;
-
-// The CIE 1931 2-degree colour matching functions as sums of piecewise Gaussians: Wyman, Sloan &
-// Shirley, "Simple Analytic Approximations to the CIE XYZ Color Matching Functions", JCGT 2(2),
-// 2013 (the multi-lobe fit, within about 1% of the tabulated functions).
-double lobe(double x, double mu, double sigmaBelow, double sigmaAbove) {
-    const double t = (x - mu) / (x < mu ? sigmaBelow : sigmaAbove);
-    return std::exp(-0.5 * t * t);
-}
-double cieX(double l) {
-    return 1.056 * lobe(l, 599.8, 37.9, 31.0) + 0.362 * lobe(l, 442.0, 16.0, 26.7) - 0.065 * lobe(l, 501.1, 20.4, 26.2);
-}
-double cieY(double l) { return 0.821 * lobe(l, 568.8, 46.9, 40.5) + 0.286 * lobe(l, 530.9, 16.3, 31.1); }
-double cieZ(double l) { return 1.217 * lobe(l, 437.0, 11.8, 36.0) + 0.681 * lobe(l, 459.0, 26.0, 13.8); }
-
-double cieYIntegral() {
-    static const double integral = [] {
-        double s = 0;
-        for (int l = kFirstNm; l <= kLastNm; ++l) s += cieY(l);
-        return s;
-    }();
-    return integral;
-}
 
 // The spectrum at wavelength l: linear between samples, the end values beyond them.
 double interpolate(const std::vector<double>& lambda, const std::vector<double>& v, double l) {
@@ -50,7 +28,7 @@ Vec3f xyzToRgb(double x, double y, double z) {
 
 Vec3f sampledSpectrumToRgb(const std::vector<double>& lambda, const std::vector<double>& v) {
     double x = 0, y = 0, z = 0;
-    for (int l = kFirstNm; l <= kLastNm; ++l) {
+    for (int l = kVisibleFirstNm; l <= kVisibleLastNm; ++l) {
         const double s = interpolate(lambda, v, l);
         x += s * cieX(l);
         y += s * cieY(l);
@@ -68,7 +46,7 @@ Vec3f blackbodyToRgb(double kelvin, double scale) {
     };
     const double peak = planck(2.8977721e-3 / kelvin * 1e9);
     std::vector<double> lambda, v;
-    for (int l = kFirstNm; l <= kLastNm; ++l) {
+    for (int l = kVisibleFirstNm; l <= kVisibleLastNm; ++l) {
         lambda.push_back(l);
         v.push_back(planck(l) / peak);
     }

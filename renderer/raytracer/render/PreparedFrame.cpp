@@ -90,6 +90,7 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
         geometry_ = std::make_unique<SceneGeometry>(scene_);
     });
     integrator_ = makeIntegrator(*geometry_, scene_.integrator, scene_.camera.medium.get());
+    spectral_ = settings.camera.spectral.value_or(camera_->spectral());
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
@@ -105,6 +106,7 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
     std::vector<CameraRay> rays(samples.size());
     std::vector<float> filterWeights(samples.size());
     const Rgb3x3 whiteBalance = whiteBalanceMatrix(scene_.film.whiteBalanceKelvin > 0 ? scene_.film.whiteBalanceKelvin : 6504);
+    std::vector<WavelengthSample> wavelengths(spectral_ ? samples.size() : 0);
     for (int py = rect.y0; py < rect.y1; ++py) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             counters += local;
@@ -122,6 +124,10 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                     filterWeights[first + s] = filter_.sample(u.filmX, u.filmY, dx, dy);
                     samples[first + s] = {px + 0.5 + dx, py + 0.5 + dy, u.lensU, u.lensV,
                                           shutter_.moment(u.time, scene_.transformTimes)};
+                    if (spectral_) {
+                        wavelengths[first + s] = sensor_.sample(u.wavelength);
+                        samples[first + s].wavelengthNm = wavelengths[first + s].nm;
+                    }
                 }
             }
             camera_->generateRays(samples.data(), std::size_t(runEnd - runStart) * spp_, rays.data());
@@ -137,10 +143,11 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                         continue;
                     }
                     Pcg32 rng(hashCombine(seed, std::uint64_t(s)));
-                    const Vec3f L =
-                        integrator_->radiance(ray.origin, ray.direction, samples[first + s].time, rng, local.raysTraced);
+                    const Vec3f L = ray.weight * integrator_->radiance(ray.origin, ray.direction, samples[first + s].time,
+                                                                        rng, local.raysTraced);
                     pixel.add(filterWeights[first + s],
-                              clampComponents(clampLuminance(ray.weight * L, scene_.film.maxSampleLuminance),
+                              clampComponents(clampLuminance(spectral_ ? sensor_.toRgb(L, wavelengths[first + s]) : L,
+                                                             scene_.film.maxSampleLuminance),
                                               scene_.film.maxComponentValue, scene_.film.scale));
                 }
                 local.cameraRays += spp_;
@@ -171,6 +178,9 @@ std::map<std::string, std::string> PreparedFrame::metadata() const {
     m["integrator"] = std::string(kIntegrators[int(scene_.integrator.type)]) + " maxdepth " +
                       std::to_string(scene_.integrator.maxDepth);
     m["units"] = "world metres, lens millimetres";
+    m["film"] = spectral_ ? "spectral: a wavelength per sample, RGB radiance to spectrum by Smits (1999), CIE 1931 "
+                            "matching functions (Wyman, Sloan & Shirley 2013 fit), linear Rec. 709"
+                          : "RGB, linear Rec. 709";
     if (!scene_.film.filename.empty()) m["filmFilename"] = scene_.film.filename;
     if (!scene_.warnings.empty()) m["warnings"] = joinLines(scene_.warnings);
     return m;

@@ -17,6 +17,7 @@
 #include "cameras/Shutter.h"
 #include "integrators/Integrator.h"
 #include "film/PixelFilter.h"
+#include "film/SpectralSensor.h"
 #include "Render.h"
 #include "scene/SceneDescription.h"
 #include "geometry/SceneGeometry.h"
@@ -60,6 +61,7 @@ public:
     bool renderRect(const PixelRect& rect, float* dst, std::size_t rowStride, TileCounters& counters,
                     const std::atomic<bool>* cancel = nullptr) const;
 
+    bool spectral() const { return spectral_; }
     // Camera and lens parameters, scene, resolution, spp, seed: the image's metadata.
     std::map<std::string, std::string> metadata() const;
 
@@ -76,6 +78,8 @@ private:
     std::unique_ptr<Camera> camera_;
     std::unique_ptr<SceneGeometry> geometry_;
     std::unique_ptr<Integrator> integrator_;
+    bool spectral_ = false;          // a wavelength per sample, the film through SpectralSensor
+    SpectralSensor sensor_;
     double setupSeconds_ = 0;
 };
 

@@ -81,7 +81,7 @@ float unitFloat(std::uint32_t bits) { return std::min(float(bits >> 8) * 0x1p-24
 }  // namespace
 
 PixelSampler::PixelSampler(std::uint64_t pixelSeed) {
-    for (int k = 0; k < 6; ++k) seeds_[k] = std::uint32_t(mix64(pixelSeed + k));
+    for (int k = 0; k < 8; ++k) seeds_[k] = std::uint32_t(mix64(pixelSeed + k));
 }
 
 PixelSample PixelSampler::operator()(std::uint32_t index) const {
@@ -95,7 +95,8 @@ PixelSample PixelSampler::operator()(std::uint32_t index) const {
     }
     return {unitFloat(owenScramble(reverseBits(index), seeds_[0])), unitFloat(owenScramble(filmY, seeds_[1])),
             unitFloat(owenScramble(lensU, seeds_[2])), unitFloat(owenScramble(lensV, seeds_[3])),
-            unitFloat(owenScramble(reverseBits(owenScramble(index, seeds_[5])), seeds_[4]))};
+            unitFloat(owenScramble(reverseBits(owenScramble(index, seeds_[5])), seeds_[4])),
+            unitFloat(owenScramble(reverseBits(owenScramble(index, seeds_[7])), seeds_[6]))};
 }
 
 }  // namespace lenslab

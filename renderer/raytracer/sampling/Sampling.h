@@ -42,6 +42,9 @@ private:
 // in the shutter interval.
 struct PixelSample {
     float filmX, filmY, lensU, lensV, time;  // [0, 1)
+    // A sixth dimension for the spectral film's wavelength, padded like the time (a van der Corput
+    // sequence over a per-pixel shuffle of the index): stratified on its own, independent of the others.
+    float wavelength;
 };
 
 // A pixel's camera samples, each dimension Owen-scrambled with its own seed drawn from the pixel's
@@ -63,7 +66,7 @@ public:
     PixelSample operator()(std::uint32_t index) const;
 
 private:
-    std::uint32_t seeds_[6];  // film x, film y, lens u, lens v, time, time's index shuffle
+    std::uint32_t seeds_[8];  // film x, film y, lens u, lens v, time, time's index shuffle, wavelength, its shuffle
 };
 
 inline Vec3f cosineHemisphere(float u1, float u2) {

@@ -1,0 +1,102 @@
+// Rays of many wavelengths in one batch: each ray traced exactly as the scalar trace of the lens at
+// its band's wavelength, and exit-pupil bounds over the union of wavelengths that lose (almost) no
+// ray of any wavelength.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "ExitPupilBounds.h"
+#include "Focus.h"
+#include "RayBatch.h"
+#include "WavelengthEtas.h"
+
+using namespace lenslab;
+
+namespace {
+
+const std::string kLenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
+
+}  // namespace
+
+TEST(WavelengthEtas, BandsMatchTheLensAtTheirWavelength) {
+    const LensSystem lens = loadLensSystem(kLenses + "dgauss-glass.dat");
+    const WavelengthEtas etas = tabulateEtas(lens, TraceDirection::FilmToScene);
+    EXPECT_EQ(etas.bands, 471);
+    EXPECT_EQ(etas.band(359), 0);
+    EXPECT_EQ(etas.band(587.4), 227);
+    EXPECT_EQ(etas.band(900), 470);
+    const LensSystem blue = atWavelength(lens, 400);
+    for (int i = 0; i < int(lens.surfaces.size()); ++i)
+        EXPECT_EQ(etas.etasOf(i)[etas.band(400)], surfaceConstants<double>(blue, i, TraceDirection::FilmToScene).eta);
+}
+
+// The per-ray batch trace equals the scalar trace of atWavelength(lens, band centre), to the bit,
+// for a spherical and an aspheric lens.
+TEST(WavelengthEtas, SpectralBatchEqualsScalarAtEachWavelengthBitForBit) {
+    for (const char* name : {"dgauss-glass.dat", "us2015-0092100-ex1-55mm.zmx"}) {
+        const LensSystem lens = loadLensSystem(kLenses + name);
+        const WavelengthEtas etas = tabulateEtas(lens, TraceDirection::FilmToScene);
+        const double filmZ = lens.rearZ() - 40;
+        std::mt19937_64 rng(11);
+        std::uniform_real_distribution<double> u(-1, 1), nm(360, 830);
+        RayBatch batch;
+        batch.resize(1024);
+        std::vector<Ray> rays;
+        std::vector<std::uint16_t> bands;
+        const double rear = lens.surfaces.back().apertureRadius;
+        for (std::size_t i = 0; i < batch.size(); ++i) {
+            const Vec3 film{u(rng) * 18, u(rng) * 12, filmZ};
+            const Vec3 target{u(rng) * rear, u(rng) * rear, lens.rearZ()};
+            rays.push_back({film, normalize(target - film)});
+            batch.set(i, rays.back());
+            bands.push_back(etas.band(nm(rng)));
+        }
+        traceBatch(lens, batch, TraceDirection::FilmToScene, etas, bands.data());
+        int passed = 0;
+        for (std::size_t i = 0; i < batch.size(); ++i) {
+            const LensSystem atBand = atWavelength(lens, etas.bandCentreNm(bands[i]));
+            const TraceResult s = traceRay(atBand, rays[i], TraceDirection::FilmToScene);
+            ASSERT_EQ(batch.blocked[i], s.blocked) << name << " ray " << i;
+            const Ray b = batch.get(i);
+            ASSERT_EQ(b.origin.x, s.ray.origin.x) << name << " ray " << i;
+            ASSERT_EQ(b.direction.y, s.ray.direction.y) << name << " ray " << i;
+            ASSERT_EQ(b.direction.z, s.ray.direction.z) << name << " ray " << i;
+            passed += s.ok();
+        }
+        EXPECT_GT(passed, 50) << name;
+    }
+}
+
+// Rays that pass the lens at some visible wavelength but fall outside the bounds the spectral camera
+// samples (the lens's own regions widened to hold those at 360 and 830 nm): measured over the film.
+TEST(WavelengthEtas, UnionBoundsHoldEveryWavelengthsPassingRays) {
+    const LensSystem lens = withStopDiameter(loadLensSystem(kLenses + "dgauss-glass.dat"), 30);
+    const double filmZ = lens.rearZ() - 60, maxRadius = 21;
+    ExitPupilBoundsOptions spectral;
+    spectral.wavelengthsNm = {360, 830};
+    const ExitPupilBounds own = computeExitPupilBounds(lens, filmZ, maxRadius);
+    const ExitPupilBounds all = computeExitPupilBounds(lens, filmZ, maxRadius, spectral);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    int passing = 0, outsideUnion = 0, outsideOwn = 0;
+    for (double nm : {380.0, 420.0, 480.0, 650.0, 720.0, 800.0}) {
+        const LensSystem l = atWavelength(lens, nm);
+        for (int k = 0; k < 8000; ++k) {
+            const double fr = maxRadius * std::sqrt(u(rng)), phi = 6.283185307179586 * u(rng);
+            const double fx = fr * std::cos(phi), fy = fr * std::sin(phi);
+            const double x = 40 * (u(rng) - 0.5), y = 40 * (u(rng) - 0.5);
+            const Vec3 from{fx, fy, filmZ};
+            if (!traceRay(l, {from, normalize(Vec3{x, y, all.aimZ} - from)}, TraceDirection::FilmToScene).ok()) continue;
+            ++passing;
+            outsideUnion += !insideExitPupilBounds(all, fx, fy, x, y);
+            outsideOwn += !insideExitPupilBounds(own, fx, fy, x, y);
+        }
+    }
+    ASSERT_GT(passing, 4000);
+    const double lostUnion = double(outsideUnion) / passing, lostOwn = double(outsideOwn) / passing;
+    RecordProperty("lost_with_union_bounds", std::to_string(lostUnion));
+    RecordProperty("lost_with_own_bounds", std::to_string(lostOwn));
+    std::printf("passing rays outside the bounds: union %.5f%%, own wavelength only %.5f%%\n", 100 * lostUnion,
+                100 * lostOwn);
+    EXPECT_LT(lostUnion, 1e-3);  // the same allowance as the single-wavelength bounds (test_exit_pupil_bounds)
+}
