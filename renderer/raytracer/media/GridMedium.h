@@ -1,6 +1,6 @@
 #pragma once
 // A medium whose coefficients are values on an nx x ny x nz grid of cell centres over a box,
-// interpolated trilinearly (pbrt's heterogeneous, uniformgrid and rgb media). The majorant is the
+// interpolated trilinearly (pbrt-v3's heterogeneous, pbrt-v4's uniformgrid). The majorant is the
 // largest coefficient anywhere.
 #include <vector>
 
