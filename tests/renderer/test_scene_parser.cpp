@@ -71,6 +71,39 @@ TEST(SceneParser, IncludeReachesAnywhereUnlessConfined) {
     EXPECT_EQ(parseSceneFile(inside).shapes.size(), 1u);
 }
 
+// pbrt reads an Include as tokens spliced into the stream: the included file's last directive
+// takes the parameters that follow the Include (pbrt-v4's smoke-plume scene relies on it).
+TEST(SceneParser, IncludedDirectiveTakesParametersThatFollow) {
+    test::TempDir dir;
+    dir.write("parts/ball.pbrt", "AttributeBegin\nShape \"sphere\"\n");
+    const std::string ok = dir.write("ok.pbrt", std::string(kHeader) +
+        "WorldBegin\nInclude \"parts/ball.pbrt\"\n  \"float radius\" 2\nAttributeEnd\nWorldEnd\n");
+    const SceneDescription s = parseSceneFile(ok);
+    EXPECT_EQ(s.shapes.size(), 1u);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    // A bad value names the line in the including file, where it stands.
+    const std::string bad = dir.write("bad.pbrt", std::string(kHeader) +
+        "WorldBegin\nInclude \"parts/ball.pbrt\"\n  \"float radius\" [ x ]\nAttributeEnd\nWorldEnd\n");
+    const std::string e = test::sceneErrorOf(bad);
+    EXPECT_NE(e.find("bad.pbrt:6: Shape \"sphere\": bad number 'x'"), std::string::npos) << e;
+}
+
+TEST(SceneErrors, ErrorInIncludedFileNamesItsLine) {
+    test::TempDir dir;
+    dir.write("parts/t.pbrt", "\n\nTranslate 1 x 2\n");
+    const std::string p = dir.write("s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"parts/t.pbrt\"\nWorldEnd\n");
+    const std::string e = test::sceneErrorOf(p);
+    EXPECT_NE(e.find("t.pbrt:3: Translate: bad number 'x'"), std::string::npos) << e;
+}
+
+TEST(SceneErrors, IncludeCycle) {
+    test::TempDir dir;
+    dir.write("cycle.pbrt", "Include \"cycle.pbrt\"\n");  // last: its file is done when it nests
+    const std::string p = dir.write("s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"cycle.pbrt\"\n");
+    const std::string e = test::sceneErrorOf(p);
+    EXPECT_NE(e.find("nested deeper than 32"), std::string::npos) << e;
+}
+
 TEST(SceneErrors, UnknownDirectiveNamesFileLineAndDirective) {
     test::TempDir dir;
     const std::string p = dir.write("bad.pbrt", std::string(kHeader) + "WorldBegin\n\nMakeItPretty 3\nWorldEnd\n");

@@ -1,7 +1,8 @@
 // MakeNamedMedium's types and their parameters. pbrt-v3's homogeneous and heterogeneous default to
-// its coefficients (skim milk's, per mm); pbrt-v4's uniformgrid defaults to 1 and 1.
+// its coefficients (skim milk's, per mm); pbrt-v4's uniformgrid and cloud default to 1 and 1.
 #include <cmath>
 
+#include "media/CloudMedium.h"
 #include "media/GridMedium.h"
 #include "media/HomogeneousMedium.h"
 #include "media/ParticipatingMedium.h"
@@ -29,6 +30,13 @@ void coefficients(const ParamSet& p, Vec3f defaultA, Vec3f defaultS, Vec3f& sigm
     if (!nonNegative(sigmaA) || !nonNegative(sigmaS)) p.fail("sigma_a, sigma_s and scale must not be negative");
 }
 
+// The medium's box in its own space, "p0" to "p1".
+void boxCorners(const ParamSet& p, Vec3f& p0, Vec3f& p1) {
+    p0 = p.getPoint("p0", {0, 0, 0});
+    p1 = p.getPoint("p1", {1, 1, 1});
+    if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z)) p.fail("p0 must lie below p1 on every axis");
+}
+
 // A density grid times the coefficients: pbrt-v3's heterogeneous, pbrt-v4's uniformgrid.
 std::shared_ptr<const ParticipatingMedium> makeDensityGrid(const ParamSet& p, const Transform& mediumToWorld, Vec3f defaultA,
                                               Vec3f defaultS) {
@@ -48,10 +56,21 @@ std::shared_ptr<const ParticipatingMedium> makeDensityGrid(const ParamSet& p, co
         grid.sigmaA.push_back(float(d) * sigmaA);
         grid.sigmaS.push_back(float(d) * sigmaS);
     }
-    const Vec3f p0 = p.getPoint("p0", {0, 0, 0}), p1 = p.getPoint("p1", {1, 1, 1});
-    if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z)) p.fail("p0 must lie below p1 on every axis");
+    Vec3f p0, p1;
+    boxCorners(p, p0, p1);
     const Transform boxToWorld = mediumToWorld * translate(p0.x, p0.y, p0.z) * scale(p1.x - p0.x, p1.y - p0.y, p1.z - p0.z);
     return std::make_shared<GridMedium>(std::move(grid), boxToWorld, phaseOf(p));
+}
+
+std::shared_ptr<const ParticipatingMedium> makeCloud(const ParamSet& p, const Transform& mediumToWorld) {
+    Vec3f sigmaA, sigmaS, p0, p1;
+    coefficients(p, {1, 1, 1}, {1, 1, 1}, sigmaA, sigmaS);
+    boxCorners(p, p0, p1);
+    CloudShape shape;
+    shape.density = float(p.getFloat("density", shape.density));
+    shape.wispiness = float(p.getFloat("wispiness", shape.wispiness));
+    shape.frequency = float(p.getFloat("frequency", shape.frequency));
+    return std::make_shared<CloudMedium>(shape, sigmaA, sigmaS, p0, p1, mediumToWorld, phaseOf(p));
 }
 
 }  // namespace
@@ -69,8 +88,10 @@ std::shared_ptr<const ParticipatingMedium> makeMedium(const std::string& type, c
         if (p.has("temperature") || p.has("Le"))
             p.fail("emitting media (\"Le\", \"temperature\") are not supported: the picture would lack their light");
         m = makeDensityGrid(p, mediumToWorld, {1, 1, 1}, {1, 1, 1});
+    } else if (type == "cloud") {
+        m = makeCloud(p, mediumToWorld);
     } else {
-        p.fail("medium \"" + type + "\" is not supported (homogeneous, heterogeneous, uniformgrid)");
+        p.fail("medium \"" + type + "\" is not supported (homogeneous, heterogeneous, uniformgrid, cloud)");
     }
     if (p.has("Le") && !isBlack(p.getRgb("Le", {})))
         p.fail("emitting media (\"Le\") are not supported: the picture would lack their light");

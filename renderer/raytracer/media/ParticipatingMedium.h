@@ -54,7 +54,7 @@ struct MediumInterface {
 };
 
 // MakeNamedMedium's "string type": pbrt-v3's homogeneous and heterogeneous, pbrt-v4's homogeneous,
-// uniformgrid and rgb; mediumToWorld is the current transform there. Anything else is a SceneError
+// uniformgrid and cloud; mediumToWorld is the current transform there. Anything else is a SceneError
 // naming the line.
 std::shared_ptr<const ParticipatingMedium> makeMedium(const std::string& type, const ParamSet& params,
                                          const Transform& mediumToWorld, std::vector<std::string>& warnings);

@@ -98,7 +98,7 @@ ParamSet readParamList(TokenCursor& in, const SourceLocation& where, const PathR
         std::istringstream words(decl.text);
         std::string typeName, name, extra;
         words >> typeName >> name >> extra;
-        const SourceLocation at{where.file, decl.line, where.directive};
+        const SourceLocation at = locate(decl, where);
         if (name.empty() || !extra.empty()) sceneFail(at, "bad parameter declaration \"" + decl.text + "\"");
         const auto type = typeFromName(typeName);
         if (!type) sceneFail(at, "unknown parameter type '" + typeName + "' in \"" + decl.text + "\"");
@@ -117,7 +117,7 @@ ParamSet readParamList(TokenCursor& in, const SourceLocation& where, const PathR
             continue;
         }
         for (const Token& t : values) {
-            const SourceLocation vat{where.file, t.line, where.directive};
+            const SourceLocation vat = locate(t, where);
             if (p.type == ParamType::String || p.type == ParamType::Texture) {
                 if (!t.quoted) sceneFail(vat, "parameter \"" + name + "\" needs quoted strings, got '" + t.text + "'");
                 p.strings.push_back(t.text);

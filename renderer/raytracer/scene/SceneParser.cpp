@@ -75,18 +75,14 @@ public:
         integratorWhere_.file = scene.file;
     }
 
-    void parseFile(const std::string& path, int depth) {
-        if (depth > kMaxIncludeDepth) throw SceneError(path + ": Include nested deeper than 32 (a cycle?)");
-        const std::optional<std::string> text = readPossiblyGzipped(path);  // pbrt-v4's .pbrt.gz too
-        if (!text) throw SceneError("cannot open scene file '" + path + "'");
-        std::vector<Token> tokens = tokenizeScene(*text, path);
-        if (depth == 0) scene_.dialect = detectDialect(tokens);
-        files_.emplace_back(path, std::move(tokens));
-        while (!in_().atEnd()) {
-            directive(depth);
-            if (options_.progress && depth == 0) options_.progress(in_().fraction());
+    void parseFile(const std::string& path) {
+        std::vector<Token> tokens = readTokens(path);
+        scene_.dialect = detectDialect(tokens);
+        in_.include(path, std::move(tokens));
+        while (!in_.atEnd()) {
+            directive();
+            if (options_.progress) options_.progress(in_.fraction());
         }
-        files_.pop_back();
     }
 
     void finish() {
@@ -100,19 +96,23 @@ public:
     }
 
 private:
-    using Handler = void (Parser::*)(SourceLocation&, int);
+    using Handler = void (Parser::*)(SourceLocation&);
     struct DirectiveEntry {
         Handler handler;
         Phase phase;
     };
 
-    TokenCursor& in_() { return files_.back(); }
-    double number(const SourceLocation& where) { return in_().number(where); }
-    std::string quoted(const SourceLocation& where, const char* what) { return in_().quoted(where, what); }
+    static std::vector<Token> readTokens(const std::string& path) {
+        const std::optional<std::string> text = readPossiblyGzipped(path);  // pbrt-v4's .pbrt.gz too
+        if (!text) throw SceneError("cannot open scene file '" + path + "'");
+        return tokenizeScene(*text, path);
+    }
+    double number(const SourceLocation& where) { return in_.number(where); }
+    std::string quoted(const SourceLocation& where, const char* what) { return in_.quoted(where, what); }
     PathResolver resolver() const {
         return [this](const std::string& name, const SourceLocation& at) { return resolveScenePath(scene_, name, at); };
     }
-    ParamSet params(const SourceLocation& where) { return readParamList(in_(), where, resolver()); }
+    ParamSet params(const SourceLocation& where) { return readParamList(in_, where, resolver()); }
     void warn(const SourceLocation& where, const std::string& message) {
         scene_.warnings.push_back(describe(where) + ": " + message);
     }
@@ -123,13 +123,13 @@ private:
         return type;
     }
 
-    void directive(int depth) {
-        const Token tok = in_().take({in_().file(), 0, ""}, "a directive");
-        SourceLocation where{in_().file(), tok.line, tok.text};
+    void directive() {
+        const Token tok = in_.take({scene_.file, 0, ""}, "a directive");
+        SourceLocation where = locate(tok, {"", 0, tok.text});
         if (tok.quoted || tok.text == "[" || tok.text == "]") sceneFail(where, "expected a directive, got '" + tok.text + "'");
         if (worldEnded_) {
             warn(where, "ignoring everything after WorldEnd");
-            in_().skipToEnd();
+            in_.skipToEnd();
             return;
         }
         const auto& table = directives();
@@ -138,7 +138,7 @@ private:
         if (it->second.phase == Phase::World && !worldBegun_) sceneFail(where, "only allowed after WorldBegin");
         if (it->second.phase == Phase::Options && worldBegun_) sceneFail(where, "only allowed before WorldBegin");
         try {
-            (this->*it->second.handler)(where, depth);
+            (this->*it->second.handler)(where);
         } catch (const std::domain_error& e) {  // singular or degenerate transforms
             sceneFail(where, e.what());
         }
@@ -205,49 +205,49 @@ private:
         if (activeStart_) g_.ctm = t;
         if (activeEnd_) g_.ctmEnd = t;
     }
-    void translateDirective(SourceLocation& where, int) {
+    void translateDirective(SourceLocation& where) {
         const double x = number(where), y = number(where), z = number(where);
         applyTransform(translate(x, y, z));
     }
-    void scaleDirective(SourceLocation& where, int) {
+    void scaleDirective(SourceLocation& where) {
         const double x = number(where), y = number(where), z = number(where);
         if (x == 0 || y == 0 || z == 0) sceneFail(where, "zero scale factor");
         applyTransform(scale(x, y, z));
     }
-    void rotateDirective(SourceLocation& where, int) {
+    void rotateDirective(SourceLocation& where) {
         const double a = number(where), x = number(where), y = number(where), z = number(where);
         applyTransform(rotate(a, x, y, z));
     }
-    void lookAtDirective(SourceLocation& where, int) {
+    void lookAtDirective(SourceLocation& where) {
         double v[9];
         for (double& x : v) x = number(where);
         applyTransform(lookAt(v, v + 3, v + 6));
     }
-    void matrixDirective(SourceLocation& where, int) {
-        const std::vector<double> v = in_().numberArray(where, 16);
+    void matrixDirective(SourceLocation& where) {
+        const std::vector<double> v = in_.numberArray(where, 16);
         Matrix44 m;
         for (int i = 0; i < 16; ++i) m.m[i % 4][i / 4] = v[i];  // pbrt lists the matrix column by column
         const Transform t = makeTransform(m);
         if (where.directive == "Transform") setTransform(t);
         else applyTransform(t);
     }
-    void identityDirective(SourceLocation&, int) { setTransform(Transform{}); }
-    void coordinateSystem(SourceLocation& where, int) { namedCoordinates_[quoted(where, "a name")] = {g_.ctm, g_.ctmEnd}; }
-    void coordSysTransform(SourceLocation& where, int) {
+    void identityDirective(SourceLocation&) { setTransform(Transform{}); }
+    void coordinateSystem(SourceLocation& where) { namedCoordinates_[quoted(where, "a name")] = {g_.ctm, g_.ctmEnd}; }
+    void coordSysTransform(SourceLocation& where) {
         const std::string n = quoted(where, "a name");
         auto it = namedCoordinates_.find(n);
         if (it == namedCoordinates_.end()) sceneFail(where, "unknown coordinate system \"" + n + "\"");
         setTransform(activeStart_ ? it->second.start : it->second.end);
         if (activeStart_ && activeEnd_) g_.ctmEnd = it->second.end;
     }
-    void activeTransform(SourceLocation& where, int) {
-        const Token& t = in_().take(where, "StartTime, EndTime or All");
+    void activeTransform(SourceLocation& where) {
+        const Token& t = in_.take(where, "StartTime, EndTime or All");
         if (t.quoted || (t.text != "StartTime" && t.text != "EndTime" && t.text != "All"))
             sceneFail(where, "expected StartTime, EndTime or All, got '" + t.text + "'");
         activeStart_ = t.text != "EndTime";
         activeEnd_ = t.text != "StartTime";
     }
-    void transformTimes(SourceLocation& where, int) {
+    void transformTimes(SourceLocation& where) {
         const double start = number(where), end = number(where);
         if (!(end >= start)) sceneFail(where, "the end time must not precede the start time");
         scene_.transformTimes = {start, end};
@@ -261,8 +261,8 @@ private:
     }
 
     // --- blocks and files -------------------------------------------------------------------
-    void beginBlock(SourceLocation& where, int) { stack_.push_back({where.directive == "AttributeBegin", g_, where}); }
-    void endBlock(SourceLocation& where, int) {
+    void beginBlock(SourceLocation& where) { stack_.push_back({where.directive == "AttributeBegin", g_, where}); }
+    void endBlock(SourceLocation& where) {
         const bool attribute = where.directive == "AttributeEnd";
         if (stack_.empty()) sceneFail(where, "without a matching " + std::string(attribute ? "AttributeBegin" : "TransformBegin"));
         if (stack_.back().attribute != attribute) sceneFail(where, "closes " + describe(stack_.back().where) + " (mismatched nesting)");
@@ -274,23 +274,26 @@ private:
         }
         stack_.pop_back();
     }
-    void reverseOrientation(SourceLocation&, int) { g_.reverseOrientation = !g_.reverseOrientation; }
-    void include(SourceLocation& where, int depth) {
-        const std::string file = quoted(where, "a file name");
-        parseFile(resolveScenePath(scene_, file, where), depth + 1);
+    void reverseOrientation(SourceLocation&) { g_.reverseOrientation = !g_.reverseOrientation; }
+    // pbrt splices the file's tokens into the stream: its last directive may take parameters that
+    // follow the Include.
+    void include(SourceLocation& where) {
+        const std::string path = resolveScenePath(scene_, quoted(where, "a file name"), where);
+        if (in_.depth() > kMaxIncludeDepth) sceneFail(where, "Include nested deeper than 32 (a cycle?)");
+        in_.include(path, readTokens(path));
     }
-    void ignoredName(SourceLocation& where, int) {
+    void ignoredName(SourceLocation& where) {
         warn({where.file, where.line, where.directive + " \"" + quoted(where, "a name") + "\""}, "ignored (lenslab renders in linear sRGB)");
     }
     // pbrt-v4's Option "TYPE NAME" value: renderer settings that do not change the picture's meaning.
-    void option(SourceLocation& where, int) {
+    void option(SourceLocation& where) {
         params(where);
         warn(where, "ignored (a pbrt-v4 rendering option lenslab does not use)");
     }
 
     // pbrt-v4's Attribute: defaults for the parameters of later directives of one kind, scoped
     // like the rest of the graphics state.
-    void attribute(SourceLocation& where, int) {
+    void attribute(SourceLocation& where) {
         const std::string target = typeName(where, "shape, light, material, medium or texture");
         const ParamSet p = params(where);
         if (target == "medium") {
@@ -309,7 +312,7 @@ private:
     }
 
     // --- rendering options ------------------------------------------------------------------
-    void camera(SourceLocation& where, int) {
+    void camera(SourceLocation& where) {
         const std::string type = typeName(where, "a camera type");
         if (type != "perspective" && type != "realistic" && type != "orthographic" && type != "environment" && type != "spherical")
             sceneFail(where, "camera \"" + type + "\" is not supported (perspective, orthographic, environment, spherical, realistic)");
@@ -327,13 +330,13 @@ private:
         cameraMediumWhere_ = where;
         namedCoordinates_["camera"] = {inverse(g_.ctm), inverse(g_.ctmEnd)};
     }
-    void accelerator(SourceLocation& where, int) {
+    void accelerator(SourceLocation& where) {
         typeName(where, "an accelerator type");
         params(where);
         warn(where, "ignored (lenslab always uses Embree's BVH)");
     }
     // --- participating media -----------------------------------------------------------------
-    void medium(SourceLocation& where, int) {
+    void medium(SourceLocation& where) {
         const std::string name = typeName(where, "a medium name");
         const ParamSet p = params(where);
         if (!p.has("type")) p.fail("MakeNamedMedium needs \"string type\"");
@@ -342,9 +345,9 @@ private:
         warnIfMoving(where, "a medium");
     }
     // pbrt-v3 gives one name for both sides too.
-    void mediumInterface(SourceLocation& where, int) {
+    void mediumInterface(SourceLocation& where) {
         g_.insideMedium = quoted(where, "a medium name");
-        g_.outsideMedium = !in_().atEnd() && in_().peek().quoted ? quoted(where, "a medium name") : g_.insideMedium;
+        g_.outsideMedium = !in_.atEnd() && in_.peek().quoted ? quoted(where, "a medium name") : g_.insideMedium;
     }
     std::shared_ptr<const ParticipatingMedium> namedMedium(const SourceLocation& where, const std::string& name) {
         if (name.empty()) return nullptr;
@@ -364,14 +367,14 @@ private:
             warn(integratorWhere_, "ignores the scene's participating media, as in pbrt (Integrator \"volpath\" renders them)");
         }
     }
-    void worldBegin(SourceLocation&, int) {
+    void worldBegin(SourceLocation&) {
         worldBegun_ = true;
         g_.ctm = g_.ctmEnd = Transform{};
         namedCoordinates_["world"] = {Transform{}, Transform{}};
     }
-    void worldEnd(SourceLocation&, int) { worldEnded_ = true; }
+    void worldEnd(SourceLocation&) { worldEnded_ = true; }
 
-    void film(SourceLocation& where, int) {
+    void film(SourceLocation& where) {
         const std::string type = typeName(where, "a film type");
         const ParamSet p = params(where);
         const bool v4 = scene_.dialect == SceneDialect::PbrtV4;
@@ -420,7 +423,7 @@ private:
         scene_.film.scale *= exposure * scene_.film.iso / 100;
     }
 
-    void sampler(SourceLocation& where, int) {
+    void sampler(SourceLocation& where) {
         const std::string type = typeName(where, "a sampler type");
         const ParamSet p = params(where);
         if (type == "stratified") scene_.pixelSamples = p.getInt("xsamples", 4) * p.getInt("ysamples", 4);
@@ -430,7 +433,7 @@ private:
             warn(where, "lenslab uses its own Owen-scrambled Sobol'/Faure sampler (noise differs, not the image)");
     }
 
-    void integrator(SourceLocation& where, int) {
+    void integrator(SourceLocation& where) {
         const std::string type = typeName(where, "an integrator type");
         const ParamSet p = params(where);
         IntegratorSpec& spec = scene_.integrator;
@@ -467,24 +470,24 @@ private:
     }
 
     // pbrt-v2: without media a volume integrator changes nothing.
-    void volumeIntegrator(SourceLocation& where, int) {
+    void volumeIntegrator(SourceLocation& where) {
         typeName(where, "a volume integrator type");
         params(where);
         warn(where, "ignored (no participating media in lenslab scenes)");
     }
     // pbrt-v2's Renderer: "sampler" is the ordinary one, "metropolis" converges to the same picture.
-    void renderer(SourceLocation& where, int) {
+    void renderer(SourceLocation& where) {
         const std::string type = typeName(where, "a renderer type");
         const ParamSet p = params(where);
         if (type != "sampler" && type != "metropolis")
             p.fail("renderer \"" + type + "\" is not supported (sampler; metropolis renders as the path tracer)");
         if (type == "metropolis") warn(where, "rendered by the path tracer (same picture in the limit, other noise)");
     }
-    void volume(SourceLocation& where, int) {
+    void volume(SourceLocation& where) {
         sceneFail(where, "participating media (Volume \"" + quoted(where, "a volume type") + "\") are not supported: the picture would lack the medium");
     }
 
-    void filter(SourceLocation& where, int) {
+    void filter(SourceLocation& where) {
         const std::string type = typeName(where, "a filter type");
         const ParamSet p = params(where);
         // pbrt-v3's defaults: box 0.5, gaussian/mitchell/triangle 2, sinc 4 pixels.
@@ -511,30 +514,30 @@ private:
 
     // --- the world ----------------------------------------------------------------------------
     MaterialContext materialContext() { return {*g_.textures, namedMaterials_, resolver(), scene_.warnings}; }
-    void material(SourceLocation& where, int) {
+    void material(SourceLocation& where) {
         const std::string type = typeName(where, "a material type");
         g_.material = makeMaterial(type, paramsOf("material", where), materialContext());
     }
-    void makeNamedMaterial(SourceLocation& where, int) {
+    void makeNamedMaterial(SourceLocation& where) {
         const std::string n = typeName(where, "a material name");
         const ParamSet p = paramsOf("material", where);
         if (!p.has("type")) p.fail("MakeNamedMaterial needs \"string type\"");
         namedMaterials_[n] = makeMaterial(p.getString("type", ""), p, materialContext());
     }
-    void namedMaterial(SourceLocation& where, int) {
+    void namedMaterial(SourceLocation& where) {
         const std::string n = quoted(where, "a material name");
         auto it = namedMaterials_.find(n);
         if (it == namedMaterials_.end()) sceneFail(where, "unknown material \"" + n + "\"");
         g_.material = it->second;
     }
-    void textureDirective(SourceLocation& where, int) { texture(where); }
-    void lightSource(SourceLocation& where, int) {
+    void textureDirective(SourceLocation& where) { texture(where); }
+    void lightSource(SourceLocation& where) {
         const std::string type = typeName(where, "a light type");
         scene_.lights.push_back(makeLight(type, paramsOf("light", where), g_.ctm, scene_.dialect, resolver(), scene_.warnings));
         warnIfMoving(where, "a light");
     }
     // pbrt-v3 accepts "area" as another name for "diffuse".
-    void areaLightSource(SourceLocation& where, int) {
+    void areaLightSource(SourceLocation& where) {
         const std::string type = typeName(where, "an area light type");
         if (type != "diffuse" && type != "area") sceneFail(where, "area light \"" + type + "\" is not supported (diffuse)");
         const ParamSet p = paramsOf("light", where);
@@ -556,7 +559,7 @@ private:
         if (p.has("power")) warn(p.where(), "\"power\" of an area light is not applied");
         return AreaEmission{L, p.getBool("twosided", false)};
     }
-    void shapeDirective(SourceLocation& where, int) { shape(where); }
+    void shapeDirective(SourceLocation& where) { shape(where); }
 
     void texture(SourceLocation& where) {
         const std::string n = quoted(where, "a texture name");
@@ -610,7 +613,7 @@ private:
 
     // pbrt-v3: ObjectBegin opens an attribute block that ObjectEnd closes; shapes inside keep the
     // current transform as the object's own space.
-    void objectBegin(SourceLocation& where, int) {
+    void objectBegin(SourceLocation& where) {
         const std::string n = typeName(where, "an object name");
         if (object_) sceneFail(where, "inside the definition of object \"" + scene_.objects[*object_].name + "\" (objects do not nest)");
         stack_.push_back({true, g_, where});
@@ -622,7 +625,7 @@ private:
         scene_.objects.push_back({n, {}});
     }
 
-    void objectEnd(SourceLocation& where, int) {
+    void objectEnd(SourceLocation& where) {
         if (!object_) sceneFail(where, "without a matching ObjectBegin");
         if (stack_.size() != objectDepth_)
             sceneFail(where, "AttributeBegin/AttributeEnd inside object \"" + scene_.objects[*object_].name + "\" do not pair up");
@@ -631,7 +634,7 @@ private:
         object_.reset();
     }
 
-    void objectInstance(SourceLocation& where, int) {
+    void objectInstance(SourceLocation& where) {
         const std::string n = typeName(where, "an object name");
         if (object_) sceneFail(where, "inside the definition of object \"" + scene_.objects[*object_].name + "\"");
         const auto it = objectIndex_.find(n);
@@ -657,7 +660,7 @@ private:
     std::size_t objectDepth_ = 0;                      // stack_ size inside its ObjectBegin block
     SourceLocation objectWhere_;                       // its ObjectBegin
     bool worldBegun_ = false, worldEnded_ = false;
-    std::vector<TokenCursor> files_;  // the file being read and those that Include it
+    TokenCursor in_;
 };
 
 }  // namespace
@@ -671,7 +674,7 @@ SceneDescription parseSceneFile(const std::string& path, const SceneParseOptions
     scene.film.where = {scene.file, 0, "Film (defaults)"};
     scene.camera.params = ParamSet({scene.file, 0, "Camera (default perspective)"}, {});
     Parser parser(scene, options);
-    parser.parseFile(scene.file, 0);
+    parser.parseFile(scene.file);
     parser.finish();
     return scene;
 }

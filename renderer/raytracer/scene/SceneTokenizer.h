@@ -10,6 +10,7 @@ struct Token {
     std::string text;     // without the quotes
     int line = 0;
     bool quoted = false;
+    const std::string* file = nullptr;  // set by TokenCursor::include, which owns the name
 };
 
 // Throws SceneError for an unterminated string (naming file and line).

@@ -6,20 +6,50 @@
 
 namespace lenslab {
 
+SourceLocation locate(const Token& t, const SourceLocation& where) {
+    return {t.file ? *t.file : where.file, t.line, where.directive};
+}
+
 double tokenNumber(const Token& t, const SourceLocation& where) {
-    const SourceLocation at{where.file, t.line, where.directive};
-    if (t.quoted || t.text == "[" || t.text == "]") sceneFail(at, "expected a number, got '" + t.text + "'");
+    if (t.quoted || t.text == "[" || t.text == "]") sceneFail(locate(t, where), "expected a number, got '" + t.text + "'");
     errno = 0;
     char* end = nullptr;
     const double v = std::strtod(t.text.c_str(), &end);
     if (end != t.text.c_str() + t.text.size() || errno == ERANGE || !std::isfinite(v))
-        sceneFail(at, "bad number '" + t.text + "'");
+        sceneFail(locate(t, where), "bad number '" + t.text + "'");
     return v;
+}
+
+void TokenCursor::include(const std::string& file, std::vector<Token> tokens) {
+    names_.push_back(file);
+    for (Token& t : tokens) t.file = &names_.back();
+    if (open_.empty()) mainSize_ = tokens.size();
+    open_.push_back({std::move(tokens)});
+}
+
+bool TokenCursor::atEnd() const {
+    for (const OpenFile& f : open_)
+        if (!f.done()) return false;
+    return true;
+}
+
+const Token& TokenCursor::peek() const {
+    auto f = open_.rbegin();
+    while (f->done()) ++f;
+    return f->tokens[f->pos];
 }
 
 const Token& TokenCursor::take(const SourceLocation& where, const char* what) {
     if (atEnd()) sceneFail(where, std::string("expected ") + what + " but the file ended");
-    return tokens_[pos_++];
+    // Files are closed only here, when the stream moves on past them (see depth()).
+    while (open_.back().done()) open_.pop_back();
+    OpenFile& f = open_.back();
+    return f.tokens[f.pos++];
+}
+
+double TokenCursor::fraction() const {
+    if (mainSize_ == 0) return 1.0;
+    return open_.empty() ? 1.0 : double(open_.front().pos) / double(mainSize_);
 }
 
 double TokenCursor::number(const SourceLocation& where) { return tokenNumber(take(where, "a number"), where); }

@@ -60,6 +60,13 @@ float perlinNoise(Vec3f p) {
     return lerp(wz, y0, y1);
 }
 
+Vec3f perlinNoiseGradient(Vec3f p) {
+    constexpr float kDelta = 0.01f;
+    const float n = perlinNoise(p);
+    return Vec3f{perlinNoise(p + Vec3f{kDelta, 0, 0}) - n, perlinNoise(p + Vec3f{0, kDelta, 0}) - n,
+                 perlinNoise(p + Vec3f{0, 0, kDelta}) - n} / kDelta;
+}
+
 float fractionalBrownianMotion(Vec3f p, float omega, int octaves) {
     float sum = 0, frequency = 1, amplitude = 1;
     for (int i = 0; i < octaves; ++i) {

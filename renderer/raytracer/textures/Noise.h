@@ -8,6 +8,9 @@ namespace lenslab {
 // Perlin's "improved noise" (SIGGRAPH 2002): zero at integer lattice points, roughly in [-1, 1].
 float perlinNoise(Vec3f p);
 
+// The noise's gradient by forward differences over 0.01, as pbrt-v4's DNoise takes it.
+Vec3f perlinNoiseGradient(Vec3f p);
+
 // pbrt-v3 sums octaves until the texture's screen footprint; lenslab traces no ray differentials,
 // so every point gets all `octaves` (what pbrt-v3 does for a zero footprint).
 // sum of omega^i noise(1.99^i p)
