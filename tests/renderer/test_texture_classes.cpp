@@ -2,7 +2,7 @@
 // formulas, checkerboards by parity, noise as pbrt-v3's own code computes it.
 #include <cmath>
 
-#include "textures/Noise.h"
+#include "sampling/Noise.h"
 #include "TextureTests.h"
 
 namespace lenslab {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "textures/Noise.h"
+#include "sampling/Noise.h"
 
 namespace lenslab {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "textures/Noise.h"
+#include "sampling/Noise.h"
 #include "textures/TextureClasses.h"
 #include "textures/TextureMapping.h"
 

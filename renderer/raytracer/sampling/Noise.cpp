@@ -1,4 +1,4 @@
-#include "textures/Noise.h"
+#include "sampling/Noise.h"
 
 #include <cmath>
 #include <cstdint>
