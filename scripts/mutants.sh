@@ -61,6 +61,20 @@ occurrences() { FROM=$2 perl -0777 -ne '$n = () = /\Q$ENV{FROM}\E/g; print $n' "
 # Replaces the one occurrence of $2 in file $1 by $3.
 replace_once() { FROM=$2 TO=$3 perl -0777 -pi -e 's/\Q$ENV{FROM}\E/$ENV{TO}/' "$1"; }
 
+# The original of the mutated file waits in the build folder, so that a run killed outright
+# (SIGKILL) is undone by the next one.
+saved=$build/mutant-original
+restore() {
+    if [ -f "$saved/path" ]; then
+        cp "$saved/file" "$(cat "$saved/path")"
+        rm -rf "$saved"
+    fi
+}
+if [ -f "$saved/path" ]; then
+    echo "restoring $(cat "$saved/path"), left mutated by an earlier run"
+    restore
+fi
+
 # ---- every entry is checked before anything is changed: a stale entry fails loudly
 selected=()
 bad=0
@@ -97,13 +111,6 @@ done
 
 # ---- one mutant at a time; the file is restored whatever happens
 work=$(mktemp -d)
-mutated=""
-restore() {
-    if [ -n "$mutated" ]; then
-        cp "$work/original" "$mutated"
-        mutated=""
-    fi
-}
 finish() {
     restore
     rm -rf "$work"
@@ -117,8 +124,9 @@ survivors=() nocompile=()
 echo "mutation run: ${#selected[@]} mutants from $list"
 for i in "${selected[@]}"; do
     f=${files[$i]}
-    cp "$f" "$work/original"
-    mutated=$f
+    mkdir -p "$saved"
+    cp "$f" "$saved/file"
+    echo "$f" >"$saved/path"
     replace_once "$f" "${froms[$i]}" "${tos[$i]}"
     start=$SECONDS
     if ! cmake --build "$build" -j2 >"$log" 2>&1; then
