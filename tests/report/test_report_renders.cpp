@@ -82,3 +82,10 @@ TEST_F(ReportRenders, TheCacheKeyNamesTheLensModel) {
     EXPECT_NE(exact, thick);
     EXPECT_NE(item("speed/sky/dgauss.50mm/exact/1").hash, item("speed/sky/dgauss.50mm/thick/1").hash);
 }
+
+TEST_F(ReportRenders, KeepTheScenesAspect) {
+    // The report's quick width of 96 pixels and the scene's 48 x 32 film: 64 rows.
+    const ManifestItem& render = item("render/sky/dgauss.50mm/exact");
+    EXPECT_EQ(render.data.at("width").get<int>(), 96);
+    EXPECT_EQ(render.data.at("height").get<int>(), 64);
+}
