@@ -1,6 +1,6 @@
 // The page's HDR arithmetic (web/hdr.js) checked in node against closed forms: the report's
-// normalisation, sRGB encoding through the table, the 99th percentile, the difference's RMSE and
-// worst pixel, the colour scale's ends.
+// normalisation, sRGB encoding and decoding through the tables (each with its own threshold), the
+// 99th percentile, the difference's RMSE and worst pixel, the colour scale's ends.
 // usage: node hdr.test.mjs SOURCE_DIR
 import { join } from "node:path";
 import { pathToFileURL } from "node:url";
@@ -32,6 +32,14 @@ const want = linear.map((v) => (v > 0 ? srgb(Math.min(v, 1)) : 0));
 check(JSON.stringify(got) === JSON.stringify(want), `sRGB encoding: ${got.join(" ")} (over 1 clips, negative and NaN are black)`);
 hdr.exposeInto(rgba, image(1, 1, [0.125, 0.125, 0.125]), 4);
 check(rgba[0] === srgb(0.5) && rgba[3] === 255, "an exposure scale of 4 (two stops) maps 0.125 to 0.5");
+
+// Between the encoding's threshold (linear 0.0031308) and the decoding's (sRGB 0.04045) each
+// direction has its own branch: 41/4096 encodes on the power law, sRGB byte 2 decodes on the line.
+hdr.exposeInto(rgba, image(1, 1, [41 / 4096, 41 / 4096, 41 / 4096]), 1);
+check(rgba[0] === srgb(41 / 4096), `linear ${(41 / 4096).toFixed(5)} encodes on the power law: ${rgba[0]} (want ${srgb(41 / 4096)})`);
+const dark = Uint8ClampedArray.from([2, 2, 2, 255]);
+hdr.exposeSrgbBytes(dark, 4);
+check(Math.abs(dark[0] - srgb((4 * 2) / 255 / 12.92)) <= 1, `sRGB byte 2 decodes on the line, x4: ${dark[0]} (want ${srgb((4 * 2) / 255 / 12.92)})`);
 
 const bytes = Uint8ClampedArray.from([srgb(0.25), srgb(0.25), srgb(0.25), 255]);
 hdr.exposeSrgbBytes(bytes, 2);
