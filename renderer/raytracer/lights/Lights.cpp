@@ -107,6 +107,29 @@ float mapIlluminanceFactor(const ParamSet& p, const LinearImage& map) {
 
 // The lights of pbrt-v4 files: emission read and normalised as pbrt-v4 does (lights/Pbrt4Emission.h),
 // maps as equal-area squares, the spot's smoothstep falloff.
+// A spot light's place, axis and cone, which pbrt-v3 and pbrt-v4 give alike.
+struct SpotPlacement {
+    Vec3f from, axis;
+    float cone, delta;  // degrees
+};
+
+SpotPlacement spotPlacement(const ParamSet& p, const Transform& toWorld) {
+    const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
+    const Vec3f axis = transformVector(toWorld, toL - fromL);
+    if (!(length(axis) > 0)) p.fail("\"from\" and \"to\" must differ");
+    const float cone = float(p.getFloat("coneangle", 30)), delta = float(p.getFloat("conedeltaangle", 5));
+    if (!(cone > 0 && cone <= 180) || !(delta >= 0 && delta <= cone)) p.fail("coneangle must lie in (0, 180] and conedeltaangle in [0, coneangle]");
+    return {transformPoint(toWorld, fromL), normalize(axis), cone, delta};
+}
+
+// The unit direction toward a distant light (from "to" to "from"), alike in both pbrts.
+Vec3f distantDirection(const ParamSet& p, const Transform& toWorld) {
+    const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
+    const Vec3f toward = transformVector(toWorld, fromL - toL);
+    if (!(length(toward) > 0)) p.fail("\"from\" and \"to\" must differ");
+    return normalize(toward);
+}
+
 std::unique_ptr<Light> makePbrt4Light(const std::string& type, const ParamSet& p, const Transform& toWorld,
                                       const PathResolver& resolve, std::vector<std::string>& warnings) {
     const auto image = [&]() -> std::optional<LinearImage> {
@@ -128,22 +151,15 @@ std::unique_ptr<Light> makePbrt4Light(const std::string& type, const ParamSet& p
         return std::make_unique<PointLight>(transformPoint(toWorld, p.getPoint("from", {0, 0, 0})), I);
     }
     if (type == "spot") {
-        const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
-        const Vec3f axis = transformVector(toWorld, toL - fromL);
-        if (!(length(axis) > 0)) p.fail("\"from\" and \"to\" must differ");
-        const float cone = float(p.getFloat("coneangle", 30)), delta = float(p.getFloat("conedeltaangle", 5));
-        if (!(cone > 0 && cone <= 180) || !(delta >= 0 && delta <= cone)) p.fail("coneangle must lie in (0, 180] and conedeltaangle in [0, coneangle]");
-        const float unit = SpotLight::unitPower(std::cos(cone * float(M_PI) / 180), std::cos((cone - delta) * float(M_PI) / 180));
-        return std::make_unique<SpotLight>(transformPoint(toWorld, fromL), normalize(axis),
-                                           pbrt4Emission(p, "I") * pbrt4PowerFactor(p, unit), cone, delta, SceneDialect::PbrtV4);
+        const SpotPlacement s = spotPlacement(p, toWorld);
+        const float unit = SpotLight::unitPower(std::cos(s.cone * float(M_PI) / 180), std::cos((s.cone - s.delta) * float(M_PI) / 180));
+        return std::make_unique<SpotLight>(s.from, s.axis, pbrt4Emission(p, "I") * pbrt4PowerFactor(p, unit), s.cone, s.delta,
+                                           SceneDialect::PbrtV4);
     }
     if (type == "distant") {
-        const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
-        const Vec3f toward = transformVector(toWorld, fromL - toL);
-        if (!(length(toward) > 0)) p.fail("\"from\" and \"to\" must differ");
         const double illuminance = p.getFloat("illuminance", -1);  // on a surface facing the light
         const Vec3f L = pbrt4Emission(p, "L") * (illuminance > 0 ? float(illuminance) : 1.0f);
-        return std::make_unique<DistantLight>(normalize(toward), L);
+        return std::make_unique<DistantLight>(distantDirection(p, toWorld), L);
     }
     if (type == "infinite") {
         noPower();
@@ -190,18 +206,10 @@ std::unique_ptr<Light> makeLight(const std::string& type, const ParamSet& p, con
         const Vec3f from = transformPoint(toWorld, p.getPoint("from", {0, 0, 0}));
         light = std::make_unique<PointLight>(from, scale * p.getRgb("I", {1, 1, 1}));
     } else if (type == "spot") {
-        const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
-        const Vec3f axis = transformVector(toWorld, toL - fromL);
-        if (!(length(axis) > 0)) p.fail("\"from\" and \"to\" must differ");
-        const float cone = float(p.getFloat("coneangle", 30)), delta = float(p.getFloat("conedeltaangle", 5));
-        if (!(cone > 0 && cone <= 180) || !(delta >= 0 && delta <= cone)) p.fail("coneangle must lie in (0, 180] and conedeltaangle in [0, coneangle]");
-        light = std::make_unique<SpotLight>(transformPoint(toWorld, fromL), normalize(axis),
-                                            scale * p.getRgb("I", {1, 1, 1}), cone, delta, SceneDialect::PbrtV3);
+        const SpotPlacement s = spotPlacement(p, toWorld);
+        light = std::make_unique<SpotLight>(s.from, s.axis, scale * p.getRgb("I", {1, 1, 1}), s.cone, s.delta, SceneDialect::PbrtV3);
     } else if (type == "distant") {
-        const Vec3f fromL = p.getPoint("from", {0, 0, 0}), toL = p.getPoint("to", {0, 0, 1});
-        const Vec3f toward = transformVector(toWorld, fromL - toL);
-        if (!(length(toward) > 0)) p.fail("\"from\" and \"to\" must differ");
-        light = std::make_unique<DistantLight>(normalize(toward), scale * p.getRgb("L", {1, 1, 1}));
+        light = std::make_unique<DistantLight>(distantDirection(p, toWorld), scale * p.getRgb("L", {1, 1, 1}));
     } else if (type == "infinite") {
         const Vec3f L = scale * p.getRgb("L", {1, 1, 1});
         if (std::optional<LinearImage> map = image()) {
