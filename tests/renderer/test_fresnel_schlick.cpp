@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "Fresnel.h"
+#include "materials/Fresnel.h"
 
 namespace lenslab {
 namespace {

@@ -2,7 +2,7 @@
 // included file in another folder: a nested Include reaches parts/ from the top, not parts/parts/.
 #include <gtest/gtest.h>
 
-#include "SceneDescription.h"
+#include "scene/SceneDescription.h"
 #include "TestScenes.h"
 
 namespace lenslab {

@@ -2,7 +2,7 @@
 // default: the ray through the middle of that side's edge leaves at 45 degrees to the axis.
 #include <gtest/gtest.h>
 
-#include "CameraFactory.h"
+#include "cameras/CameraFactory.h"
 #include "TestScenes.h"
 
 namespace lenslab {
