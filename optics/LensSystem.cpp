@@ -114,8 +114,12 @@ bool LensSystem::hasMirrors() const {
 double sag(const Surface& s, double h) {
     // Written so that flat surfaces (curvature 0) and huge radii stay exact.
     const double c = s.curvature, rho = h * h;
-    const double u = 1.0 - (1.0 + s.conic) * c * c * rho;
-    if (u < 0) return std::numeric_limits<double>::quiet_NaN();
+    double u = 1.0 - (1.0 + s.conic) * c * c * rho;
+    // At the domain's rim (a hemisphere's edge) rounding may leave u a few ulp below 0.
+    if (u < 0) {
+        if (u < -1e-12) return std::numeric_limits<double>::quiet_NaN();
+        u = 0;
+    }
     double poly = 0;
     for (int i = kAsphericTerms - 1; i >= 0; --i) poly = poly * rho + s.aspheric[i];
     return c * rho / (1.0 + std::sqrt(u)) + poly * rho;

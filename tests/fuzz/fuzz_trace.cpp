@@ -1,5 +1,6 @@
 // libFuzzer target: bytes decoded into a small lens the parser would accept (1-8 surfaces, radii
-// from 1e-3 mm to 1e9 mm or flat, stops from 1 um) plus an f-number, a focus distance and up to 16
+// from 1e-3 mm to 1e9 mm or flat, a third of the curved ones conics with even-asphere terms, stops
+// from 1 um) plus an f-number, a focus distance and up to 16
 // rays, then analyzeLens, traceRay (double and float), traceBatch and traceThick. Refusals must be
 // LensTableError / OpticsError; a ray that passes must come out finite and unit length, a blocked
 // ray must carry its reason and surface; the batch must agree with the scalar trace.
@@ -53,6 +54,14 @@ LensTable decodeTable(FuzzedDataProvider& in) {
             r.index = i + 1 == n || in.ConsumeBool() ? 1.0 : uniform(in, 1.0, 3.0);
             r.diameter = flat ? logUniform(in, 1e-3, 200)
                               : std::min(2 * std::fabs(r.radius), 200.0) * uniform(in, 1e-3, 1.0);
+            // One curved surface in three becomes a conic, with even-asphere terms of a size that
+            // bends the profile by up to about its own sag at the rim.
+            if (!flat && in.ConsumeIntegralInRange(0, 2) == 0) {
+                const double R = std::fabs(r.radius);
+                r.conic = uniform(in, -5, 2);
+                r.aspheric[1] = uniform(in, -1, 1) * 1e-1 / (R * R * R);
+                r.aspheric[2] = uniform(in, -1, 1) * 1e-2 / (R * R * R * R * R);
+            }
         }
         t.rows.push_back(r);
     }

@@ -227,3 +227,11 @@ TEST(Aspheres, AnalysisOfAnAsphericLensIsFinite) {
         EXPECT_TRUE(std::isfinite(v));
     EXPECT_GE(a.focus.raysUsed, 48);  // of 64 rings
 }
+
+TEST(Aspheres, AHemisphereReachesItsRimExactly) {
+    // Diameter 2|R|: at the rim 1 - c^2 h^2 rounds a few ulp below 0; the sag is still R there (a
+    // fuzzer found the NaN this used to give).
+    const LensSystem lens = buildLensSystem(parseLensTable("10 0 1.5 20\n0 5 0 10\n", "hemisphere.dat"));
+    EXPECT_DOUBLE_EQ(sag(lens.surfaces[0], 10), 10);
+    EXPECT_TRUE(std::isnan(sag(lens.surfaces[0], 10.001)));
+}
