@@ -10,45 +10,13 @@
 #include "FirstOrder.h"
 #include "LensAnalysis.h"
 #include "ParaxialYNu.h"
+#include "PrescriptionRows.h"
 #include "RayBatch.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
-
-LensTableRow row(double radius, double gap, double index, double diameter) {
-    LensTableRow r;
-    r.radius = radius;
-    r.gap = gap;
-    r.index = index;
-    r.diameter = diameter;
-    r.line = 1;
-    return r;
-}
-
-LensTableRow stopRow(double gap, double diameter) {
-    LensTableRow r = row(0, gap, 0, diameter);
-    r.stop = true;
-    return r;
-}
-
-LensSystem build(std::vector<LensTableRow> rows) {
-    LensTable t;
-    t.name = "asphere-test";
-    t.layout = TableLayout::GapAfter;
-    for (std::size_t i = 0; i < rows.size(); ++i) rows[i].line = int(i) + 1;
-    t.rows = std::move(rows);
-    return buildLensSystem(t);
-}
-
-// Plano-convex singlet, flat side to the scene: a stop, the flat face, then the convex face leaving
-// the glass (centre of curvature on the scene side: negative radius). Paraxial f = R / (n - 1).
-LensSystem planoConvex(double n, double f, double conic) {
-    const double radius = -(n - 1) * f;
-    LensTableRow back = row(radius, 0, 0, 0.8 * std::fabs(radius));
-    back.conic = conic;
-    return build({stopRow(1, 0.8 * std::fabs(radius)), row(0, 8, n, 0.8 * std::fabs(radius)), back});
-}
 
 // RMS distance from the axis, on the plane z, of a collimated on-axis bundle filling `radius`.
 double rmsSpotOnAxis(const LensSystem& lens, double radius, double z) {
@@ -73,7 +41,7 @@ LensSystem asphericLens() {
     LensTableRow front = row(40, 6, 1.6, 30);
     front.conic = -0.8;
     front.aspheric = {0, -2e-5, 3e-8, -1e-11, 0, 0, 0, 0};
-    return build({front, row(-120, 2, 0, 30), stopRow(30, 20)});
+    return buildRows({front, row(-120, 2, 0, 30), stopRow(30, 20)});
 }
 
 Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
@@ -194,9 +162,9 @@ TEST(Aspheres, ParaxialDataSeeOnlyTheVertexCurvature) {
     // An r^2 term is a curvature: a sphere of c + 2 a2 has the same first order; higher terms none.
     LensTableRow front = row(60, 5, 1.7, 30);
     front.aspheric = {1.0 / 400, 4e-6, -1e-8, 0, 0, 0, 0, 0};
-    const LensSystem asphere = build({front, row(-80, 2, 0, 30), stopRow(30, 20)});
+    const LensSystem asphere = buildRows({front, row(-80, 2, 0, 30), stopRow(30, 20)});
     const double c = 1.0 / 60 + 2.0 / 400;
-    const LensSystem twin = build({row(1 / c, 5, 1.7, 30), row(-80, 2, 0, 30), stopRow(30, 20)});
+    const LensSystem twin = buildRows({row(1 / c, 5, 1.7, 30), row(-80, 2, 0, 30), stopRow(30, 20)});
     const FirstOrder a = computeFirstOrder(asphere), b = computeFirstOrder(twin);
     EXPECT_NEAR(a.efl, b.efl, 1e-8);
     EXPECT_NEAR(a.zFPrime, b.zFPrime, 1e-8);
@@ -212,7 +180,7 @@ TEST(Aspheres, ApertureBeyondTheConicsDomainIsRefusedNamingTheSurface) {
     LensTableRow front = row(20, 5, 1.5, 34);
     front.conic = 0.5;
     try {
-        build({front, row(0, 2, 0, 34), stopRow(10, 10)});
+        buildRows({front, row(0, 2, 0, 34), stopRow(10, 10)});
         FAIL() << "accepted a clear aperture past the conic's edge";
     } catch (const LensTableError& e) {
         EXPECT_EQ(e.line(), 1);
@@ -234,4 +202,17 @@ TEST(Aspheres, AHemisphereReachesItsRimExactly) {
     const LensSystem lens = buildLensSystem(parseLensTable("10 0 1.5 20\n0 5 0 10\n", "hemisphere.dat"));
     EXPECT_DOUBLE_EQ(sag(lens.surfaces[0], 10), 10);
     EXPECT_TRUE(std::isnan(sag(lens.surfaces[0], 10.001)));
+}
+
+TEST(Aspheres, NewtonStartsOnTheVertexPlaneWhereTheBaseConicIsMissed) {
+    // A ray parallel to the axis 20 mm out misses the base sphere of radius 10; Newton then starts
+    // where the ray crosses the vertex plane: 5 mm ahead of a start 5 mm in front of it.
+    SurfaceConstants<double> s;
+    s.curvature = 0.1;
+    s.radius = 10;
+    s.asphericTerms = 2;
+    s.aspheric[1] = 1e-4;
+    EXPECT_DOUBLE_EQ(asphereStart(20.0, 0.0, 5.0, 0.0, 0.0, -1.0, s), 5.0);
+    // Where the conic is hit, the start is that hit: on axis, the vertex itself.
+    EXPECT_DOUBLE_EQ(asphereStart(0.0, 0.0, 5.0, 0.0, 0.0, -1.0, s), 5.0);
 }

@@ -13,44 +13,14 @@
 #include "LensDesignAnalysis.h"
 #include "Medium.h"
 #include "OpticsError.h"
+#include "PrescriptionRows.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-LensTableRow row(double radius, double gap, double index, double diameter) {
-    LensTableRow r;
-    r.radius = radius;
-    r.gap = gap;
-    r.index = index;
-    r.diameter = diameter;
-    return r;
-}
-
-LensTableRow stopRow(double gap, double diameter) {
-    LensTableRow r = row(0, gap, 0, diameter);
-    r.stop = true;
-    return r;
-}
-
-LensSystem build(std::vector<LensTableRow> rows) {
-    LensTable t;
-    t.name = "design-analysis-test";
-    t.layout = TableLayout::GapAfter;
-    for (std::size_t i = 0; i < rows.size(); ++i) rows[i].line = int(i) + 1;
-    t.rows = std::move(rows);
-    return buildLensSystem(t);
-}
-
-// Stop, flat face, convex face leaving the glass (f = R / (n - 1)); conic -n^2 makes it perfect on axis.
-LensSystem planoConvex(double n, double f, double conic) {
-    const double radius = -(n - 1) * f, diameter = 0.8 * std::fabs(radius);
-    LensTableRow back = row(radius, 0, 0, diameter);
-    back.conic = conic;
-    return build({stopRow(1, diameter), row(0, 8, n, diameter), back});
-}
 
 DesignAnalysisInputs onAxisAt(double fstop, double wavelength) {
     DesignAnalysisInputs in;
@@ -180,7 +150,7 @@ TEST(DesignAnalysis, ChromaticFocalShiftOfAModelGlassSingletFollowsTheLensMakers
     const double nd = 1.5168, vd = 64.17, fd = 100, t = 4, R = (nd - 1) * fd;
     LensTableRow glass = row(R, t, nd, 30);
     glass.abbe = vd;
-    const LensSystem lens = build({stopRow(1, 20), glass, row(0, 0, 0, 30)});
+    const LensSystem lens = buildRows({stopRow(1, 20), glass, row(0, 0, 0, 30)});
     DesignAnalysisInputs in = onAxisAt(8, kWavelengthD);
     in.wavelengths = {kWavelengthF, kWavelengthD, kWavelengthC, 400, 700};
     const LensDesignAnalysis a = analyzeLensDesign(lens, in);
