@@ -7,24 +7,15 @@
 #include <memory>
 #include <thread>
 
-#include "RawConnection.h"
-#include "ServerProcess.h"
+#include "RawServerTest.h"
 
 using namespace lenslab::test;
 using nlohmann::json;
 
 namespace {
 
-class ServerHttpDetails : public ::testing::Test {
+class ServerHttpDetails : public RawServerTest {
 protected:
-    void start(const std::vector<std::string>& args = {}) {
-        server_ = std::make_unique<ServerProcess>(binaryUnderTest(), data_.path() + "/data", args);
-    }
-    std::string exchange(const std::string& request, double seconds = 5) {
-        RawConnection connection(server_->port());
-        connection.send(request);
-        return connection.readReply(seconds);
-    }
     static std::string bodyOf(const std::string& reply) {
         const std::size_t end = reply.find("\r\n\r\n");
         return end == std::string::npos ? "" : reply.substr(end + 4);
@@ -36,9 +27,6 @@ protected:
     static std::string get(const std::string& path, const std::string& headers = "") {
         return "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1\r\n" + headers + "\r\n";
     }
-
-    TempDir data_;
-    std::unique_ptr<ServerProcess> server_;
 };
 
 }  // namespace

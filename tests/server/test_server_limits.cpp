@@ -8,8 +8,7 @@
 #include <memory>
 #include <thread>
 
-#include "RawConnection.h"
-#include "ServerProcess.h"
+#include "RawServerTest.h"
 
 using namespace lenslab::test;
 using nlohmann::json;
@@ -38,21 +37,7 @@ std::string chunked(const std::string& body, std::size_t chunk) {
     return out + "0\r\n\r\n";
 }
 
-class ServerLimits : public ::testing::Test {
-protected:
-    void start(const std::vector<std::string>& args = {}) {
-        server_ = std::make_unique<ServerProcess>(binaryUnderTest(), data_.path() + "/data", args);
-    }
-    // Sends `request` on a fresh connection and returns the raw reply.
-    std::string exchange(const std::string& request, double seconds = 5) {
-        RawConnection connection(server_->port());
-        connection.send(request);
-        return connection.readReply(seconds);
-    }
-
-    TempDir data_;
-    std::unique_ptr<ServerProcess> server_;
-};
+class ServerLimits : public RawServerTest {};
 
 }  // namespace
 
