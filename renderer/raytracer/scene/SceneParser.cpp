@@ -297,7 +297,7 @@ private:
         const std::string target = typeName(where, "shape, light, material, medium or texture");
         const ParamSet p = params(where);
         if (target == "medium") {
-            warn(where, "ignored (no participating media in lenslab scenes)");
+            warn(where, "ignored (medium parameter defaults are not applied: give each MakeNamedMedium its parameters)");
             return;
         }
         if (target != "shape" && target != "light" && target != "material" && target != "texture")
@@ -469,11 +469,11 @@ private:
                                          "imagewritefrequency", "samples", "maxdistance", "cossample", "regularize"});
     }
 
-    // pbrt-v2: without media a volume integrator changes nothing.
+    // pbrt-v2: its volumes are refused (Volume), so its volume integrator has nothing to do.
     void volumeIntegrator(SourceLocation& where) {
         typeName(where, "a volume integrator type");
         params(where);
-        warn(where, "ignored (no participating media in lenslab scenes)");
+        warn(where, "ignored (pbrt-v2 volumes are not read; pbrt-v3's media render with volpath)");
     }
     // pbrt-v2's Renderer: "sampler" is the ordinary one, "metropolis" converges to the same picture.
     void renderer(SourceLocation& where) {
