@@ -6,10 +6,10 @@
 // shown) on a 22-surface lens and prints it with the load (a timing is reported, not asserted).
 // Screenshot: docs/web-editor.png.
 // usage: node editor.test.mjs LENSLAB_BINARY SOURCE_DIR
-import { mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { mkdtempSync, readFileSync } from "node:fs";
 import { cpus, loadavg, tmpdir } from "node:os";
 import { join } from "node:path";
-import { launchBrowser, startServer, stopServer } from "./serve.mjs";
+import { launchBrowser, startServer, closeAll } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -182,9 +182,7 @@ async function main() {
     await page.waitForTimeout(300);
     await (await page.$("#lens-view")).screenshot({ path: join(sourceDir, "docs", "web-editor.png") });
   } finally {
-    await context.close();
-    await stopServer(server);
-    rmSync(work, { recursive: true, force: true });
+    await closeAll(context, server, work);
   }
 }
 

@@ -5,11 +5,11 @@
 // at 1280x800 and on a 390-wide phone, the report build, and deleting a render.
 // Screenshots go to tests/browser/artifacts/.
 // usage: node page.test.mjs LENSLAB_BINARY SOURCE_DIR
-import { mkdtempSync, mkdirSync, rmSync, copyFileSync } from "node:fs";
+import { mkdtempSync, mkdirSync, copyFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, dirname } from "node:path";
 import { fileURLToPath } from "node:url";
-import { launchBrowser, startServer, stopServer } from "./serve.mjs";
+import { launchBrowser, startServer, closeAll } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -320,9 +320,7 @@ async function main() {
     console.error("page errors:", pageErrors.join("; ") || "none");
     throw e;
   } finally {
-    await context.close();
-    await stopServer(server);
-    rmSync(work, { recursive: true, force: true });
+    await closeAll(context, server, work);
   }
 }
 

@@ -1,7 +1,7 @@
 // Starts `lenslab serve` on a free loopback port with a fresh data folder under `work`, and headless
 // Chromium (Debian's /usr/bin/chromium) with a throw-away profile; shared by the browser scripts.
 import { spawn } from "node:child_process";
-import { mkdtempSync } from "node:fs";
+import { mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
@@ -28,6 +28,13 @@ export async function stopServer(server) {
   const exited = new Promise((resolve) => server.once("exit", resolve));
   server.kill("SIGTERM");
   await Promise.race([exited, new Promise((resolve) => setTimeout(resolve, 10000))]);
+}
+
+// The end of a page test: the browser, the server and the test's scratch folder, all gone.
+export async function closeAll(context, server, work) {
+  await context.close();
+  await stopServer(server);
+  rmSync(work, { recursive: true, force: true });
 }
 
 export function launchBrowser(viewport) {

@@ -4,11 +4,11 @@
 // upload succeeds, the token is kept for the tab (sessionStorage) and not in localStorage.
 // A screenshot of the header with the refusal goes to tests/browser/artifacts/token-refused.png.
 // usage: node token.test.mjs LENSLAB_BINARY SOURCE_DIR
-import { copyFileSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
+import { copyFileSync, mkdirSync, mkdtempSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { launchBrowser, startServer, stopServer } from "./serve.mjs";
+import { launchBrowser, startServer, closeAll } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -73,9 +73,7 @@ async function main() {
     await page.waitForSelector("body[data-ready]");
     check((await page.inputValue("#token-input")) === token, "and is still there after a reload of the tab");
   } finally {
-    await context.close();
-    await stopServer(server);
-    rmSync(work, { recursive: true, force: true });
+    await closeAll(context, server, work);
   }
 }
 

@@ -4,11 +4,11 @@
 // colour fans (F, d, C) appear when the box is ticked. A wavelength outside 360-830 nm is marked in
 // its field and never sent. Screenshot: tests/browser/artifacts/zemax-lens.png.
 // usage: node zemax.test.mjs LENSLAB_BINARY SOURCE_DIR
-import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { launchBrowser, startServer, stopServer } from "./serve.mjs";
+import { launchBrowser, startServer, closeAll } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -98,9 +98,7 @@ async function main() {
     check((await page.textContent("#lens-colour tbody")).includes("486.13 nm"), "the data stay those of the last valid wavelength");
     await page.screenshot({ path: join(artifacts, "zemax-lens.png"), fullPage: true });
   } finally {
-    await context.close();
-    await stopServer(server);
-    rmSync(work, { recursive: true, force: true });
+    await closeAll(context, server, work);
   }
 }
 
