@@ -84,6 +84,12 @@ RenderOutput renderScene(const RenderSettings& settings,
                          const std::function<void(const TileUpdate&, const Image&)>& onTile = {},
                          const std::atomic<bool>* cancel = nullptr);
 
+// The checks of the scene's camera and the settings' overrides that renderScene makes before its
+// setup (the options block read, a realistic camera's lens, aperture and focus checked; the world
+// not loaded): throws the SceneError renderScene would, in milliseconds, so a request can be
+// refused before it is queued.
+void checkRenderSettings(const RenderSettings& settings);
+
 // PNG: sRGB tone-mapped with an exposure scale. EXR: linear float RGB, tiled, metadata in the header.
 std::vector<std::uint8_t> encodePng(const Image& image, double exposure = 1.0);
 std::vector<std::uint8_t> encodeExr(const RenderOutput& output);

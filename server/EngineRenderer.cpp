@@ -1,23 +1,12 @@
 #include "EngineRenderer.h"
 
+#include "RenderJobResolver.h"
+
 namespace lenslab {
 
 RenderedImages EngineRenderer::render(const RenderJobInput& job, const TileCallback& onTile,
                                       const std::atomic<bool>& cancel) {
-    RenderSettings settings;
-    settings.scenePath = job.scenePath;
-    settings.confined = true;
-    settings.camera.lensFile = job.lensPath;
-    settings.camera.lensLayout = job.lensLayout;
-    const LensSettings lens = lensSettings(job.request);
-    settings.camera.fstop = lens.fstop;
-    settings.camera.focusDistance = lens.focusDistance;
-    settings.camera.filmDiagonal = job.request.filmDiagonal;
-    settings.camera.mode = job.request.mode;
-    settings.camera.spectral = job.request.spectral;
-    settings.spp = job.request.spp;
-    settings.width = job.request.width;
-    settings.height = job.request.height;
+    RenderSettings settings = renderSettings(job);
     settings.threads = threads_;
     const RenderOutput output = renderScene(settings, onTile, &cancel);
     RenderedImages images;

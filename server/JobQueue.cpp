@@ -7,23 +7,13 @@
 #include <iostream>
 
 #include "AtomicFile.h"
+#include "RenderJobResolver.h"
 #include "StorageError.h"
 #include "WallClock.h"
 
 namespace lenslab {
 
 namespace {
-
-// A failed job's message as the client may see it: the scene and lens named by their file names,
-// never by where they lie on the server ("/srv/lenslab/scenes/cornell.pbrt:5" -> "cornell.pbrt:5").
-std::string withoutServerPaths(std::string message, const RenderJobInput& job) {
-    for (const std::string& path : {job.scenePath, job.lensPath}) {
-        if (path.empty()) continue;
-        const std::string folder = std::filesystem::path(path).parent_path().string() + "/";
-        for (std::size_t at; folder.size() > 1 && (at = message.find(folder)) != std::string::npos;) message.erase(at, folder.size());
-    }
-    return message;
-}
 
 // A worker thread must outlive a full or read-only disk: a record that cannot be saved is logged
 // and the job goes on in memory. Returns why it was not saved, in the client's words, or nullopt.

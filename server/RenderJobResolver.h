@@ -1,17 +1,27 @@
 #pragma once
 // Turns a render request into a job the renderer can run: the scene and lens ids resolved inside
-// their folders, and the lens checked against the requested f-number and focus distance.
+// their folders, and the request checked with the scene's own camera settings before it is queued.
 #include <string>
 
 #include "LensStore.h"
 #include "RenderRequest.h"
 #include "JobRenderer.h"
+#include "Render.h"
 #include "SceneCatalog.h"
 
 namespace lenslab {
 
-// HttpError 400 for an unknown scene or lens; OpticsError when the lens cannot be set that way.
+// HttpError 400 for an unknown scene or lens; OpticsError when the lens cannot be set as the
+// request asks; HttpError 422 when the scene's own settings (its f-number, focus, film) do not fit
+// the lens, or its camera takes no lens, as the render would fail.
 RenderJobInput resolveRenderJob(const std::string& jobId, const RenderRequest& request, const LensStore& lenses,
                                 const SceneCatalog& scenes);
+
+// The renderer's settings for a job (all but the thread count).
+RenderSettings renderSettings(const RenderJobInput& job);
+
+// A message about a job as the client may see it: the scene and lens named by their file names,
+// never by where they lie on the server ("/srv/lenslab/scenes/cornell.pbrt:5" -> "cornell.pbrt:5").
+std::string withoutServerPaths(std::string message, const RenderJobInput& job);
 
 }  // namespace lenslab

@@ -216,6 +216,52 @@ TEST(CameraGenerations, ContradictingParametersAreAnErrorNamingBoth) {
     check("\"string specfile\" " + lens + " \"float filmdiagonal\" 35 \"float filmdiag\" 43", "filmdiagonal", "filmdiag");
 }
 
+// checkRenderSettings refuses what the render would refuse, with the render's message, without
+// reading the world (here a mesh that does not exist) or measuring the exit pupil.
+TEST(CameraGenerations, TheSettingsCheckRefusesWhatTheRenderRefusesWithoutTheWorld) {
+    test::TempDir dir;
+    const std::string world = "WorldBegin\nShape \"plymesh\" \"string filename\" \"absent.ply\"\nWorldEnd\n";
+    const auto check = [&](const std::string& camera, const CameraOverrides& o) -> std::string {
+        RenderSettings s;
+        s.scenePath = dir.write("s.pbrt", "Scale 1000 1000 1000\n" + camera + "\n" + world);
+        s.camera = o;
+        try {
+            checkRenderSettings(s);
+        } catch (const SceneError& e) {
+            const std::string message = e.what();
+            s.scenePath = dir.write("s.pbrt", "Scale 1000 1000 1000\n" + camera + "\n" + kWorld);
+            try {  // the render, with a world, says the same
+                test::render(s.scenePath, 8, 8, 1, s);
+                ADD_FAILURE() << "the render accepted what the check refused: " << message;
+            } catch (const SceneError& r) {
+                EXPECT_EQ(std::string(r.what()), message);
+            }
+            return message;
+        }
+        return "(no error)";
+    };
+    const std::string lens = "\"" + test::lensPath("telephoto.250mm.dat") + "\"";
+    EXPECT_EQ(check("Camera \"realistic\" \"string specfile\" " + lens + " \"float fstop\" 8", {}), "(no error)");
+    const std::string wide = check("Camera \"realistic\" \"string specfile\" " + lens + " \"float fstop\" 2.1", {});
+    EXPECT_NE(wide.find("s.pbrt:2: Camera \"realistic\": fstop: f-number 2.1 is outside this lens's range f/5.59 to f/64"),
+              std::string::npos) << wide;
+    // The scene's f-number, fine for its own lens, checked against the lens that replaces it.
+    CameraOverrides other;
+    other.lensFile = test::lensPath("telephoto.250mm.dat");
+    const std::string replaced =
+        check("Camera \"realistic\" \"string specfile\" \"" + test::lensPath("dgauss.50mm.dat") + "\" \"float fstop\" 2.1", other);
+    EXPECT_NE(replaced.find("fstop: f-number 2.1 is outside"), std::string::npos) << replaced;
+    other.fstop = Setting{8, "field fstop"};
+    EXPECT_EQ(check("Camera \"realistic\" \"string specfile\" \"" + test::lensPath("dgauss.50mm.dat") + "\" \"float fstop\" 2.1",
+                    other),
+              "(no error)");
+    // Lens overrides on a camera without a lens, and a too-near focus.
+    EXPECT_NE(check("Camera \"perspective\"", other).find("need a Camera \"realistic\""), std::string::npos);
+    const std::string near =
+        check("Camera \"realistic\" \"string specfile\" " + lens + " \"float fstop\" 8 \"float focaldistance\" 20", {});
+    EXPECT_NE(near.find("s.pbrt:2: Camera \"realistic\": focaldistance"), std::string::npos) << near;
+}
+
 TEST(CameraGenerations, ALensFileIsResolvedFromTheSceneFolderAndNeverLookedUpElsewhere) {
     test::TempDir dir;
     // dgauss.dat is a bundled lens, but not in this scene's folder: an error naming the path tried.

@@ -329,6 +329,19 @@ TEST_F(ServerApi, RenderSettingsOutsideTheLensNameTheirField) {
     const Reply close = postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"focaldistance", 10}});
     EXPECT_EQ(close.status, 422) << close.raw;
     EXPECT_EQ(close.body["error"].get<std::string>().rfind("field focaldistance: ", 0), 0u) << close.raw;
+    // The scene's own f-number (depth-of-field.pbrt: f/2.1) through a lens that cannot open so wide:
+    // refused at submit, naming the scene's line and not the server's folders, not queued to fail.
+    const Reply sceneWide = postJson(c, "/api/renders", {{"scene", "depth-of-field"}, {"lens", "telephoto.250mm"}});
+    EXPECT_EQ(sceneWide.status, 422) << sceneWide.raw;
+    EXPECT_EQ(sceneWide.body["error"].get<std::string>().rfind(
+                  "depth-of-field.pbrt:7: Camera \"realistic\": fstop: f-number 2.1 is outside this lens's range f/5.59", 0),
+              0u)
+        << sceneWide.raw;
+    EXPECT_EQ(get(c, "/api/renders").body["renders"].size(), 0u);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"scene", "depth-of-field"}, {"lens", "telephoto.250mm"}, {"fstop", 8},
+                                           {"spp", 1}, {"width", 16}, {"height", 16}})
+                  .status,
+              202);
     // The lens's own f-number range, as the API reports it, ends at the documented f/64.
     EXPECT_EQ(get(c, "/api/lenses/dgauss.50mm").body["fstop_max"], 64);
 }

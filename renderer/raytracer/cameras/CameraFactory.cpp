@@ -72,8 +72,9 @@ ApertureShape apertureShape(const SceneDescription& scene, const ParamSet& p) {
     }
 }
 
-std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverrides& o, const Transform& cameraToWorld,
-                                      int width, int height, double margin, const std::atomic<bool>* cancel) {
+// Everything the realistic camera's Camera directive and the overrides say, the lens read; nothing
+// measured yet (the exit pupil's setup is the camera's own).
+RealisticParams readRealisticParams(SceneDescription& scene, const CameraOverrides& o) {
     const ParamSet& p = scene.camera.params;
     refuseSynonyms(p, {"specfile", "lensfile"}, "the lens table");
     refuseSynonyms(p, {"fstop", "aperture_diameter", "aperturediameter"}, "the aperture");
@@ -160,7 +161,13 @@ std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverr
     }
     r.aperture = apertureShape(scene, p);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
-    return atCamera(p, [&]() -> std::unique_ptr<Camera> {
+    return r;
+}
+
+std::unique_ptr<Camera> makeRealistic(SceneDescription& scene, const CameraOverrides& o, const Transform& cameraToWorld,
+                                      int width, int height, double margin, const std::atomic<bool>* cancel) {
+    const RealisticParams r = readRealisticParams(scene, o);
+    return atCamera(scene.camera.params, [&]() -> std::unique_ptr<Camera> {
         return std::make_unique<RealisticCamera>(r, cameraToWorld, width, height, margin, cancel);
     });
 }
@@ -211,6 +218,15 @@ std::unique_ptr<Camera> makePlacedCamera(SceneDescription& scene, const CameraOv
 }
 
 }  // namespace
+
+void checkCameraSettings(SceneDescription& scene, const CameraOverrides& overrides) {
+    if (scene.camera.type != "realistic") {
+        makePlacedCamera(scene, overrides, Transform{}, 1, 1, 0, nullptr);
+        return;
+    }
+    const RealisticParams r = readRealisticParams(scene, overrides);
+    atCamera(scene.camera.params, [&] { return analyzeLens(r.lens, r.settings); });
+}
 
 std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverrides& o, int width, int height,
                                    double filmMarginPixels, const std::atomic<bool>* cancel) {

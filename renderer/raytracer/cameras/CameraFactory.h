@@ -16,4 +16,9 @@ namespace lenslab {
 std::unique_ptr<Camera> makeCamera(SceneDescription& scene, const CameraOverrides& overrides, int width, int height,
                                    double filmMarginPixels, const std::atomic<bool>* cancel = nullptr);
 
+// The checks makeCamera makes of the scene's camera and the overrides, without its setup (a realistic
+// camera's lens is read and its aperture and focus checked; the exit pupil is not measured): the same
+// SceneError makeCamera would throw, in milliseconds.
+void checkCameraSettings(SceneDescription& scene, const CameraOverrides& overrides);
+
 }  // namespace lenslab

@@ -104,6 +104,7 @@ struct SceneDescription {
 struct SceneParseOptions {
     bool confined = false;                        // refuse files outside the scene's folder tree
     std::function<void(double fraction)> progress; // called as the main file is read, 0 to 1
+    bool optionsOnly = false;  // stop at WorldBegin: the camera, film and sampler without the world
 };
 
 // Reads a pbrt-v3 scene. Throws SceneError naming the file, line and directive for anything whose

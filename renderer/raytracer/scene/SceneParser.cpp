@@ -79,7 +79,7 @@ public:
         std::vector<Token> tokens = readTokens(path);
         scene_.dialect = detectDialect(tokens);
         in_.include(path, std::move(tokens));
-        while (!in_.atEnd()) {
+        while (!in_.atEnd() && !(options_.optionsOnly && worldBegun_)) {
             directive();
             if (options_.progress) options_.progress(in_.fraction());
         }

@@ -1,0 +1,16 @@
+// checkRenderSettings: the camera's checks of renderScene, on the scene's options block alone.
+#include "Render.h"
+#include "cameras/CameraFactory.h"
+#include "scene/SceneDescription.h"
+
+namespace lenslab {
+
+void checkRenderSettings(const RenderSettings& settings) {
+    SceneParseOptions options;
+    options.confined = settings.confined;
+    options.optionsOnly = true;
+    SceneDescription scene = parseSceneFile(settings.scenePath, options);
+    checkCameraSettings(scene, settings.camera);
+}
+
+}  // namespace lenslab
