@@ -27,7 +27,8 @@ int runReportCommand(const std::vector<std::string>& args) {
     ArgParser p("report", "-o DIR [--spp N] [--width N] [--lenses ID,FILE,...] [--quick] [--fstop N] [--focus MM|inf]",
                 "Writes the report web page into DIR: index.html, style.css and assets/, relative links only,\n"
                 "readable from the file system or served. Per lens: the first-order table, diagrams (exact,\n"
-                "thick, overlay), thick-lens error, relative illumination and distortion plots; per scene with\n"
+                "thick, overlay), thick-lens error, relative illumination and distortion plots, the lens designer's\n"
+                "analysis (spot diagrams, MTF, ray fans, field curvature, distortion, chromatic focal shift); per scene with\n"
                 "a realistic camera: renders through the common-scale lenses, accurate against approximate.\n"
                 "Items whose inputs did not change since the last build into DIR are reused (DIR/manifest.json).");
     p.option("-o", "DIR", "output folder (created if needed)");

@@ -147,7 +147,7 @@ ReportSummary buildReport(const ReportOptions& options, const std::function<void
     for (const SceneSource& s : scenes) realisticScenes += s.realisticCamera;
     const bool speed = realisticScenes > 0 && !renderIds.empty();
     const bool chart = std::any_of(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kColourChartSceneId; });
-    const int total = (chart ? 6 : 4) * static_cast<int>(lensSources.size()) + 3 * realisticScenes * static_cast<int>(renderIds.size()) +
+    const int total = (chart ? 7 : 5) * static_cast<int>(lensSources.size()) + 3 * realisticScenes * static_cast<int>(renderIds.size()) +
                       (speed ? 2 * static_cast<int>(plan.speedSpps.size()) : 0) + 1;
 
     ReportSummary summary;

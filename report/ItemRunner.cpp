@@ -82,6 +82,7 @@ InputsHash itemInputs(const std::string& kind, const CodeDigests& code) {
     // The parts whose code makes each kind of item (and the report's own, which lays them out).
     static const std::map<std::string, std::vector<CodePart>> kMadeBy = {
         {"lens", {CodePart::Optics, CodePart::Formats}},
+        {"analysis", {CodePart::Optics, CodePart::Formats}},
         {"diagram", {CodePart::Optics, CodePart::Image, CodePart::Diagram}},
         {"render", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}},
         {"difference", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}},

@@ -2,13 +2,18 @@
 
 #include <exception>
 
+#include "AnalysisJson.h"
+#include "AnalysisPlots.h"
 #include "Focus.h"
+#include "LensDesignAnalysis.h"
 #include "LensDiagram.h"
 #include "SiteFiles.h"
 
 namespace lenslab {
 
 namespace {
+
+using nlohmann::json;
 
 // The report's one setting for every lens's tables and diagrams (the report command's flags).
 // Without --focus a lens that cannot focus as close as the default (a 500 mm reflex lens at 2 m)
@@ -29,6 +34,40 @@ LensSettings tableSettings(const ReportOptions& o, const std::string& path) {
     }
     s.focusDistance = Setting{focus, o.focusGiven ? "report --focus" : "report's default focus"};
     return s;
+}
+
+// lenslab analyze's plots and data for the lens at the tables' settings, cached like the tables.
+DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const std::string& path, const LensSettings& settings,
+                             const ReportOptions& o) {
+    DesignPlots design;
+    const std::string label = "analysis " + id;
+    InputsHash h = itemInputs("analysis");
+    h.addFile(path).add(o.fstop.value_or(0)).add(o.focusDistance);
+    const std::string folder = "assets/lenses/" + id + "-analysis/";
+    const ManifestItem* item = runner.run("analysis/" + id, label, h.hex(), [&] {
+        DesignAnalysisInputs inputs;
+        inputs.lens = settings;
+        const LensDesignAnalysis a = analyzeLensDesign(loadLensSystem(path), inputs);
+        ManifestItem m;
+        m.data = {{"fstop", a.lens.fstop}, {"fields_deg", json::array()}};
+        for (const FieldAnalysis& f : a.fields) m.data["fields_deg"].push_back(f.fieldDegrees);
+        m.files.push_back(folder + "analysis.json");
+        writeSiteFile(runner.site(), m.files.back(), designAnalysisJson(a).dump(1) + "\n");
+        for (const NamedSvg& plot : designAnalysisPlots(a)) {
+            m.files.push_back(folder + plot.name + ".svg");
+            writeSiteFile(runner.site(), m.files.back(), plot.svg + "\n");
+        }
+        return m;
+    });
+    if (!item) {
+        design.problem = "the lens designer's analysis failed (see the problems list)";
+        return design;
+    }
+    design.jsonFile = item->files.front();
+    design.plots.assign(item->files.begin() + 1, item->files.end());
+    design.fstop = item->data.value("fstop", 0.0);
+    design.fieldsDegrees = item->data.value("fields_deg", std::vector<double>{});
+    return design;
 }
 
 }  // namespace
@@ -82,6 +121,8 @@ LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::s
         if (item) entry.diagrams.push_back({mode, image, d.width, d.height});
         else entry.problem = "a diagram could not be drawn (see the problems list)";
     }
+    if (entry.facts.error.empty()) entry.design = buildDesignPlots(runner, id, path, settings, o);
+    else runner.skip("analysis " + id);
     return entry;
 }
 

@@ -33,9 +33,20 @@ struct ColourFringes {
     std::string problem;  // why they are missing
 };
 
+// The lens designer's analysis at the report's settings (lenslab analyze's defaults: F, d, C at
+// fields 0, 0.7, 1): its plots as SVG files and the data as JSON.
+struct DesignPlots {
+    std::vector<std::string> plots;  // SVG files relative to the site folder, in designAnalysisPlots' order
+    std::string jsonFile;
+    double fstop = 0;
+    std::vector<double> fieldsDegrees;  // the spot, MTF and fan plots' fields, in order
+    std::string problem;                // why they are missing
+};
+
 struct LensEntry {
     LensFacts facts;
     std::vector<DiagramImage> diagrams;
+    DesignPlots design;
     std::string jsonFile;  // the table's JSON, as `lenslab lens --json` prints it
     std::string problem;   // a diagram that could not be drawn
     std::optional<ColourFringes> colourFringes;  // dispersive lenses, when the chart scene exists

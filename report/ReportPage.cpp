@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 
@@ -188,6 +189,47 @@ void colourFringes(std::ostringstream& out, const LensFacts& f, const ColourFrin
         << formatFixed(c.rgb.renderSeconds, 2) << " s RGB.</p>\n</section>\n";
 }
 
+// What one of designAnalysisPlots' files shows, from its name ("spot-field-2", "distortion", ...).
+std::string designCaption(const std::string& file, const DesignPlots& d) {
+    const std::string name = std::filesystem::path(file).stem().string();
+    const auto field = [&](const std::string& prefix) -> std::string {
+        const std::size_t i = std::stoul(name.substr(prefix.size())) - 1;
+        return i < d.fieldsDegrees.size() ? formatFixed(d.fieldsDegrees[i], 1) + "\u00b0" : "?";
+    };
+    if (name.rfind("spot-field-", 0) == 0)
+        return "Spot diagram at " + field("spot-field-") + " (F, d, C): ray hits on the film plane around the d chief ray.";
+    if (name.rfind("mtf-field-", 0) == 0)
+        return "MTF at " + field("mtf-field-") + ": sagittal and tangential, from the pupil (diffraction) and the spot (geometric), "
+               "with the diffraction limit.";
+    if (name.rfind("fans-field-", 0) == 0)
+        return "Transverse ray aberration at " + field("fans-field-") + ", tangential and sagittal, against pupil coordinate.";
+    if (name == "field-curvature") return "Field curvature: sagittal and tangential focus against field, from the film plane.";
+    if (name == "distortion") return "Distortion in percent against field.";
+    if (name == "relative-illumination") return "Relative illumination against field, 1 on the axis.";
+    if (name == "chromatic-focal-shift") return "Chromatic focal shift: the paraxial focus against wavelength, from the d line's.";
+    return name;
+}
+
+// lenslab analyze's plots for the lens, each an SVG file opened full size by a click.
+void designSection(std::ostringstream& out, const LensFacts& f, const DesignPlots& d) {
+    if (d.plots.empty() && d.problem.empty()) return;  // not asked for
+    out << "<section class=\"design\">\n<h4>The lens designer's analysis at f/" << formatFNumber(d.fstop) << "</h4>\n";
+    if (!d.problem.empty()) {
+        out << "<p class=\"problem\">" << escapeMarkup(d.problem) << "</p>\n</section>\n";
+        return;
+    }
+    out << "<div class=\"plots design-plots\">\n";
+    for (const std::string& plot : d.plots) {
+        const std::string href = escapeMarkup(plot), caption = designCaption(plot, d);
+        out << figure("<a href=\"" + href + "\"><img src=\"" + href + "\" alt=\"" + escapeMarkup(f.id + ": " + caption) +
+                          "\" loading=\"lazy\"></a>",
+                      escapeMarkup(caption));
+    }
+    out << "</div>\n<p class=\"download\"><a href=\"" << escapeMarkup(d.jsonFile)
+        << "\">The analysis as JSON</a> (the output of <code>lenslab analyze " << escapeMarkup(f.id)
+        << " --json</code> with the settings above).</p>\n</section>\n";
+}
+
 void lensArticle(std::ostringstream& out, const LensEntry& lens) {
     const LensFacts& f = lens.facts;
     out << "<article class=\"lens\" id=\"" << escapeMarkup(lensAnchor(f.id)) << "\">\n<h3>" << escapeMarkup(f.id) << "</h3>\n";
@@ -211,6 +253,7 @@ void lensArticle(std::ostringstream& out, const LensEntry& lens) {
                   "Irradiance from a uniform scene on the film at the exact focus, by exact tracing; 1 at the centre.");
     out << figure(svgPlot(distortionPlot(f)), "Chief ray height on the F\u2032 plane against f tan \u03b8; negative is barrel.");
     out << "</div>\n";
+    designSection(out, f, lens.design);
     if (lens.colourFringes) colourFringes(out, f, *lens.colourFringes);
     out << "<p class=\"download\"><a href=\"" << escapeMarkup(lens.jsonFile) << "\">The table as JSON</a> (the output of <code>lenslab lens "
         << escapeMarkup(f.id) << ".dat --json</code> with the settings above).</p>\n</article>\n";

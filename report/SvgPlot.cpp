@@ -145,7 +145,8 @@ std::string svgPlot(const Plot& plot) {
 
     std::ostringstream out;
     const std::string titleId = plot.id + "-title";
-    out << "<svg class=\"plot\" viewBox=\"0 0 " << plot.width << " " << num(height)
+    // The namespace makes the markup a valid .svg file as well as inline SVG (lenslab analyze -o).
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"plot\" viewBox=\"0 0 " << plot.width << " " << num(height)
         << "\" width=\"" << plot.width << "\" height=\"" << num(height) << "\" role=\"img\" aria-labelledby=\"" << titleId
         << "\" font-family=\"system-ui, sans-serif\" font-size=\"" << kFontSize << "\">\n";
     out << "<title id=\"" << titleId << "\">" << escapeMarkup(plot.title) << "</title>\n";

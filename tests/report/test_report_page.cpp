@@ -163,11 +163,17 @@ TEST_F(ReportPage, EveryImageIsAValidPngOfItsStatedSizeAndEveryLinkIsLocal) {
         ++images;
         const std::string src = e.attributes.at("src");
         const std::string bytes = readFile(site_ / src);
+        EXPECT_FALSE(e.attributes.at("alt").empty()) << src;
+        if (fs::path(src).extension() == ".svg") {
+            // A standalone SVG file: the namespace (else browsers show nothing) and well-formed markup.
+            EXPECT_EQ(bytes.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u) << src;
+            for (const std::string& error : checkHtml(bytes).errors) ADD_FAILURE() << src << ": " << error;
+            continue;
+        }
         try {
             const lenslab::RgbaImage png = lenslab::decodePng(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
             EXPECT_EQ(std::to_string(png.width), e.attributes.at("width")) << src;
             EXPECT_EQ(std::to_string(png.height), e.attributes.at("height")) << src;
-            EXPECT_FALSE(e.attributes.at("alt").empty()) << src;
         } catch (const std::exception& x) {
             ADD_FAILURE() << src << ": " << x.what();
         }
@@ -213,6 +219,43 @@ TEST_F(ReportPage, TablesHoldTheNumbersOfLensJson) {
             EXPECT_NEAR(std::stod(text), node.get<double>(), 0.5 * std::pow(10.0, -decimals) + 1e-12) << key;
         }
         EXPECT_GE(cells, 20);
+    }
+}
+
+// Each lens's designer's analysis: the 13 plots (spot, MTF, fans at three fields; four curves) and
+// the data that `lenslab analyze --json` prints for the same lens, focus and f-number.
+TEST_F(ReportPage, EveryLensShowsTheDesignersAnalysisOfTheCommandLine) {
+    ASSERT_EQ(first_.status, 0) << first_.out;
+    const fs::path source = LENSLAB_SOURCE_DIR;
+    for (const std::string& lens : bundledLenses(source)) {
+        SCOPED_TRACE(lens);
+        const std::size_t begin = html_.find("<article class=\"lens\" id=\"lens-" + lens + "\">");
+        ASSERT_NE(begin, std::string::npos);
+        const std::string article = html_.substr(begin, html_.find("</article>", begin) - begin);
+        const std::string folder = "assets/lenses/" + lens + "-analysis/";
+        std::vector<std::string> plots;
+        for (const char* kind : {"spot", "mtf", "fans"})
+            for (int field = 1; field <= 3; ++field) plots.push_back(std::string(kind) + "-field-" + std::to_string(field));
+        for (const char* curve : {"field-curvature", "distortion", "relative-illumination", "chromatic-focal-shift"})
+            plots.push_back(curve);
+        for (const std::string& plot : plots)
+            EXPECT_NE(article.find("<img src=\"" + folder + plot + ".svg\""), std::string::npos) << plot;
+
+        const double focus = nlohmann::json::parse(readFile(site_ / "assets/lenses" / (lens + ".json")))["focus"]["distance"];
+        std::ostringstream focusText;
+        focusText.precision(17);
+        focusText << focus;
+        const CommandRun cli =
+            run(std::string(LENSLAB_BINARY) + " analyze " + lensFile(source, lens).string() + " --focus " + focusText.str() + " --json");
+        ASSERT_EQ(cli.status, 0) << cli.out;
+        const nlohmann::json expected = nlohmann::json::parse(cli.out);
+        EXPECT_EQ(nlohmann::json::parse(readFile(site_ / (folder + "analysis.json"))), expected);
+        // The captions name each field as the data does.
+        for (const nlohmann::json& field : expected["fields"]) {
+            char degrees[32];
+            std::snprintf(degrees, sizeof degrees, "Spot diagram at %.1f\u00b0", field["field_deg"].get<double>());
+            EXPECT_NE(article.find(degrees), std::string::npos) << degrees;
+        }
     }
 }
 
