@@ -165,6 +165,41 @@ TEST(NanoVdb, TransmittanceThroughAConstantBlockIsBeerLambert) {
     EXPECT_FLOAT_EQ(m.density({1 + 0.25f * 7.5f, y, z - 5}), 0.25f);
 }
 
+// Voxels of random density in two leaves with an empty one between (x 8..15), so the majorant
+// grid's cells (one per voxel here) differ: ratio tracking (transmittance) and delta tracking (the
+// share of paths an absorber lets through) along an oblique ray against exp(-sigma_t * the
+// density's integral), by the midpoint rule over the grid's own lookups. A cell's majorant below
+// the density it covers biases both: the density rises from voxel 15 (empty) to voxel 16 in cells
+// that only the third leaf's values bound.
+TEST(NanoVdb, TrackingThroughVaryingVoxelsMatchesQuadrature) {
+    NanoVdbTestGrid g;
+    Pcg32 rng(17);
+    for (int i = 0; i < 24; ++i)
+        for (int j = 0; j < 8; ++j)
+            for (int k = 0; k < 8; ++k)
+                if (i < 8 || i >= 16) g.voxels[{i, j, k}] = 0.5f + 0.5f * rng.uniform();
+    const float sigma = 0.1f;
+    const NanoVdbMedium m(readBack(test::nanoVdbFile({g})), {sigma, sigma, sigma}, {}, Transform{}, HenyeyGreenstein(0));
+    const Vec3f o{-1, 1.5f, 2.5f}, d = normalize(Vec3f{26, 4, 3});
+    const float length = 27;
+    constexpr int kSteps = 20000;
+    double depth = 0;
+    for (int i = 0; i < kSteps; ++i) {
+        const Vec3f p = o + (length * (i + 0.5f) / kSteps) * d;
+        if (p.x >= 0 && p.x < 24 && p.y >= 0 && p.y < 8 && p.z >= 0 && p.z < 8) depth += m.density(p);
+    }
+    depth *= sigma * length / kSteps;
+    ASSERT_GT(depth, 1.0);  // thick enough to matter, thin enough for a tight estimate
+    constexpr int kSamples = 200000;
+    double transmitted = 0, passed = 0;
+    for (int i = 0; i < kSamples; ++i) {
+        transmitted += m.transmittance(o, d, length, rng).x;
+        passed += !isBlack(m.sample(o, d, length, 0, rng).weight);
+    }
+    EXPECT_NEAR(transmitted / kSamples / std::exp(-depth), 1.0, 0.01);
+    EXPECT_NEAR(passed / kSamples / std::exp(-depth), 1.0, 0.02);
+}
+
 TEST(NanoVdb, UnsupportedFilesAreErrorsNamingTheFile) {
     const std::string good = test::nanoVdbFile({blockGrid()});
     const auto errorContains = [](const std::string& bytes, const std::string& text) {

@@ -1,6 +1,7 @@
 #include "media/NanoVdbMedium.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lenslab {
 
@@ -21,6 +22,88 @@ Vec3f indexExtentOf(const NanoVdbGrid& g) {
     return {size(0), size(1), size(2)};
 }
 
+// The largest density each cell of a grid over the index box can see: every stored value (leaf,
+// tile, background) raised over the cells its voxels reach by interpolation, one voxel beyond each
+// side. Up to 64 cells per axis (pbrt-v4's resolution), no more than one per voxel.
+class DensityMajorants {
+public:
+    explicit DensityMajorants(const NanoVdbGrid& g) : g_(g), lo_(indexMinOf(g)), extent_(indexExtentOf(g)) {
+        m_.nx = std::min(64, int(extent_.x));
+        m_.ny = std::min(64, int(extent_.y));
+        m_.nz = std::min(64, int(extent_.z));
+        m_.values.assign(std::size_t(m_.nx) * m_.ny * m_.nz, std::max(0.0f, g.background));
+    }
+
+    MajorantGrid scaled(float sigmaT) {
+        for (const auto& tile : g_.root) {
+            const std::array<int, 3> origin = rootOrigin(tile.key);
+            if (tile.upper < 0)
+                raise(origin, 4096, tile.value);
+            else
+                upper(std::size_t(tile.upper), origin);
+        }
+        for (float& v : m_.values) v *= sigmaT;
+        return std::move(m_);
+    }
+
+private:
+    static std::array<int, 3> rootOrigin(uint64_t key) {
+        constexpr uint64_t k21 = (1u << 21) - 1;
+        return {int32_t(uint32_t((key >> 42) & k21) << 12), int32_t(uint32_t((key >> 21) & k21) << 12),
+                int32_t(uint32_t(key & k21) << 12)};
+    }
+    // The origin of slot n of a node with 2^log2 slots per axis, each `size` voxels wide.
+    static std::array<int, 3> slotOrigin(const std::array<int, 3>& node, int n, int log2, int size) {
+        const int mask = (1 << log2) - 1;
+        return {node[0] + ((n >> (2 * log2)) & mask) * size, node[1] + ((n >> log2) & mask) * size, node[2] + (n & mask) * size};
+    }
+    void upper(std::size_t u, const std::array<int, 3>& origin) {
+        for (int n = 0; n < kNanoVdbUpperSlots; ++n) {
+            const std::size_t slot = u * kNanoVdbUpperSlots + n;
+            if (g_.upperChild[slot] < 0)
+                raise(slotOrigin(origin, n, 5, 128), 128, g_.upperValue[slot]);
+            else
+                lower(std::size_t(g_.upperChild[slot]), slotOrigin(origin, n, 5, 128));
+        }
+    }
+    void lower(std::size_t l, const std::array<int, 3>& origin) {
+        for (int n = 0; n < kNanoVdbLowerSlots; ++n) {
+            const std::size_t slot = l * kNanoVdbLowerSlots + n;
+            if (g_.lowerChild[slot] < 0) {
+                raise(slotOrigin(origin, n, 4, 8), 8, g_.lowerValue[slot]);
+            } else {
+                const float* v = &g_.leafValues[std::size_t(g_.lowerChild[slot]) * kNanoVdbLeafVoxels];
+                raise(slotOrigin(origin, n, 4, 8), 8, *std::max_element(v, v + kNanoVdbLeafVoxels));
+            }
+        }
+    }
+    // Voxels origin .. origin + size - 1 hold values up to v: the cells of index space from one
+    // voxel below to one above see it.
+    void raise(const std::array<int, 3>& origin, int size, float v) {
+        if (v <= 0) return;
+        const int res[3] = {m_.nx, m_.ny, m_.nz};
+        int from[3], to[3];
+        for (int a = 0; a < 3; ++a) {
+            const double cell = extent_[a] / res[a];
+            const double first = std::floor((double(origin[a]) - 1 - lo_[a]) / cell);
+            const double last = std::floor((double(origin[a]) + size - lo_[a]) / cell);
+            if (last < 0 || first >= res[a]) return;
+            from[a] = int(std::max(0.0, first));
+            to[a] = int(std::min(double(res[a] - 1), last));
+        }
+        for (int z = from[2]; z <= to[2]; ++z)
+            for (int y = from[1]; y <= to[1]; ++y)
+                for (int x = from[0]; x <= to[0]; ++x) {
+                    float& m = m_.values[(std::size_t(z) * m_.ny + y) * m_.nx + x];
+                    m = std::max(m, v);
+                }
+    }
+
+    const NanoVdbGrid& g_;
+    Vec3f lo_, extent_;
+    MajorantGrid m_;
+};
+
 Transform boxToWorldOf(const NanoVdbGrid& g, const Transform& mediumToWorld) {
     const Vec3f lo = indexMinOf(g), e = indexExtentOf(g);
     return mediumToWorld * indexToMediumOf(g) * translate(lo.x, lo.y, lo.z) * scale(e.x, e.y, e.z);
@@ -30,7 +113,7 @@ Transform boxToWorldOf(const NanoVdbGrid& g, const Transform& mediumToWorld) {
 
 NanoVdbMedium::NanoVdbMedium(NanoVdbGrid density, Vec3f sigmaA, Vec3f sigmaS, const Transform& mediumToWorld,
                              HenyeyGreenstein phase)
-    : TrackedBoxMedium(boxToWorldOf(density, mediumToWorld), std::max(0.0f, density.largest) * maxComponent(sigmaA + sigmaS),
+    : TrackedBoxMedium(boxToWorldOf(density, mediumToWorld), DensityMajorants(density).scaled(maxComponent(sigmaA + sigmaS)),
                        phase),
       grid_(std::move(density)), sigmaA_(sigmaA), sigmaS_(sigmaS), indexToMedium_(indexToMediumOf(grid_)),
       indexMin_(indexMinOf(grid_)), indexExtent_(indexExtentOf(grid_)) {}
