@@ -120,7 +120,7 @@ TEST(Media, ParserChoosesVolpathAndNamesErrors) {
     EXPECT_NE(path.warnings.back().find("ignores the scene's participating media"), std::string::npos);
     EXPECT_NE(test::sceneErrorOf(scene(dir, "MediumInterface \"fog\" \"\"\nShape \"sphere\"\n")).find("s.pbrt:6: Shape \"sphere\": unknown medium \"fog\""),
               std::string::npos);
-    EXPECT_NE(test::sceneErrorOf(scene(dir, "MakeNamedMedium \"c\" \"string type\" \"nanovdb\"\n")).find("s.pbrt:5: MakeNamedMedium \"c\": medium \"nanovdb\" is not supported"),
+    EXPECT_NE(test::sceneErrorOf(scene(dir, "MakeNamedMedium \"c\" \"string type\" \"rgbgrid\"\n")).find("s.pbrt:5: MakeNamedMedium \"c\": medium \"rgbgrid\" is not supported"),
               std::string::npos);
     EXPECT_NE(test::sceneErrorOf(scene(dir, "MakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"float density\" [1]\n"))
                   .find("nx * ny * nz = 2"),

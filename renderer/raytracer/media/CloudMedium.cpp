@@ -9,7 +9,7 @@ namespace lenslab {
 CloudMedium::CloudMedium(CloudShape shape, Vec3f sigmaA, Vec3f sigmaS, Vec3f p0, Vec3f p1, const Transform& mediumToWorld,
                          HenyeyGreenstein phase)
     : TrackedBoxMedium(mediumToWorld * translate(p0.x, p0.y, p0.z) * scale(p1.x - p0.x, p1.y - p0.y, p1.z - p0.z),
-                       maxComponent(sigmaA + sigmaS), phase),
+                       MajorantGrid::uniform(maxComponent(sigmaA + sigmaS)), phase),
       shape_(shape), sigmaA_(sigmaA), sigmaS_(sigmaS), p0_(p0), p1_(p1) {}
 
 float CloudMedium::density(Vec3f p) const {

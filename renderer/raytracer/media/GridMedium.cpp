@@ -17,7 +17,7 @@ float largestCoefficient(const MediumGrid& grid) {
 }  // namespace
 
 GridMedium::GridMedium(MediumGrid grid, const Transform& boxToWorld, HenyeyGreenstein phase)
-    : TrackedBoxMedium(boxToWorld, largestCoefficient(grid), phase), grid_(std::move(grid)) {}
+    : TrackedBoxMedium(boxToWorld, MajorantGrid::uniform(largestCoefficient(grid)), phase), grid_(std::move(grid)) {}
 
 void GridMedium::coefficients(Vec3f p, Vec3f& sigmaA, Vec3f& sigmaS) const {
     const float x = p.x * grid_.nx - 0.5f, y = p.y * grid_.ny - 0.5f, z = p.z * grid_.nz - 0.5f;

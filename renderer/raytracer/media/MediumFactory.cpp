@@ -1,10 +1,11 @@
 // MakeNamedMedium's types and their parameters. pbrt-v3's homogeneous and heterogeneous default to
-// its coefficients (skim milk's, per mm); pbrt-v4's uniformgrid and cloud default to 1 and 1.
+// its coefficients (skim milk's, per mm); pbrt-v4's uniformgrid, cloud and nanovdb default to 1 and 1.
 #include <cmath>
 
 #include "media/CloudMedium.h"
 #include "media/GridMedium.h"
 #include "media/HomogeneousMedium.h"
+#include "media/NanoVdbMedium.h"
 #include "media/ParticipatingMedium.h"
 
 namespace lenslab {
@@ -73,10 +74,46 @@ std::shared_ptr<const ParticipatingMedium> makeCloud(const ParamSet& p, const Tr
     return std::make_shared<CloudMedium>(shape, sigmaA, sigmaS, p0, p1, mediumToWorld, phaseOf(p));
 }
 
+std::optional<NanoVdbGrid> readGrid(const ParamSet& p, const std::string& path, const std::string& gridName) {
+    try {
+        return readNanoVdbFile(path, gridName);
+    } catch (const NanoVdbError& e) {
+        p.fail(e.what());
+    }
+}
+
+// pbrt-v4's nanovdb: the float grid "gridname" ("density") of the file, times sigma_a and sigma_s.
+// pbrt-v4 makes the medium emit when the file also has a "temperaturename" grid and Lescale > 0.
+std::shared_ptr<const ParticipatingMedium> makeNanoVdb(const ParamSet& p, const Transform& mediumToWorld,
+                                                       const PathResolver& resolve, std::vector<std::string>& warnings) {
+    const std::string name = p.getString("filename", "");
+    if (name.empty()) p.fail("the nanovdb medium needs \"string filename\"");
+    const std::string path = resolve(name, p.where());
+    const std::string gridName = p.getString("gridname", "density");
+    std::optional<NanoVdbGrid> density = readGrid(p, path, gridName);
+    if (!density) p.fail(path + ": no grid named \"" + gridName + "\"");
+    for (int a = 0; a < 3; ++a)
+        if (density->activeMin[a] > density->activeMax[a]) p.fail(path + ": grid \"" + gridName + "\" has no active voxels");
+    if (density->smallest < 0)
+        warnings.push_back(describe(p.where()) + ": " + path + ": grid \"" + gridName + "\" holds negative values (down to " +
+                           std::to_string(density->smallest) + "), read as zero density");
+    const double leScale = p.getFloat("Lescale", 1);
+    p.getFloat("temperatureoffset", p.getFloat("temperaturecutoff", 0));
+    p.getFloat("temperaturescale", 1);
+    const std::string temperatureName = p.getString("temperaturename", "temperature");
+    if (leScale > 0 && readGrid(p, path, temperatureName))
+        p.fail(path + ": grid \"" + temperatureName +
+               "\" makes the medium emit (pbrt-v4's blackbody emission), which lenslab does not render; \"float Lescale\" 0 "
+               "renders it without");
+    Vec3f sigmaA, sigmaS;
+    coefficients(p, {1, 1, 1}, {1, 1, 1}, sigmaA, sigmaS);
+    return std::make_shared<NanoVdbMedium>(std::move(*density), sigmaA, sigmaS, mediumToWorld, phaseOf(p));
+}
+
 }  // namespace
 
 std::shared_ptr<const ParticipatingMedium> makeMedium(const std::string& type, const ParamSet& p, const Transform& mediumToWorld,
-                                         std::vector<std::string>& warnings) {
+                                         const PathResolver& resolve, std::vector<std::string>& warnings) {
     std::shared_ptr<const ParticipatingMedium> m;
     if (type == "homogeneous") {
         Vec3f sigmaA, sigmaS;
@@ -90,8 +127,10 @@ std::shared_ptr<const ParticipatingMedium> makeMedium(const std::string& type, c
         m = makeDensityGrid(p, mediumToWorld, {1, 1, 1}, {1, 1, 1});
     } else if (type == "cloud") {
         m = makeCloud(p, mediumToWorld);
+    } else if (type == "nanovdb") {
+        m = makeNanoVdb(p, mediumToWorld, resolve, warnings);
     } else {
-        p.fail("medium \"" + type + "\" is not supported (homogeneous, heterogeneous, uniformgrid, cloud)");
+        p.fail("medium \"" + type + "\" is not supported (homogeneous, heterogeneous, uniformgrid, cloud, nanovdb)");
     }
     if (p.has("Le") && !isBlack(p.getRgb("Le", {})))
         p.fail("emitting media (\"Le\") are not supported: the picture would lack their light");

@@ -54,9 +54,10 @@ struct MediumInterface {
 };
 
 // MakeNamedMedium's "string type": pbrt-v3's homogeneous and heterogeneous, pbrt-v4's homogeneous,
-// uniformgrid and cloud; mediumToWorld is the current transform there. Anything else is a SceneError
-// naming the line.
+// uniformgrid, cloud and nanovdb; mediumToWorld is the current transform there, resolve finds a
+// nanovdb medium's file. Anything else is a SceneError naming the line.
 std::shared_ptr<const ParticipatingMedium> makeMedium(const std::string& type, const ParamSet& params,
-                                         const Transform& mediumToWorld, std::vector<std::string>& warnings);
+                                         const Transform& mediumToWorld, const PathResolver& resolve,
+                                         std::vector<std::string>& warnings);
 
 }  // namespace lenslab

@@ -18,8 +18,8 @@ constexpr float kRouletteBelow = 0.05f;
 
 }  // namespace
 
-TrackedBoxMedium::TrackedBoxMedium(const Transform& boxToWorld, float majorant, HenyeyGreenstein phase)
-    : ParticipatingMedium(phase), worldToBox_(inverse(boxToWorld)), majorant_(majorant) {}
+TrackedBoxMedium::TrackedBoxMedium(const Transform& boxToWorld, MajorantGrid majorants, HenyeyGreenstein phase)
+    : ParticipatingMedium(phase), worldToBox_(inverse(boxToWorld)), majorants_(std::move(majorants)) {}
 
 bool TrackedBoxMedium::clip(Vec3f o, Vec3f d, float tMax, Vec3f& oBox, Vec3f& dBox, float& t0, float& t1) const {
     oBox = transformPoint(worldToBox_, o);
@@ -34,58 +34,69 @@ bool TrackedBoxMedium::clip(Vec3f o, Vec3f d, float tMax, Vec3f& oBox, Vec3f& dB
         t0 = std::max(t0, tNear);
         t1 = std::min(t1, tFar);
     }
-    return t0 < t1 && majorant_ > 0;
+    return t0 < t1;
 }
 
 MediumEvent TrackedBoxMedium::sample(Vec3f o, Vec3f d, float tMax, int hero, Pcg32& rng) const {
     MediumEvent e;
     e.t = tMax;
     Vec3f oBox, dBox;
-    float t, t1;
-    if (!clip(o, d, tMax, oBox, dBox, t, t1)) return e;
-    // Tentative collisions at the majorant's rate (the same for every channel); each is absorption,
-    // scattering or a null collision with the hero's coefficients over the majorant as
+    float t0, t1;
+    if (!clip(o, d, tMax, oBox, dBox, t0, t1)) return e;
+    // Tentative collisions at the cell's majorant rate (the same for every channel); each is
+    // absorption, scattering or a null collision with the hero's coefficients over the majorant as
     // probabilities. A channel's density of the same choice is its own coefficient over the
     // majorant, so weight and ratio are both coefficient over the hero's (1 in a grey medium:
-    // plain delta tracking).
-    for (;;) {
-        t -= std::log1p(-rng.uniform()) / majorant_;
-        if (t >= t1) return e;
-        Vec3f sigmaA, sigmaS;
-        coefficients(oBox + t * dBox, sigmaA, sigmaS);
-        const Vec3f sigmaN = nullCoefficient(majorant_, sigmaA, sigmaS);
-        const float u = rng.uniform() * majorant_;
-        if (u < sigmaA[hero]) {
-            e.weight = {};
-            return e;
+    // plain delta tracking). Leaving a cell, the exponential draw starts afresh (memoryless).
+    walkMajorants(majorants_, oBox, dBox, t0, t1, [&](float t, float tEnd, float majorant) {
+        if (majorant <= 0) return true;
+        for (;;) {
+            t -= std::log1p(-rng.uniform()) / majorant;
+            if (t >= tEnd) return true;
+            Vec3f sigmaA, sigmaS;
+            coefficients(oBox + t * dBox, sigmaA, sigmaS);
+            const Vec3f sigmaN = nullCoefficient(majorant, sigmaA, sigmaS);
+            const float u = rng.uniform() * majorant;
+            if (u < sigmaA[hero]) {
+                e.weight = {};
+                return false;
+            }
+            const bool scatters = u < sigmaA[hero] + sigmaS[hero];
+            const Vec3f sigma = scatters ? sigmaS : sigmaN;
+            e.weight *= sigma / sigma[hero];
+            e.pdfRatio *= sigma / sigma[hero];
+            if (scatters) {
+                e.scattered = true;
+                e.t = t;
+                return false;
+            }
         }
-        const bool scatters = u < sigmaA[hero] + sigmaS[hero];
-        const Vec3f sigma = scatters ? sigmaS : sigmaN;
-        e.weight *= sigma / sigma[hero];
-        e.pdfRatio *= sigma / sigma[hero];
-        if (scatters) {
-            e.scattered = true;
-            e.t = t;
-            return e;
-        }
-    }
+    });
+    return e;
 }
 
 Vec3f TrackedBoxMedium::transmittance(Vec3f o, Vec3f d, float tMax, Pcg32& rng) const {
     Vec3f oBox, dBox, tr{1, 1, 1};
-    float t, t1;
-    if (!clip(o, d, tMax, oBox, dBox, t, t1)) return tr;
-    for (;;) {
-        t -= std::log1p(-rng.uniform()) / majorant_;
-        if (t >= t1) return tr;
-        Vec3f sigmaA, sigmaS;
-        coefficients(oBox + t * dBox, sigmaA, sigmaS);
-        tr *= nullCoefficient(majorant_, sigmaA, sigmaS) / majorant_;
-        if (maxComponent(tr) < kRouletteBelow) {
-            if (rng.uniform() < 0.5f) return {};
-            tr = 2.0f * tr;
+    float t0, t1;
+    if (!clip(o, d, tMax, oBox, dBox, t0, t1)) return tr;
+    walkMajorants(majorants_, oBox, dBox, t0, t1, [&](float t, float tEnd, float majorant) {
+        if (majorant <= 0) return true;
+        for (;;) {
+            t -= std::log1p(-rng.uniform()) / majorant;
+            if (t >= tEnd) return true;
+            Vec3f sigmaA, sigmaS;
+            coefficients(oBox + t * dBox, sigmaA, sigmaS);
+            tr *= nullCoefficient(majorant, sigmaA, sigmaS) / majorant;
+            if (maxComponent(tr) < kRouletteBelow) {
+                if (rng.uniform() < 0.5f) {
+                    tr = {};
+                    return false;
+                }
+                tr = 2.0f * tr;
+            }
         }
-    }
+    });
+    return tr;
 }
 
 }  // namespace lenslab

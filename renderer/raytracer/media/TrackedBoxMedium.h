@@ -1,6 +1,8 @@
 #pragma once
-// A medium whose coefficients vary over a box and are zero outside it, bounded by one majorant:
-// distances by delta tracking, transmittance by ratio tracking. Subclasses give the coefficients.
+// A medium whose coefficients vary over a box and are zero outside it, bounded by majorants over a
+// coarse grid of cells (one cell: one majorant): distances by delta tracking, transmittance by
+// ratio tracking, both walking the cells. Subclasses give the coefficients.
+#include "media/MajorantGrid.h"
 #include "media/ParticipatingMedium.h"
 
 namespace lenslab {
@@ -12,8 +14,8 @@ public:
 
 protected:
     // boxToWorld maps the unit cube onto the box in the world; no channel of sigma_a + sigma_s
-    // anywhere exceeds majorant.
-    TrackedBoxMedium(const Transform& boxToWorld, float majorant, HenyeyGreenstein phase);
+    // anywhere in a cell exceeds the cell's majorant.
+    TrackedBoxMedium(const Transform& boxToWorld, MajorantGrid majorants, HenyeyGreenstein phase);
     // The coefficients at pBox in the unit cube's coordinates.
     virtual void coefficients(Vec3f pBox, Vec3f& sigmaA, Vec3f& sigmaS) const = 0;
 
@@ -23,7 +25,7 @@ private:
     bool clip(Vec3f o, Vec3f d, float tMax, Vec3f& oBox, Vec3f& dBox, float& t0, float& t1) const;
 
     Transform worldToBox_;
-    float majorant_;
+    MajorantGrid majorants_;
 };
 
 }  // namespace lenslab

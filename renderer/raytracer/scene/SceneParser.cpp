@@ -341,7 +341,7 @@ private:
         const ParamSet p = params(where);
         if (!p.has("type")) p.fail("MakeNamedMedium needs \"string type\"");
         if (namedMedia_.count(name)) warn(where, "redefines medium \"" + name + "\" for what follows");
-        namedMedia_[name] = makeMedium(p.getString("type", ""), p, g_.ctm, scene_.warnings);
+        namedMedia_[name] = makeMedium(p.getString("type", ""), p, g_.ctm, resolver(), scene_.warnings);
         warnIfMoving(where, "a medium");
     }
     // pbrt-v3 gives one name for both sides too.

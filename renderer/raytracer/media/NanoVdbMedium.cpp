@@ -1,0 +1,142 @@
+#include "media/NanoVdbMedium.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lenslab {
+
+namespace {
+
+Transform indexToMediumOf(const NanoVdbGrid& g) {
+    Matrix44 m;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) m.m[r][c] = g.indexToWorld[r][c];
+    return makeTransform(m);
+}
+
+Vec3f indexMinOf(const NanoVdbGrid& g) { return {float(g.activeMin[0]), float(g.activeMin[1]), float(g.activeMin[2])}; }
+
+// Voxel i spans index space [i, i + 1) in NanoVDB's bounding boxes.
+Vec3f indexExtentOf(const NanoVdbGrid& g) {
+    const auto size = [&](int a) { return float(double(g.activeMax[a]) - g.activeMin[a] + 1); };
+    return {size(0), size(1), size(2)};
+}
+
+// The largest density each cell of a grid over the index box can see: every stored value (leaf,
+// tile, background) raised over the cells its voxels reach by interpolation, one voxel beyond each
+// side. Up to 64 cells per axis (pbrt-v4's resolution), no more than one per voxel.
+class DensityMajorants {
+public:
+    explicit DensityMajorants(const NanoVdbGrid& g) : g_(g), lo_(indexMinOf(g)), extent_(indexExtentOf(g)) {
+        m_.nx = std::min(64, int(extent_.x));
+        m_.ny = std::min(64, int(extent_.y));
+        m_.nz = std::min(64, int(extent_.z));
+        m_.values.assign(std::size_t(m_.nx) * m_.ny * m_.nz, std::max(0.0f, g.background));
+    }
+
+    MajorantGrid scaled(float sigmaT) {
+        for (const auto& tile : g_.root) {
+            const std::array<int, 3> origin = rootOrigin(tile.key);
+            if (tile.upper < 0)
+                raise(origin, 4096, tile.value);
+            else
+                upper(std::size_t(tile.upper), origin);
+        }
+        for (float& v : m_.values) v *= sigmaT;
+        return std::move(m_);
+    }
+
+private:
+    static std::array<int, 3> rootOrigin(uint64_t key) {
+        constexpr uint64_t k21 = (1u << 21) - 1;
+        return {int32_t(uint32_t((key >> 42) & k21) << 12), int32_t(uint32_t((key >> 21) & k21) << 12),
+                int32_t(uint32_t(key & k21) << 12)};
+    }
+    // The origin of slot n of a node with 2^log2 slots per axis, each `size` voxels wide.
+    static std::array<int, 3> slotOrigin(const std::array<int, 3>& node, int n, int log2, int size) {
+        const int mask = (1 << log2) - 1;
+        return {node[0] + ((n >> (2 * log2)) & mask) * size, node[1] + ((n >> log2) & mask) * size, node[2] + (n & mask) * size};
+    }
+    void upper(std::size_t u, const std::array<int, 3>& origin) {
+        for (int n = 0; n < kNanoVdbUpperSlots; ++n) {
+            const std::size_t slot = u * kNanoVdbUpperSlots + n;
+            if (g_.upperChild[slot] < 0)
+                raise(slotOrigin(origin, n, 5, 128), 128, g_.upperValue[slot]);
+            else
+                lower(std::size_t(g_.upperChild[slot]), slotOrigin(origin, n, 5, 128));
+        }
+    }
+    void lower(std::size_t l, const std::array<int, 3>& origin) {
+        for (int n = 0; n < kNanoVdbLowerSlots; ++n) {
+            const std::size_t slot = l * kNanoVdbLowerSlots + n;
+            if (g_.lowerChild[slot] < 0) {
+                raise(slotOrigin(origin, n, 4, 8), 8, g_.lowerValue[slot]);
+            } else {
+                const float* v = &g_.leafValues[std::size_t(g_.lowerChild[slot]) * kNanoVdbLeafVoxels];
+                raise(slotOrigin(origin, n, 4, 8), 8, *std::max_element(v, v + kNanoVdbLeafVoxels));
+            }
+        }
+    }
+    // Voxels origin .. origin + size - 1 hold values up to v: the cells of index space from one
+    // voxel below to one above see it.
+    void raise(const std::array<int, 3>& origin, int size, float v) {
+        if (v <= 0) return;
+        const int res[3] = {m_.nx, m_.ny, m_.nz};
+        int from[3], to[3];
+        for (int a = 0; a < 3; ++a) {
+            const double cell = extent_[a] / res[a];
+            const double first = std::floor((double(origin[a]) - 1 - lo_[a]) / cell);
+            const double last = std::floor((double(origin[a]) + size - lo_[a]) / cell);
+            if (last < 0 || first >= res[a]) return;
+            from[a] = int(std::max(0.0, first));
+            to[a] = int(std::min(double(res[a] - 1), last));
+        }
+        for (int z = from[2]; z <= to[2]; ++z)
+            for (int y = from[1]; y <= to[1]; ++y)
+                for (int x = from[0]; x <= to[0]; ++x) {
+                    float& m = m_.values[(std::size_t(z) * m_.ny + y) * m_.nx + x];
+                    m = std::max(m, v);
+                }
+    }
+
+    const NanoVdbGrid& g_;
+    Vec3f lo_, extent_;
+    MajorantGrid m_;
+};
+
+Transform boxToWorldOf(const NanoVdbGrid& g, const Transform& mediumToWorld) {
+    const Vec3f lo = indexMinOf(g), e = indexExtentOf(g);
+    return mediumToWorld * indexToMediumOf(g) * translate(lo.x, lo.y, lo.z) * scale(e.x, e.y, e.z);
+}
+
+}  // namespace
+
+NanoVdbMedium::NanoVdbMedium(NanoVdbGrid density, Vec3f sigmaA, Vec3f sigmaS, const Transform& mediumToWorld,
+                             HenyeyGreenstein phase)
+    : TrackedBoxMedium(boxToWorldOf(density, mediumToWorld), DensityMajorants(density).scaled(maxComponent(sigmaA + sigmaS)),
+                       phase),
+      grid_(std::move(density)), sigmaA_(sigmaA), sigmaS_(sigmaS), indexToMedium_(indexToMediumOf(grid_)),
+      indexMin_(indexMinOf(grid_)), indexExtent_(indexExtentOf(grid_)) {}
+
+float NanoVdbMedium::densityAtIndex(Vec3f p) const { return std::max(0.0f, grid_.interpolate(p.x, p.y, p.z)); }
+
+float NanoVdbMedium::density(Vec3f p) const { return densityAtIndex(transformPoint(inverse(indexToMedium_), p)); }
+
+void NanoVdbMedium::bounds(Vec3f& lo, Vec3f& hi) const {
+    lo = {INFINITY, INFINITY, INFINITY};
+    hi = -lo;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3f c = indexMin_ + Vec3f{float(corner & 1), float((corner >> 1) & 1), float(corner >> 2)} * indexExtent_;
+        const Vec3f q = transformPoint(indexToMedium_, c);
+        lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
+        hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
+    }
+}
+
+void NanoVdbMedium::coefficients(Vec3f pBox, Vec3f& sigmaA, Vec3f& sigmaS) const {
+    const float d = densityAtIndex(indexMin_ + pBox * indexExtent_);
+    sigmaA = d * sigmaA_;
+    sigmaS = d * sigmaS_;
+}
+
+}  // namespace lenslab
