@@ -150,7 +150,9 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg
         ++raysTraced;
         const bool hit = geometry_.intersect(o, d, kInf, time, it);
         if (medium) {
-            const MediumEvent e = medium->sample(o, d, hit ? it.t : kInf, hero, rng);
+            const float tMax = hit ? it.t : kInf;
+            const MediumEvent e = interior.inside && medium == &*interior.medium ? interior.medium->sampleByThroughput(tMax, beta, rng)
+                                                                               : medium->sample(o, d, tMax, hero, rng);
             ratio *= e.pdfRatio;
             const float meanRatio = (ratio.x + ratio.y + ratio.z) / 3;
             beta = beta * e.weight / meanRatio;
