@@ -54,6 +54,19 @@ TEST(Media, SlabTransmittanceIsBeerLambert) {
     }
 }
 
+// A measured medium by name ("preset", per mm): Merlot (Narasimhan et al. 2006) barely scatters
+// (sigma_s under 3e-5), so the slab passes exp(-sigma_a d) of its measured absorption.
+TEST(Media, PresetTakesTheMeasuredCoefficients) {
+    test::TempDir dir;
+    const std::string medium = "MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"string preset\" \"Merlot\"\n";
+    const test::RadianceProbe probe(scene(dir, kSky + medium + slab(0.7)), IntegratorType::VolPath, 5);
+    const Vec3f expected{std::exp(-0.11632f * 0.7f), std::exp(-0.25191f * 0.7f), std::exp(-0.29434f * 0.7f)};
+    expectRelative(meanRadiance(probe, {0, 0, -1}, {0, 0, 1}, 100000), expected, 0.01, "Merlot");
+    const std::string unknown = test::sceneErrorOf(scene(dir, "MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"string preset\" \"Marmite\"\n"));
+    EXPECT_NE(unknown.find("s.pbrt:5"), std::string::npos) << unknown;
+    EXPECT_NE(unknown.find("no measured medium is named \"Marmite\""), std::string::npos) << unknown;
+}
+
 // A slab 0 < z < d lit from above by a distant light of irradiance E, seen from below along a ray
 // at angle alpha to the normal (mu = cos alpha). Single scattering (maxdepth 1) at height z, with
 // the light attenuated over d - z and the scattered light over z / mu:

@@ -130,7 +130,7 @@ TEST(Pbrt4Scenes, ReadsGzippedIncludesAndAttributeDefaults) {
     EXPECT_EQ(s.dialect, SceneDialect::PbrtV4);
 }
 
-TEST(Pbrt4Scenes, RefusesHairAndSubsurfaceNamingTheLine) {
+TEST(Pbrt4Scenes, RefusesHairNamingTheLine) {
     test::TempDir dir;
     const std::string msg = test::sceneErrorOf(dir.write("s.pbrt", "WorldBegin\n\nMaterial \"hair\"\n"));
     EXPECT_NE(msg.find("s.pbrt:3"), std::string::npos) << msg;

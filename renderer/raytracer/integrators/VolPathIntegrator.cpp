@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "integrators/DirectLight.h"
+#include "media/HomogeneousMedium.h"
 
 namespace lenslab {
 
@@ -13,8 +15,42 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 // Medium boundaries one ray may cross before it is given up (a guard against rays caught between
 // coincident boundaries; real scenes cross a handful).
 constexpr int kMaxCrossings = 256;
+// Scattering events one path may have inside subsurface volumes, which do not count against
+// maxdepth (as pbrt-v4's BSSRDF counts none): a guard for media that hardly absorb.
+constexpr int kMaxInteriorEvents = 1 << 16;
 
 }  // namespace
+
+// The volume behind a subsurface material's surface that a path is in: a homogeneous medium with
+// the material's coefficients where the path entered, and the medium it returns to on leaving.
+struct VolPathIntegrator::Interior {
+    std::optional<HomogeneousMedium> medium;
+    const ParticipatingMedium* enclosing = nullptr;
+    bool inside = false;
+    int events = 0;  // scatterings and boundary hits inside, over the whole path
+
+    // The medium a shadow ray leaving the surface of `it` along w starts in. (Inward from outside
+    // it meets the surface's far side, whatever the medium.)
+    const ParticipatingMedium* toward(const Intersection& it, Vec3f w, const ParticipatingMedium* current) const {
+        if (!inside) return current;
+        return dot(w, it.hit.ng) < 0 ? &*medium : enclosing;
+    }
+    // After the BSDF at `it` turned a ray arriving along d into one leaving along wi: the medium
+    // the path goes on in, entering the volume (with the coefficients at this point) or leaving it.
+    const ParticipatingMedium* cross(const Intersection& it, Vec3f d, Vec3f wi, const ParticipatingMedium* current) {
+        const bool fromOutside = dot(d, it.hit.ng) < 0, inward = dot(wi, it.hit.ng) < 0;
+        if (inward && (fromOutside || !inside)) {
+            const InteriorMedium m = it.material->interiorAt(it.hit);
+            medium.emplace(m.sigmaA, m.sigmaS, HenyeyGreenstein(m.g));
+            if (!inside) enclosing = it.media->isTransition() ? it.media->outside.get() : current;
+            inside = true;
+        } else if (!inward && !fromOutside && inside) {
+            inside = false;
+            return enclosing;
+        }
+        return inward ? &*medium : current;
+    }
+};
 
 // Where a path scatters: on a surface (its BSDF) or at a point in a medium (its phase function).
 struct VolPathIntegrator::Vertex {
@@ -22,6 +58,7 @@ struct VolPathIntegrator::Vertex {
     const Intersection* surface;          // null: a point in `medium`
     const ParticipatingMedium* medium;                 // the medium the path travels in
     float time;                           // the camera ray's moment, kept by every ray of the path
+    const Interior* interior;             // for a surface with a scattering volume behind it
 
     Vec3f f(Vec3f wi) const {
         if (surface) return surface->material->evaluate(surface->hit, wo, wi);
@@ -33,7 +70,9 @@ struct VolPathIntegrator::Vertex {
     }
     Vec3f origin(Vec3f wi) const { return surface ? offsetRayOrigin(surface->hit, wi) : p; }
     const ParticipatingMedium* mediumToward(Vec3f wi) const {
-        return surface && surface->media->isTransition() ? surface->media->leaving(wi, surface->hit.ng) : medium;
+        if (!surface) return medium;
+        if (interior) return interior->toward(*surface, wi, medium);
+        return surface->media->isTransition() ? surface->media->leaving(wi, surface->hit.ng) : medium;
     }
 };
 
@@ -94,21 +133,36 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg
         beta = beta / q;
         return true;
     };
+    // Inside a subsurface volume, a walk of many events: Russian roulette only once the throughput
+    // has fallen below 1 (pbrt-v4's rule), which keeps the weights near 1 however long the walk.
+    Interior interior;
+    const auto survivesInside = [&] {
+        const float q = maxComponent(beta);
+        if (q >= 1) return true;
+        if (rng.uniform() >= q) return false;
+        beta = beta / q;
+        return true;
+    };
+    // Counts a scattering event: a bounce, or inside a subsurface volume one more step of its walk.
+    const auto withinDepth = [&](bool walking) { return walking ? ++interior.events <= kMaxInteriorEvents : bounces++ < maxDepth_; };
     for (;;) {
         Intersection it;
         ++raysTraced;
         const bool hit = geometry_.intersect(o, d, kInf, time, it);
         if (medium) {
-            const MediumEvent e = medium->sample(o, d, hit ? it.t : kInf, hero, rng);
+            const float tMax = hit ? it.t : kInf;
+            const MediumEvent e = interior.inside && medium == &*interior.medium ? interior.medium->sampleByThroughput(tMax, beta, rng)
+                                                                               : medium->sample(o, d, tMax, hero, rng);
             ratio *= e.pdfRatio;
             const float meanRatio = (ratio.x + ratio.y + ratio.z) / 3;
             beta = beta * e.weight / meanRatio;
             ratio = ratio / meanRatio;
             if (isBlack(beta)) break;
             if (e.scattered) {
-                if (bounces++ >= maxDepth_) break;
-                const Vertex v{o + e.t * d, -d, nullptr, medium, time};
-                L += beta * sampleLight(v, rng, raysTraced);
+                if (!withinDepth(interior.inside)) break;
+                const Vertex v{o + e.t * d, -d, nullptr, medium, time, nullptr};
+                // Inside a subsurface volume every shadow ray meets its boundary.
+                if (!interior.inside) L += beta * sampleLight(v, rng, raysTraced);
                 const float u1 = rng.uniform(), u2 = rng.uniform();
                 const Vec3f wi = medium->phase().sample(d, u1, u2);  // weight 1: sampled exactly
                 lastSpecular = false;
@@ -116,7 +170,7 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg
                 lastP = v.p;
                 o = v.p;
                 d = wi;
-                if (!survives()) break;
+                if (!(interior.inside ? survivesInside() : survives())) break;
                 continue;
             }
         }
@@ -138,8 +192,10 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg
             if (++crossings > kMaxCrossings) break;
             continue;
         }
-        if (bounces++ >= maxDepth_) break;
-        const Vertex v{it.hit.p, -d, &it, medium, time};
+        const bool hasInterior = it.material->hasInterior();
+        const bool walking = hasInterior && interior.inside && dot(d, it.hit.ng) > 0;  // the boundary, from within
+        if (!withinDepth(walking)) break;
+        const Vertex v{it.hit.p, -d, &it, medium, time, hasInterior ? &interior : nullptr};
         if (!it.material->isSpecular()) L += beta * sampleLight(v, rng, raysTraced);
         BsdfSample bs;
         const float uLobe = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
@@ -148,10 +204,10 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg
         lastSpecular = bs.specular;
         lastPdf = bs.pdf;
         lastP = it.hit.p;
-        medium = v.mediumToward(bs.wi);
+        medium = hasInterior ? interior.cross(it, d, bs.wi, medium) : v.mediumToward(bs.wi);
         o = offsetRayOrigin(it.hit, bs.wi);
         d = bs.wi;
-        if (!survives()) break;
+        if (!(interior.inside ? survivesInside() : survives())) break;
     }
     return allFinite(L) ? L : Vec3f{};
 }

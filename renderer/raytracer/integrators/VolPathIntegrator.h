@@ -5,7 +5,10 @@
 // volume or on a surface, samples one light (chosen by power) with the transmittance to it through
 // the media and medium boundaries on the way, combined with the phase or BSDF sample by multiple
 // importance sampling as the surface path tracer does. Boundaries without a surface (the
-// "interface" material) change the ray's medium and count no bounce.
+// "interface" material) change the ray's medium and count no bounce. A path transmitted into a
+// subsurface material walks through the homogeneous volume behind its surface (Material::
+// interiorAt) until the boundary lets it out; the walk counts no bounces, as pbrt-v4's BSSRDF
+// counts none, so maxdepth limits the bounces outside.
 #include "integrators/Integrator.h"
 #include "lights/LightSampler.h"
 
@@ -19,6 +22,7 @@ public:
 
 private:
     struct Vertex;
+    struct Interior;
     float lightPdf(const Light& light, Vec3f from, Vec3f w, const SurfaceHit* at) const;
     // One light sample's MIS-weighted contribution at a scattering vertex, shadowed by surfaces and
     // attenuated by the media between.

@@ -37,6 +37,13 @@ struct BsdfSample {
     bool specular = false;
 };
 
+// The scattering volume behind a surface whose material has one (pbrt's "subsurface"): a
+// homogeneous medium, coefficients per unit of scene length, taken where a path enters.
+struct InteriorMedium {
+    Vec3f sigmaA, sigmaS;
+    float g = 0;  // Henyey-Greenstein
+};
+
 class Bsdf;
 
 class Material {
@@ -52,6 +59,10 @@ public:
     // No surface at all ("interface", "none", ""): only a boundary between media. The volumetric
     // path tracer passes such hits without counting a bounce, as pbrt does.
     virtual bool isPassthrough() const { return false; }
+    // A scattering volume behind the surface, on the side its normal points away from: the
+    // volumetric path tracer enters it when a path is transmitted inward (subsurface scattering).
+    virtual bool hasInterior() const { return false; }
+    virtual InteriorMedium interiorAt(const SurfaceHit&) const { return {}; }
 
     // f(wo, wi) |cos(wi, ns)|; zero for specular lobes.
     Vec3f evaluate(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const;

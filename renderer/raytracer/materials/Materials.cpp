@@ -333,6 +333,8 @@ std::shared_ptr<Material> makeMix(const Reader& r, const ParamSet& p, const Mate
         a = r.named("namedmaterial1");
         b = r.named("namedmaterial2");
     }
+    if (a->hasInterior() || b->hasInterior())
+        r.fail("a subsurface material cannot be mixed: its scattering volume belongs to one surface");
     if (a->maxLobes() + b->maxLobes() > Bsdf::kMaxLobes)
         r.fail("mix of materials with more than " + std::to_string(Bsdf::kMaxLobes) + " lobes in all");
     // One hit has one shading frame, the mix's own, which has no bump map (as in pbrt-v3).
@@ -346,7 +348,7 @@ bool takesBumpMap(const std::string& type) { return type != "mix" && type != "" 
 
 const char* kSupported =
     "(matte, plastic, metal, mirror, glass, substrate, uber, translucent, mix, measured, none, interface; pbrt-v4's "
-    "diffuse, conductor, dielectric, thindielectric, diffusetransmission, coateddiffuse, coatedconductor)";
+    "diffuse, conductor, dielectric, thindielectric, diffusetransmission, coateddiffuse, coatedconductor, subsurface)";
 
 }  // namespace
 
@@ -387,9 +389,8 @@ std::shared_ptr<const Material> makeMaterial(const std::string& type, const Para
         m = std::make_shared<Passthrough>();
     } else if (isPbrt4MaterialName(type)) {
         m = makePbrt4Material(type, p, c);
-    } else if (type == "hair" || type == "subsurface") {
-        p.fail("material \"" + type + "\" is not supported: lenslab has no " +
-               (type == "hair" ? "hair scattering model" : "subsurface scattering") + " and the picture would differ");
+    } else if (type == "hair") {
+        p.fail("material \"hair\" is not supported: lenslab has no hair scattering model and the picture would differ");
     } else {
         p.fail("material \"" + type + "\" is not supported " + kSupported);
     }

@@ -1,12 +1,17 @@
 #include "materials/Pbrt4Materials.h"
 
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <optional>
 
 #include "materials/Bsdf.h"
 #include "materials/DiffuseLobes.h"
 #include "materials/MetalSpectra.h"
+#include "core/MeasuredMedia.h"
 #include "materials/MicrofacetLobes.h"
 #include "materials/SpecularLobes.h"
+#include "materials/SubsurfaceAlbedo.h"
 
 namespace lenslab {
 
@@ -52,8 +57,8 @@ public:
     }
     // An index of refraction: a number, or a spectrum (named glass, sampled) taken at its mean,
     // as lenslab renders without dispersion.
-    float eta(const std::string& name) const {
-        const float eta = float(p_.has(name) && p_.isSpectral(name) ? p_.getRgb(name, grey(1.5f)).y : p_.getFloat(name, 1.5));
+    float eta(const std::string& name, float fallback = 1.5f) const {
+        const float eta = float(p_.has(name) && p_.isSpectral(name) ? p_.getRgb(name, grey(fallback)).y : p_.getFloat(name, fallback));
         if (!(eta > 0)) p_.fail("\"" + name + "\" (index of refraction) must be positive");
         if (p_.isSpectral(name)) warn("\"" + name + "\" is a spectrum: rendered at one index, " + std::to_string(eta) + " (no dispersion)");
         return eta;
@@ -147,6 +152,41 @@ private:
     Roughness r_;
 };
 
+// pbrt-v4's subsurface: a dielectric boundary over a homogeneous scattering volume, rendered by
+// the volumetric path tracer as a random walk inside it (docs/media.md). The coefficients come
+// from sigma_a and sigma_s, a measured medium's name, or a reflectance and mean free path.
+class Subsurface final : public Material {
+public:
+    struct Interior {
+        TexturePtr sigmaA, sigmaS;         // given or named; else
+        TexturePtr reflectance, mfp;       // inverted through the albedo table
+        std::shared_ptr<const SubsurfaceAlbedoTable> table;
+        float scale = 1, g = 0;
+    };
+    Subsurface(float eta, Roughness r, Interior interior) : boundary_(eta, std::move(r)), interior_(std::move(interior)) {}
+    void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override { boundary_.addLobes(h, scale, b); }
+    int maxLobes() const override { return boundary_.maxLobes(); }
+    bool hasInterior() const override { return true; }
+    InteriorMedium interiorAt(const SurfaceHit& h) const override {
+        const Interior& in = interior_;
+        if (in.sigmaA) return {in.scale * atLeastZero(in.sigmaA->evaluate(h)), in.scale * atLeastZero(in.sigmaS->evaluate(h)), in.g};
+        const Vec3f r = atLeastZero(in.reflectance->evaluate(h)), mfp = in.scale * atLeastZero(in.mfp->evaluate(h));
+        float albedo[3], sigmaT[3];
+        for (int c = 0; c < 3; ++c) {
+            // The table is for isotropic scattering: its albedo is the reduced one, a (1 - g) / (1 - a g).
+            const float reduced = in.table->singleScatteringAlbedo(r[c]);
+            albedo[c] = reduced / (1 - in.g + in.g * reduced);
+            sigmaT[c] = 1 / std::max(mfp[c], 1e-30f);
+        }
+        const Vec3f a{albedo[0], albedo[1], albedo[2]}, t{sigmaT[0], sigmaT[1], sigmaT[2]};
+        return {(Vec3f{1, 1, 1} - a) * t, a * t, in.g};
+    }
+
+private:
+    Dielectric boundary_;
+    Interior interior_;
+};
+
 class ThinDielectricMaterial final : public Material {
 public:
     explicit ThinDielectricMaterial(float eta) : eta_(eta) {}
@@ -231,11 +271,58 @@ float layerThickness(const Reader& r) {
     return t;
 }
 
+// One albedo table per index of refraction, computed once (SubsurfaceAlbedo.h).
+std::shared_ptr<const SubsurfaceAlbedoTable> albedoTable(float eta) {
+    static std::mutex mutex;
+    static std::map<float, std::shared_ptr<const SubsurfaceAlbedoTable>> tables;
+    const std::lock_guard<std::mutex> lock(mutex);
+    auto& table = tables[eta];
+    if (!table) table = std::make_shared<const SubsurfaceAlbedoTable>(eta);
+    return table;
+}
+
+// pbrt-v4's four exclusive forms, in its order: "name", "sigma_a" with "sigma_s", "reflectance"
+// (with "mfp", default 1), or pbrt's default coefficients (those of whole milk, per mm).
+std::shared_ptr<Material> makeSubsurface(const Reader& r) {
+    const ParamSet& p = r.params();
+    Subsurface::Interior in;
+    in.g = float(p.getFloat("g", 0));
+    if (!(in.g > -1 && in.g < 1)) p.fail("g must lie in (-1, 1)");
+    in.scale = float(p.getFloat("scale", 1));
+    if (!(in.scale >= 0)) p.fail("scale must not be negative");
+    const std::string name = p.getString("name", "");
+    if (!name.empty()) {
+        const std::optional<MeasuredMedium> m = measuredMedium(name);
+        if (!m) p.fail("no measured medium is named \"" + name + "\" (docs/media.md lists them)");
+        if (in.g != 0) r.warn("\"g\" is ignored with a named medium: its scattering coefficients are reduced ones (g 0)");
+        in.g = 0;
+        in.sigmaA = makeConstantTexture(m->sigmaA);
+        in.sigmaS = makeConstantTexture(m->sigmaSPrime);
+    } else if (p.has("sigma_a") || p.has("sigma_s")) {
+        if (!p.has("sigma_a") || !p.has("sigma_s")) p.fail("give both \"sigma_a\" and \"sigma_s\"");
+        for (const char* n : {"sigma_a", "sigma_s"}) {
+            const ColorOrTexture c = p.getColorOrTexture(n, {});
+            if (!c.texture && !(c.color.x >= 0 && c.color.y >= 0 && c.color.z >= 0)) p.fail(std::string(n) + " must not be negative");
+        }
+        in.sigmaA = r.color("sigma_a", {});
+        in.sigmaS = r.color("sigma_s", {});
+    } else if (p.has("reflectance")) {
+        in.reflectance = r.color("reflectance", {});
+        in.mfp = r.color("mfp", grey(1));
+    } else {
+        in.sigmaA = makeConstantTexture({0.0011f, 0.0024f, 0.014f});
+        in.sigmaS = makeConstantTexture({2.55f, 3.21f, 3.77f});
+    }
+    const float eta = r.eta("eta", 1.33f);
+    if (in.reflectance) in.table = albedoTable(eta);
+    return std::make_shared<Subsurface>(eta, r.roughness(), std::move(in));
+}
+
 }  // namespace
 
 bool isPbrt4MaterialName(const std::string& type) {
     return type == "diffuse" || type == "conductor" || type == "dielectric" || type == "thindielectric" ||
-           type == "diffusetransmission" || type == "coateddiffuse" || type == "coatedconductor";
+           type == "diffusetransmission" || type == "coateddiffuse" || type == "coatedconductor" || type == "subsurface";
 }
 
 std::shared_ptr<Material> makePbrt4Material(const std::string& type, const ParamSet& p, const MaterialContext& c) {
@@ -247,6 +334,7 @@ std::shared_ptr<Material> makePbrt4Material(const std::string& type, const Param
     if (type == "diffusetransmission")
         return std::make_shared<DiffuseTransmission>(r.color("reflectance", grey(0.25f)), r.color("transmittance", grey(0.25f)),
                                                      float(p.getFloat("scale", 1)));
+    if (type == "subsurface") return makeSubsurface(r);
     if (type == "coateddiffuse")
         return std::make_shared<CoatedDiffuseMaterial>(r.color("reflectance", grey(0.5f)), r.roughness(), r.eta("eta"), layerThickness(r));
     return std::make_shared<CoatedConductorMaterial>(r.roughness("interface."), r.eta("interface.eta"), layerThickness(r),

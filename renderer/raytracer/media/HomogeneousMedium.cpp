@@ -15,26 +15,51 @@ Vec3f beer(Vec3f sigma, float t) {
 
 }  // namespace
 
-MediumEvent HomogeneousMedium::sample(Vec3f, Vec3f, float tMax, int hero, Pcg32& rng) const {
-    MediumEvent e;
-    if (isBlack(sigmaS_)) {  // a pure absorber: the transmittance itself, without sampling noise
-        e.t = tMax;
-        e.weight = beer(sigmaT_, tMax);
-        return e;
-    }
-    // Distance drawn for the hero channel: density sigma_t T(t) of scattering at t, T(tMax) of
-    // passing through.
-    const float sigma = sigmaT_[hero];
+MediumEvent HomogeneousMedium::sampleChannel(float tMax, int channel, Pcg32& rng, Vec3f& pdf) const {
+    // Distance drawn for one channel: density sigma_t T(t) of scattering at t, T(tMax) of passing
+    // through; pdf receives every channel's density of the same event.
+    const float sigma = sigmaT_[channel];
     const float u = rng.uniform();
     const float t = sigma > 0 ? -std::log1p(-u) / sigma : std::numeric_limits<float>::infinity();
+    MediumEvent e;
     e.scattered = t < tMax;
     e.t = e.scattered ? t : tMax;
     const Vec3f tr = beer(sigmaT_, e.t);
-    const Vec3f pdf = e.scattered ? sigmaT_ * tr : tr;
+    pdf = e.scattered ? sigmaT_ * tr : tr;
+    e.weight = e.scattered ? sigmaS_ * tr : tr;  // f, divided by the caller's density
+    return e;
+}
+
+MediumEvent HomogeneousMedium::sample(Vec3f, Vec3f, float tMax, int hero, Pcg32& rng) const {
+    if (isBlack(sigmaS_)) return absorbed(tMax);
+    Vec3f pdf;
+    MediumEvent e = sampleChannel(tMax, hero, rng, pdf);
     const float heroPdf = pdf[hero];
     if (!(heroPdf > 0)) return {false, e.t, {}, {1, 1, 1}};
-    e.weight = (e.scattered ? sigmaS_ * tr : tr) / heroPdf;
+    e.weight = e.weight / heroPdf;
     e.pdfRatio = pdf / heroPdf;
+    return e;
+}
+
+MediumEvent HomogeneousMedium::sampleByThroughput(float tMax, Vec3f throughput, Pcg32& rng) const {
+    if (isBlack(sigmaS_)) return absorbed(tMax);
+    const float total = throughput.x + throughput.y + throughput.z;
+    const Vec3f w = total > 0 ? throughput / total : Vec3f{1.0f / 3, 1.0f / 3, 1.0f / 3};
+    const float u = rng.uniform();
+    const int channel = u < w.x ? 0 : u < w.x + w.y ? 1 : 2;
+    Vec3f pdf;
+    MediumEvent e = sampleChannel(tMax, channel, rng, pdf);
+    const float mixture = dot(w, pdf);
+    if (!(mixture > 0)) return {false, e.t, {}, {1, 1, 1}};
+    e.weight = e.weight / mixture;
+    return e;
+}
+
+MediumEvent HomogeneousMedium::absorbed(float tMax) const {
+    // A pure absorber: the transmittance itself, without sampling noise.
+    MediumEvent e;
+    e.t = tMax;
+    e.weight = beer(sigmaT_, tMax);
     return e;
 }
 

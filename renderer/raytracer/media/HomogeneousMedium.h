@@ -10,8 +10,18 @@ public:
         : ParticipatingMedium(phase), sigmaS_(sigmaS), sigmaT_(sigmaA + sigmaS) {}
     MediumEvent sample(Vec3f o, Vec3f d, float tMax, int hero, Pcg32& rng) const override;
     Vec3f transmittance(Vec3f o, Vec3f d, float tMax, Pcg32& rng) const override;
+    // For long walks (subsurface volumes): the channel that draws the distance is chosen per event
+    // in proportion to the path's throughput, and the event weighted by the mixture of the channels'
+    // densities (one-sample MIS per event). A channel whose throughput grows is sampled more, so no
+    // channel's weight runs away over hundreds of events, where the path-level hero weights leave
+    // most paths to one channel (colour noise). The density does not depend on the path's hero,
+    // whose throughput is hero-independent: pdfRatio is 1.
+    MediumEvent sampleByThroughput(float tMax, Vec3f throughput, Pcg32& rng) const;
 
 private:
+    MediumEvent sampleChannel(float tMax, int channel, Pcg32& rng, Vec3f& pdf) const;
+    MediumEvent absorbed(float tMax) const;
+
     Vec3f sigmaS_, sigmaT_;
 };
 

@@ -1,7 +1,9 @@
 // MakeNamedMedium's types and their parameters. pbrt-v3's homogeneous and heterogeneous default to
 // its coefficients (skim milk's, per mm); pbrt-v4's uniformgrid, cloud and nanovdb default to 1 and 1.
 #include <cmath>
+#include <optional>
 
+#include "core/MeasuredMedia.h"
 #include "media/CloudMedium.h"
 #include "media/GridMedium.h"
 #include "media/HomogeneousMedium.h"
@@ -22,10 +24,16 @@ HenyeyGreenstein phaseOf(const ParamSet& p) {
     return HenyeyGreenstein(float(g));
 }
 
-// sigma_a and sigma_s times scale.
+// sigma_a and sigma_s (or a measured medium's, "preset", per mm) times scale.
 void coefficients(const ParamSet& p, Vec3f defaultA, Vec3f defaultS, Vec3f& sigmaA, Vec3f& sigmaS) {
-    if (p.has("preset")) p.fail("named measured media (\"preset\") are not supported: give sigma_a and sigma_s");
     const float scale = float(p.getFloat("scale", 1));
+    if (p.has("preset")) {
+        const std::string name = p.getString("preset", "");
+        const std::optional<MeasuredMedium> m = measuredMedium(name);
+        if (!m) p.fail("no measured medium is named \"" + name + "\" (docs/media.md lists them)");
+        defaultA = m->sigmaA;
+        defaultS = m->sigmaSPrime;
+    }
     sigmaA = scale * p.getRgb("sigma_a", defaultA);
     sigmaS = scale * p.getRgb("sigma_s", defaultS);
     if (!nonNegative(sigmaA) || !nonNegative(sigmaS)) p.fail("sigma_a, sigma_s and scale must not be negative");

@@ -360,9 +360,16 @@ private:
     // which render media in pbrt too (here by volpath). path, directlighting and whitted ignore
     // them, as in pbrt.
     void chooseMediaIntegrator() {
+        IntegratorSpec& spec = scene_.integrator;
+        if (subsurfaceWhere_ && spec.type != IntegratorType::VolPath) {
+            spec.type = IntegratorType::VolPath;
+            warn(integratorWhere_, "rendered by volpath (pbrt-v4's default integrator): the subsurface material at " +
+                                       describe(*subsurfaceWhere_) + " scatters light in a volume, which only volpath follows");
+            return;
+        }
         if (!mediaUsed_) return;
         if (integratorRendersMedia_) {
-            scene_.integrator.type = IntegratorType::VolPath;
+            spec.type = IntegratorType::VolPath;
         } else {
             warn(integratorWhere_, "ignores the scene's participating media, as in pbrt (Integrator \"volpath\" renders them)");
         }
@@ -517,12 +524,18 @@ private:
     void material(SourceLocation& where) {
         const std::string type = typeName(where, "a material type");
         g_.material = makeMaterial(type, paramsOf("material", where), materialContext());
+        noteSubsurface(*g_.material, where);
+    }
+    // A subsurface material's volume renders only in the volumetric path tracer (chooseMediaIntegrator).
+    void noteSubsurface(const Material& m, const SourceLocation& where) {
+        if (m.hasInterior() && !subsurfaceWhere_) subsurfaceWhere_ = where;
     }
     void makeNamedMaterial(SourceLocation& where) {
         const std::string n = typeName(where, "a material name");
         const ParamSet p = paramsOf("material", where);
         if (!p.has("type")) p.fail("MakeNamedMaterial needs \"string type\"");
         namedMaterials_[n] = makeMaterial(p.getString("type", ""), p, materialContext());
+        noteSubsurface(*namedMaterials_[n], where);
     }
     void namedMaterial(SourceLocation& where) {
         const std::string n = quoted(where, "a material name");
@@ -654,6 +667,7 @@ private:
     SourceLocation cameraMediumWhere_;
     bool mediaUsed_ = false;             // a shape or the camera lies in a medium
     bool integratorRendersMedia_ = false;
+    std::optional<SourceLocation> subsurfaceWhere_;  // the first subsurface material
     SourceLocation integratorWhere_{"", 0, "Integrator (default path)"};
     std::map<std::string, std::size_t> objectIndex_;  // the latest definition of each object name
     std::optional<std::size_t> object_;                // the object being defined
