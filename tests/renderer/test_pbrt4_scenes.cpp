@@ -118,6 +118,29 @@ TEST(Pbrt4Scenes, CoatedDiffuseOfWhiteBaseConservesEnergy) {
     EXPECT_NEAR(test::meanLum(test::render(scene, 8, 8, 256).image), 1.0, 0.02);
 }
 
+TEST(Pbrt4Scenes, CoatedMaterialsReflectTheSameFromBehindTheShadingNormal) {
+    // pbrt-v4's layered materials are two-sided. Seen from behind the shading normal (as where a
+    // coarse mesh's interpolated normals lean away from the viewer), the coat must not act as glass
+    // seen from inside, which past the critical angle (41.8 degrees for eta 1.5) reflects all.
+    test::TempDir dir;
+    const Vec3f wo = test::direction(80, 0);
+    const Vec3f below{-wo.x, -wo.y, -wo.z};
+    // A smooth coat over a white base without absorption conserves energy exactly: albedo 1.
+    const auto smooth = test::parseMaterial(dir, "Material \"coateddiffuse\" \"rgb reflectance\" [1 1 1] "
+                                                 "\"float thickness\" 0 \"float roughness\" 0");
+    EXPECT_NEAR(test::sampledAlbedo(*smooth, below, 200000).mean.y, 1.0, 0.01);
+    // A rough coat, and a coated conductor: the same value as the mirrored pair in front.
+    const SurfaceHit h = test::flatHit();
+    const Vec3f wi = test::direction(75, 180);
+    for (const char* m : {"Material \"coateddiffuse\" \"rgb reflectance\" [.4 .2 .2] \"float roughness\" 0.1",
+                          "Material \"coatedconductor\" \"float interface.roughness\" 0.1 \"float conductor.roughness\" 0.1"}) {
+        const auto coated = test::parseMaterial(dir, m);
+        const Vec3f front = coated->evaluate(h, wo, wi), back = coated->evaluate(h, below, Vec3f{-wi.x, -wi.y, -wi.z});
+        EXPECT_GT(front.y, 0) << m;
+        EXPECT_NEAR(back.y, front.y, 1e-5f * front.y) << m;
+    }
+}
+
 TEST(Pbrt4Scenes, ReadsGzippedIncludesAndAttributeDefaults) {
     test::TempDir dir;
     const std::string path = dir.write("part.pbrt.gz", "");

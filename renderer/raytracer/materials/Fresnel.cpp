@@ -56,6 +56,10 @@ Vec3f Fresnel::evaluate(float cosI) const {
             const float f = fresnelDielectric(cosI, etaI, etaT);
             return {f, f, f};
         }
+        case Kind::Coat: {
+            const float f = fresnelDielectric(std::fabs(cosI), etaI, etaT);
+            return {f, f, f};
+        }
         case Kind::Conductor: return fresnelConductor(cosI, etaI, eta, k);
         case Kind::One: break;
     }

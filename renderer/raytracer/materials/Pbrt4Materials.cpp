@@ -219,7 +219,7 @@ public:
         : reflectance_(std::move(reflectance)), coat_(std::move(coat)), eta_(eta), thickness_(thickness),
           internal_(coatInternalReflectance(eta)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
-        addReflection(b, scale, coat_, h, Fresnel::dielectric(1.0f, eta_));
+        addReflection(b, scale, coat_, h, Fresnel::coat(1.0f, eta_));
         const Vec3f r = atLeastZero(reflectance_->evaluate(h));
         b.add<CoatedDiffuse>(scale, Vec3f{std::min(r.x, 1.0f), std::min(r.y, 1.0f), std::min(r.z, 1.0f)}, eta_, thickness_, internal_);
     }
@@ -242,7 +242,7 @@ public:
         through_ = (1 - f0) * (1 - f0) * std::exp(-2 * thickness);
     }
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
-        addReflection(b, scale, coat_, h, Fresnel::dielectric(1.0f, eta_));
+        addReflection(b, scale, coat_, h, Fresnel::coat(1.0f, eta_));
         addReflection(b, through_ * scale, metal_, h, conductorFresnel(conductor_, h, eta_));
     }
     int maxLobes() const override { return 2; }
