@@ -3,26 +3,17 @@
 #include <filesystem>
 
 #include "HttpError.h"
-#include "LensAnalysis.h"
-#include "OpticsError.h"
 
 namespace lenslab {
 
 RenderJobInput resolveRenderJob(const std::string& jobId, const RenderRequest& request, const LensStore& lenses,
-                                const SceneCatalog& scenes) {
+                                const SceneCatalog& scenes, RenderSettingsChecks& checks) {
     const auto scene = scenes.find(request.scene);
     if (!scene) throw HttpError(400, "no scene with id '" + request.scene + "' (see GET /api/scenes)");
     const auto lens = lenses.find(request.lens);
     if (!lens) throw HttpError(400, "no lens with id '" + request.lens + "' (see GET /api/lenses)");
-    analyzeLens(lens->system, lensSettings(request));
     RenderJobInput input{jobId, request, scene->path, lens->path, lens->system.layout};
-    try {
-        checkRenderSettings(renderSettings(input));
-    } catch (const SceneError& e) {
-        throw HttpError(422, withoutServerPaths(e.what(), input));
-    } catch (const OpticsError& e) {
-        throw HttpError(422, withoutServerPaths(e.what(), input));
-    }
+    checks.check(input);
     return input;
 }
 

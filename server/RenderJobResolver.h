@@ -7,15 +7,16 @@
 #include "RenderRequest.h"
 #include "JobRenderer.h"
 #include "Render.h"
+#include "RenderSettingsChecks.h"
 #include "SceneCatalog.h"
 
 namespace lenslab {
 
-// HttpError 400 for an unknown scene or lens; OpticsError when the lens cannot be set as the
-// request asks; HttpError 422 when the scene's own settings (its f-number, focus, film) do not fit
-// the lens, or its camera takes no lens, as the render would fail.
+// HttpError 400 for an unknown scene or lens; HttpError 422 when the request's or the scene's own
+// settings (f-number, focus, film) do not fit the lens, or the scene's camera takes no lens, as the
+// render would fail (checks remembers the outcome).
 RenderJobInput resolveRenderJob(const std::string& jobId, const RenderRequest& request, const LensStore& lenses,
-                                const SceneCatalog& scenes);
+                                const SceneCatalog& scenes, RenderSettingsChecks& checks);
 
 // The renderer's settings for a job (all but the thread count).
 RenderSettings renderSettings(const RenderJobInput& job);

@@ -29,7 +29,7 @@ JobView findJob(const ServiceParts& parts, const std::string& id) {
 
 void submit(ServiceParts& parts, const RenderRequest& request, httplib::Response& res) {
     parts.quota.checkRoomForWrite();
-    const RenderJobInput input = resolveRenderJob(newRandomIdentifier("render-"), request, parts.lenses, parts.scenes);
+    const RenderJobInput input = resolveRenderJob(newRandomIdentifier("render-"), request, parts.lenses, parts.scenes, parts.renderChecks);
     try {
         const JobRecord record = parts.jobs.submit(input);
         res.set_header("Location", "/api/renders/" + record.id);

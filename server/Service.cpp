@@ -47,7 +47,7 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
       renderer_(std::move(renderer)),
       jobs_(jobStore_, *renderer_, config.limits, (fs::path(config.dataDir) / "renders").string()),
       quota_(config.dataDir, dataQuota(config), [this] { collectFinishedRenders(); }),
-      parts_{config_, lenses_, scenes_, diagrams_, jobs_, report_, quota_, secondsSinceEpoch()},
+      parts_{config_, lenses_, scenes_, renderChecks_, diagrams_, jobs_, report_, quota_, secondsSinceEpoch()},
       http_(config_, accessLog_) {
     recoverJobs();
     jobs_.setAfterJob([this] { collectFinishedRenders(); });
@@ -83,7 +83,7 @@ void Service::restoreQueuedJobs() {
     for (JobRecord record : jobStore_.queued()) {
         try {
             const RenderRequest request = parseRenderRequest(record.request, config_.limits, "");
-            jobs_.restore(record, resolveRenderJob(record.id, request, lenses_, scenes_));
+            jobs_.restore(record, resolveRenderJob(record.id, request, lenses_, scenes_, renderChecks_));
         } catch (const std::exception& e) {
             record.state = JobState::Failed;
             record.finished = secondsSinceEpoch();

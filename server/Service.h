@@ -41,6 +41,7 @@ private:
     Database database_;
     LensStore lenses_;
     SceneCatalog scenes_;
+    RenderSettingsChecks renderChecks_;
     DiagramCache diagrams_;
     JobStore jobStore_;
     std::unique_ptr<JobRenderer> renderer_;

@@ -6,6 +6,7 @@
 #include "DiagramCache.h"
 #include "JobQueue.h"
 #include "LensStore.h"
+#include "RenderSettingsChecks.h"
 #include "ReportJob.h"
 #include "SceneCatalog.h"
 #include "ServiceConfig.h"
@@ -16,6 +17,7 @@ struct ServiceParts {
     const ServiceConfig& config;
     LensStore& lenses;
     const SceneCatalog& scenes;
+    RenderSettingsChecks& renderChecks;  // render requests against their scene's camera and lens
     DiagramCache& diagrams;
     JobQueue& jobs;
     ReportJob& report;

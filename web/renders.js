@@ -27,13 +27,15 @@ function renderRequest(mode) {
   };
   if (currentFocus() !== "inf") request.focaldistance = currentFocus();
   if ($("film-diagonal").value) request.filmdiagonal = Number($("film-diagonal").value);
+  if ($("render-spectral").value) request.spectral = $("render-spectral").value === "on";
   return request;
 }
 
 function describeRequest(r) {
   const fstop = r.fstop ? `f/${Number(r.fstop).toFixed(1)}` : "scene f-number";
   const focus = r.focaldistance ? `focus ${Math.round(r.focaldistance)} mm` : "scene focus";
-  return `${r.lens} · ${r.scene} · ${fstop} · ${focus} · ${r.width}×${r.height} · ${r.spp} spp`;
+  const film = r.spectral === true ? " · spectral" : r.spectral === false ? " · RGB" : "";
+  return `${r.lens} · ${r.scene} · ${fstop} · ${focus} · ${r.width}×${r.height} · ${r.spp} spp${film}`;
 }
 
 // ---- the viewer's renders ------------------------------------------------------------------------

@@ -96,6 +96,25 @@ async function main() {
     check(await page.getAttribute("#wavelength", "aria-invalid") === "true", "1550 nm is marked invalid in its field");
     check(diagramUrls.length === sent, "and nothing is asked for while it is invalid");
     check((await page.textContent("#lens-colour tbody")).includes("486.13 nm"), "the data stay those of the last valid wavelength");
+    await page.fill("#wavelength", "");
+
+    // The render form's colour control: spectral or RGB through this dispersive lens, sent as asked.
+    await page.selectOption("#scene", "shared-telephoto");
+    await page.fill("#width", "32");
+    await page.fill("#height", "24");
+    await page.fill("#spp", "1");
+    for (const [choice, expected, label] of [["off", false, "RGB"], ["on", true, "spectral"], ["", null, ""]]) {
+      await page.selectOption("#render-spectral", choice);
+      const submitted = page.waitForResponse((r) => r.url().endsWith("/api/renders") && r.request().method() === "POST");
+      await page.click("#render-button");
+      const job = await (await submitted).json();
+      check(job.request && job.request.spectral === expected,
+            `colour "${choice || "default"}" submits spectral ${JSON.stringify(job.request && job.request.spectral)}`);
+      if (label) {
+        const text = await page.locator(`.history-item[data-id="${job.id}"]`).textContent();
+        check(text.includes(label), `and the history names it: "${text.trim().slice(0, 120)}"`);
+      }
+    }
     await page.screenshot({ path: join(artifacts, "zemax-lens.png"), fullPage: true });
   } finally {
     await closeAll(context, server, work);

@@ -337,6 +337,9 @@ TEST_F(ServerApi, RenderSettingsOutsideTheLensNameTheirField) {
                   "depth-of-field.pbrt:7: Camera \"realistic\": fstop: f-number 2.1 is outside this lens's range f/5.59", 0),
               0u)
         << sceneWide.raw;
+    const Reply again = postJson(c, "/api/renders", {{"scene", "depth-of-field"}, {"lens", "telephoto.250mm"}});
+    EXPECT_EQ(again.status, 422);  // the remembered outcome, word for word
+    EXPECT_EQ(again.body, sceneWide.body);
     EXPECT_EQ(get(c, "/api/renders").body["renders"].size(), 0u);
     EXPECT_EQ(postJson(c, "/api/renders", {{"scene", "depth-of-field"}, {"lens", "telephoto.250mm"}, {"fstop", 8},
                                            {"spp", 1}, {"width", 16}, {"height", 16}})
