@@ -1,7 +1,8 @@
 // Motion blur against closed forms: a sphere moving along a pixel row leaves a streak as long as its
 // path in the image, each pixel as bright as the time the sphere covers it; the shutter interval
-// moves the exposure in time without changing it; a moving camera sees what a moving world shows it;
-// rays at one moment see the transform of that moment; a scene without motion renders as before.
+// moves the exposure in time without changing it; ActiveTransform and CoordSysTransform keep pbrt's
+// scoping; a moving camera sees what a moving world shows it; rays at one moment see the transform
+// of that moment; a scene without motion renders as before.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -98,6 +99,37 @@ TEST(MotionBlur, TheShutterIntervalMovesTheExposureWithoutChangingIt) {
                                   "\"float shutteropen\" 0.5 \"float shutterclose\" 1", kMovingSphere)),
                                   kWidth, kHeight, 256).image;
     expectStreak(im, 0.5, 1, 16 + 8);
+}
+
+TEST(MotionBlur, ActiveTransformEndsWithItsBlockAndAtWorldBegin) {
+    // As in pbrt-v3 and pbrt-v4, ActiveTransform is part of the graphics state: AttributeEnd and
+    // TransformEnd restore it and WorldBegin resets it to both keyframes. The Translate after each
+    // scope thus moves both keyframes, and the sphere stands still at x = -1 (its disc, 8 pixels
+    // wide); an EndTime left active would move it from x = 0 to -1 instead (24 pixels).
+    const std::string still = "Translate -1 0 0\nShape \"sphere\" \"float radius\" 0.25\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {kStillCamera, "AttributeBegin\n ActiveTransform EndTime\nAttributeEnd\n" + still},
+        {kStillCamera, "TransformBegin\n ActiveTransform EndTime\nTransformEnd\n" + still},
+        {kStillCamera + "ActiveTransform EndTime\n", still},
+    };
+    test::TempDir dir;
+    for (const auto& [camera, world] : cases) {
+        SCOPED_TRACE(camera + world);
+        expectStreak(test::render(dir.write("s.pbrt", orthographicScene(camera, "", world)), kWidth, kHeight, 64).image,
+                     0, 0, 8);
+    }
+}
+
+TEST(MotionBlur, CoordSysTransformRestoresBothKeyframes) {
+    // A named system saved from a moving transform brings back its whole motion even while only
+    // StartTime is active (pbrt-v3 and pbrt-v4 set both keyframes): the sphere runs from x = -1 to 1.
+    test::TempDir dir;
+    const std::string world =
+        "ActiveTransform StartTime\nTranslate -1 0 0\nActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\n"
+        "CoordinateSystem \"path\"\nIdentity\nActiveTransform StartTime\nCoordSysTransform \"path\"\n"
+        "ActiveTransform All\nShape \"sphere\" \"float radius\" 0.25\n";
+    const Image im = test::render(dir.write("s.pbrt", orthographicScene(kStillCamera, "", world)), kWidth, kHeight, 256).image;
+    expectStreak(im, 0, 1, 32 + 8);
 }
 
 TEST(MotionBlur, AMovingCameraSeesWhatAMovingWorldShowsIt) {
