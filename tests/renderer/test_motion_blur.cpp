@@ -8,8 +8,10 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include "TestScenes.h"
+#include "core/Transform.h"
 
 namespace lenslab {
 namespace {
@@ -146,9 +148,19 @@ TEST(MotionBlur, AMovingCameraSeesWhatAMovingWorldShowsIt) {
     EXPECT_GT(litPixels(camera, 7), 32);
 }
 
+// pbrt's Transform directive for t: its matrix column by column.
+std::string transformDirective(const Transform& t) {
+    std::string s = "Transform [";
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) s += " " + std::to_string(t.forward.m[r][c]);
+    return s + " ]\n";
+}
+
 TEST(MotionBlur, RaysAtOneMomentSeeTheTransformOfThatMoment) {
-    // A bar instance turning by 90 degrees, with the shutter open only at time 0.5, against the bar
-    // standing still at 45 degrees: Embree's interpolation of the instance is the one lenslab writes.
+    // A bar instance moving, with the shutter open only at time 0.5, against the bar standing still
+    // where pbrt's motion puts it then: Embree's interpolation of the instance is the one lenslab
+    // writes. Turning by 90 degrees: still at 45. Squashed to half its height and turning by 60
+    // degrees: still at R(30) times the mean of the keyframes' polar stretches (S and R^T S R).
     test::TempDir dir;
     const std::string bar = "ObjectBegin \"bar\"\n Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]"
                             " \"point P\" [-0.45 -0.06 0  0.45 -0.06 0  0.45 0.06 0  -0.45 0.06 0]\nObjectEnd\n";
@@ -157,12 +169,24 @@ TEST(MotionBlur, RaysAtOneMomentSeeTheTransformOfThatMoment) {
                                                               bar + "AttributeBegin\n" + place + " ObjectInstance \"bar\"\nAttributeEnd\n")),
                             kWidth, kHeight, 16).image;
     };
-    const Image turning = renderBar("t.pbrt", "ActiveTransform EndTime\n Rotate 90 0 0 1\n ActiveTransform All\n");
-    const Image still = renderBar("s.pbrt", "Rotate 45 0 0 1\n");
-    double diff = 0;
-    for (std::size_t i = 0; i < still.rgb.size(); ++i) diff += std::fabs(still.rgb[i] - turning.rgb[i]);
-    EXPECT_LT(diff / still.rgb.size(), 1e-4);
-    EXPECT_GT(imageSum(still), 0.9 * 0.9 * 0.12 * 256);  // the bar is there: its area in pixels, nearly
+    const Transform S = scale(1, 0.5, 1), R = rotate(60, 0, 0, 1);
+    Matrix44 meanStretch = transpose(R.forward) * S.forward * R.forward;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) meanStretch.m[r][c] = (meanStretch.m[r][c] + S.forward.m[r][c]) / 2;
+    const std::pair<std::string, std::string> cases[] = {
+        {"ActiveTransform EndTime\n Rotate 90 0 0 1\n ActiveTransform All\n", "Rotate 45 0 0 1\n"},
+        {"Scale 1 0.5 1\n ActiveTransform EndTime\n Rotate 60 0 0 1\n ActiveTransform All\n",
+         transformDirective(rotate(30, 0, 0, 1) * makeTransform(meanStretch))},
+    };
+    for (const auto& [moving, placed] : cases) {
+        SCOPED_TRACE(moving);
+        const Image turning = renderBar("t.pbrt", moving);
+        const Image still = renderBar("s.pbrt", placed);
+        double diff = 0;
+        for (std::size_t i = 0; i < still.rgb.size(); ++i) diff += std::fabs(still.rgb[i] - turning.rgb[i]);
+        EXPECT_LT(diff / still.rgb.size(), 1e-4);
+        EXPECT_GT(imageSum(still), 0.9 * 0.5 * 0.9 * 0.12 * 256);  // the bar is there: 90% of its area (squashed or not)
+    }
 }
 
 TEST(MotionBlur, TransformTimesWithoutMotionRenderBitIdentically) {
