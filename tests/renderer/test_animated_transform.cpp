@@ -1,7 +1,9 @@
 // Moving transforms: the keyframes themselves at the ends, translation, rotation (the short way
-// round) and scale blended part by part in between, and the scene times mapped to the fraction rays carry.
+// round) and scale blended part by part in between as pbrt blends them (a stretch across the turn
+// included), and the scene times mapped to the fraction rays carry.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -47,6 +49,44 @@ TEST(AnimatedTransform, RotationTakesTheShortWayRound) {
 TEST(AnimatedTransform, ScaleBlendsLinearly) {
     const AnimatedTransform m(rotate(40, 0, 1, 0), rotate(40, 0, 1, 0) * scale(3, 2, 1));
     expectSameMatrix(m.at(0.5f), rotate(40, 0, 1, 0) * scale(2, 1.5, 1), 1e-12);
+}
+
+Matrix44 blended(const Matrix44& a, const Matrix44& b, double f) {
+    Matrix44 m;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) m.m[r][c] = (1 - f) * a.m[r][c] + f * b.m[r][c];
+    return m;
+}
+
+TEST(AnimatedTransform, AStretchAcrossTheTurnMovesAsInPbrt) {
+    // S then a 60 degree turn: pbrt splits the end keyframe S R into the rotation R and the
+    // symmetric stretch R^T S R, and blends those: R(60 f) ((1 - f) S + f R^T S R). A single
+    // Gram-Schmidt blend of the keyframes (rotation 0 to 40.9 degrees) strays by up to 0.039.
+    const Transform S = scale(1, 0.5, 1), R = rotate(60, 0, 0, 1);
+    const AnimatedTransform m(S, S * R);
+    EXPECT_EQ(m.steps().size(), std::size_t(AnimatedTransform::kMotionSteps + 1));
+    const Matrix44 endStretch = transpose(R.forward) * S.forward * R.forward;
+    double worst = 0;
+    for (int k = 1; k < 100; ++k) {
+        const float f = k / 100.0f;
+        const Matrix44 want = rotate(60 * double(f), 0, 0, 1).forward * blended(S.forward, endStretch, f);
+        const Matrix44 got = m.at(f).forward;
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) worst = std::max(worst, std::fabs(got.m[r][c] - want.m[r][c]));
+    }
+    EXPECT_LT(worst, 1e-4);
+    // At the time steps themselves (here f = 1/2) the motion is pbrt's to rounding.
+    expectSameMatrix(m.at(0.5f), rotate(30, 0, 0, 1) * makeTransform(blended(S.forward, endStretch, 0.5)), 1e-12);
+}
+
+TEST(AnimatedTransform, MotionsWithoutACrossStretchKeepTwoSteps) {
+    // Turns, shifts, scales along the object's own axes and mirrors: Embree's blend of the two
+    // keyframes is pbrt's motion already.
+    EXPECT_EQ(AnimatedTransform(translate(1, 0, 0), translate(0, 2, 1) * rotate(170, 1, 2, 3)).steps().size(), 2u);
+    EXPECT_EQ(AnimatedTransform(rotate(20, 0, 1, 0) * scale(3, 1, 2), rotate(80, 0, 1, 0) * scale(1, 2, 2)).steps().size(), 2u);
+    const AnimatedTransform mirrored(scale(-1, 1, 1), scale(-1, 1, 1) * rotate(90, 0, 0, 1));
+    EXPECT_EQ(mirrored.steps().size(), 2u);
+    expectSameMatrix(mirrored.at(0.5f), scale(-1, 1, 1) * rotate(45, 0, 0, 1), 1e-12);
 }
 
 TEST(AnimatedTransform, PerspectiveKeyframesAreRefused) {

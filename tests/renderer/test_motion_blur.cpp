@@ -1,14 +1,17 @@
 // Motion blur against closed forms: a sphere moving along a pixel row leaves a streak as long as its
 // path in the image, each pixel as bright as the time the sphere covers it; the shutter interval
-// moves the exposure in time without changing it; a moving camera sees what a moving world shows it;
-// rays at one moment see the transform of that moment; a scene without motion renders as before.
+// moves the exposure in time without changing it; ActiveTransform and CoordSysTransform keep pbrt's
+// scoping; a moving camera sees what a moving world shows it; rays at one moment see the transform
+// of that moment; a scene without motion renders as before.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include "TestScenes.h"
+#include "core/Transform.h"
 
 namespace lenslab {
 namespace {
@@ -100,6 +103,37 @@ TEST(MotionBlur, TheShutterIntervalMovesTheExposureWithoutChangingIt) {
     expectStreak(im, 0.5, 1, 16 + 8);
 }
 
+TEST(MotionBlur, ActiveTransformEndsWithItsBlockAndAtWorldBegin) {
+    // As in pbrt-v3 and pbrt-v4, ActiveTransform is part of the graphics state: AttributeEnd and
+    // TransformEnd restore it and WorldBegin resets it to both keyframes. The Translate after each
+    // scope thus moves both keyframes, and the sphere stands still at x = -1 (its disc, 8 pixels
+    // wide); an EndTime left active would move it from x = 0 to -1 instead (24 pixels).
+    const std::string still = "Translate -1 0 0\nShape \"sphere\" \"float radius\" 0.25\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {kStillCamera, "AttributeBegin\n ActiveTransform EndTime\nAttributeEnd\n" + still},
+        {kStillCamera, "TransformBegin\n ActiveTransform EndTime\nTransformEnd\n" + still},
+        {kStillCamera + "ActiveTransform EndTime\n", still},
+    };
+    test::TempDir dir;
+    for (const auto& [camera, world] : cases) {
+        SCOPED_TRACE(camera + world);
+        expectStreak(test::render(dir.write("s.pbrt", orthographicScene(camera, "", world)), kWidth, kHeight, 64).image,
+                     0, 0, 8);
+    }
+}
+
+TEST(MotionBlur, CoordSysTransformRestoresBothKeyframes) {
+    // A named system saved from a moving transform brings back its whole motion even while only
+    // StartTime is active (pbrt-v3 and pbrt-v4 set both keyframes): the sphere runs from x = -1 to 1.
+    test::TempDir dir;
+    const std::string world =
+        "ActiveTransform StartTime\nTranslate -1 0 0\nActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\n"
+        "CoordinateSystem \"path\"\nIdentity\nActiveTransform StartTime\nCoordSysTransform \"path\"\n"
+        "ActiveTransform All\nShape \"sphere\" \"float radius\" 0.25\n";
+    const Image im = test::render(dir.write("s.pbrt", orthographicScene(kStillCamera, "", world)), kWidth, kHeight, 256).image;
+    expectStreak(im, 0, 1, 32 + 8);
+}
+
 TEST(MotionBlur, AMovingCameraSeesWhatAMovingWorldShowsIt) {
     test::TempDir dir;
     const Image world = test::render(dir.write("w.pbrt", orthographicScene(kStillCamera, "", kMovingSphere)),
@@ -114,9 +148,19 @@ TEST(MotionBlur, AMovingCameraSeesWhatAMovingWorldShowsIt) {
     EXPECT_GT(litPixels(camera, 7), 32);
 }
 
+// pbrt's Transform directive for t: its matrix column by column.
+std::string transformDirective(const Transform& t) {
+    std::string s = "Transform [";
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) s += " " + std::to_string(t.forward.m[r][c]);
+    return s + " ]\n";
+}
+
 TEST(MotionBlur, RaysAtOneMomentSeeTheTransformOfThatMoment) {
-    // A bar instance turning by 90 degrees, with the shutter open only at time 0.5, against the bar
-    // standing still at 45 degrees: Embree's interpolation of the instance is the one lenslab writes.
+    // A bar instance moving, with the shutter open only at time 0.5, against the bar standing still
+    // where pbrt's motion puts it then: Embree's interpolation of the instance is the one lenslab
+    // writes. Turning by 90 degrees: still at 45. Squashed to half its height and turning by 60
+    // degrees: still at R(30) times the mean of the keyframes' polar stretches (S and R^T S R).
     test::TempDir dir;
     const std::string bar = "ObjectBegin \"bar\"\n Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]"
                             " \"point P\" [-0.45 -0.06 0  0.45 -0.06 0  0.45 0.06 0  -0.45 0.06 0]\nObjectEnd\n";
@@ -125,12 +169,24 @@ TEST(MotionBlur, RaysAtOneMomentSeeTheTransformOfThatMoment) {
                                                               bar + "AttributeBegin\n" + place + " ObjectInstance \"bar\"\nAttributeEnd\n")),
                             kWidth, kHeight, 16).image;
     };
-    const Image turning = renderBar("t.pbrt", "ActiveTransform EndTime\n Rotate 90 0 0 1\n ActiveTransform All\n");
-    const Image still = renderBar("s.pbrt", "Rotate 45 0 0 1\n");
-    double diff = 0;
-    for (std::size_t i = 0; i < still.rgb.size(); ++i) diff += std::fabs(still.rgb[i] - turning.rgb[i]);
-    EXPECT_LT(diff / still.rgb.size(), 1e-4);
-    EXPECT_GT(imageSum(still), 0.9 * 0.9 * 0.12 * 256);  // the bar is there: its area in pixels, nearly
+    const Transform S = scale(1, 0.5, 1), R = rotate(60, 0, 0, 1);
+    Matrix44 meanStretch = transpose(R.forward) * S.forward * R.forward;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) meanStretch.m[r][c] = (meanStretch.m[r][c] + S.forward.m[r][c]) / 2;
+    const std::pair<std::string, std::string> cases[] = {
+        {"ActiveTransform EndTime\n Rotate 90 0 0 1\n ActiveTransform All\n", "Rotate 45 0 0 1\n"},
+        {"Scale 1 0.5 1\n ActiveTransform EndTime\n Rotate 60 0 0 1\n ActiveTransform All\n",
+         transformDirective(rotate(30, 0, 0, 1) * makeTransform(meanStretch))},
+    };
+    for (const auto& [moving, placed] : cases) {
+        SCOPED_TRACE(moving);
+        const Image turning = renderBar("t.pbrt", moving);
+        const Image still = renderBar("s.pbrt", placed);
+        double diff = 0;
+        for (std::size_t i = 0; i < still.rgb.size(); ++i) diff += std::fabs(still.rgb[i] - turning.rgb[i]);
+        EXPECT_LT(diff / still.rgb.size(), 1e-4);
+        EXPECT_GT(imageSum(still), 0.9 * 0.5 * 0.9 * 0.12 * 256);  // the bar is there: 90% of its area (squashed or not)
+    }
 }
 
 TEST(MotionBlur, TransformTimesWithoutMotionRenderBitIdentically) {

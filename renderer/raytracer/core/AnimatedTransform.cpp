@@ -1,5 +1,6 @@
 #include "core/AnimatedTransform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -94,22 +95,20 @@ Quaternion slerp(const Quaternion& a, const Quaternion& b, double f) {
     return {wa * a.r + wb * b.r, wa * a.i + wb * b.i, wa * a.j + wb * b.j, wa * a.k + wb * b.k};
 }
 
-}  // namespace
-
-AnimatedTransform::AnimatedTransform(const Transform& start, const Transform& end)
-    : start_(start), end_(end), moves_(!sameMatrix(start.forward, end.forward)) {
-    if (!moves_) return;
-    startParts_ = partsOf(start.forward);
-    endParts_ = partsOf(end.forward);
-    Quaternion& q = endParts_.rotation;
-    if (dot(startParts_.rotation, q) < 0) q = {-q.r, -q.i, -q.j, -q.k};
+// b, or -b (the same rotation) where that lies on a's side of the quaternion sphere.
+Quaternion nearSide(const Quaternion& a, const Quaternion& b) {
+    return dot(a, b) < 0 ? Quaternion{-b.r, -b.i, -b.j, -b.k} : b;
 }
 
-Transform AnimatedTransform::at(float time) const {
-    if (!moves_ || time <= 0) return start_;
-    if (time >= 1) return end_;
-    const double f = time;
-    const TransformParts &a = startParts_, &b = endParts_;
+Matrix44 linearOf(const double R[3][3]) {
+    Matrix44 m;
+    for (int row = 0; row < 3; ++row)
+        for (int c = 0; c < 3; ++c) m.m[row][c] = R[row][c];
+    return m;
+}
+
+// The affine matrix T R S of Gram-Schmidt parts blended at fraction f: Embree's quaternion motion.
+Matrix44 blend(const TransformParts& a, const TransformParts& b, double f) {
     double R[3][3];
     rotationOf(slerp(a.rotation, b.rotation, f), R);
     Matrix44 m;
@@ -121,7 +120,103 @@ Transform AnimatedTransform::at(float time) const {
         }
         m.m[row][3] = (1 - f) * a.translation[row] + f * b.translation[row];
     }
-    return makeTransform(m);
+    return m;
+}
+
+// pbrt's split of an affine matrix, M = T R P with P symmetric.
+struct PolarParts {
+    double translation[3];
+    Quaternion rotation;
+    Matrix44 stretch;  // P, linear part only
+};
+
+// R is the limit of Newton's iteration R <- (R + R^-T) / 2 from the linear part L (quadratic
+// convergence). A mirror (det L < 0) is carried by P as -P, R being the rotation of -L.
+PolarParts polarOf(const Matrix44& m) {
+    Matrix44 L;
+    for (int row = 0; row < 3; ++row)
+        for (int c = 0; c < 3; ++c) L.m[row][c] = m.m[row][c];
+    const auto& a = L.m;
+    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    const double sign = det < 0 ? -1 : 1;
+    Matrix44 R = L;
+    for (int row = 0; row < 3; ++row)
+        for (int c = 0; c < 3; ++c) R.m[row][c] *= sign;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+        const Matrix44 inverseTranspose = transpose(inverse(R));
+        double change = 0;
+        for (int row = 0; row < 3; ++row)
+            for (int c = 0; c < 3; ++c) {
+                const double next = (R.m[row][c] + inverseTranspose.m[row][c]) / 2;
+                change = std::max(change, std::fabs(next - R.m[row][c]));
+                R.m[row][c] = next;
+            }
+        if (change < 1e-15) break;
+    }
+    PolarParts p;
+    for (int row = 0; row < 3; ++row) p.translation[row] = m.m[row][3];
+    double r[3][3];
+    for (int row = 0; row < 3; ++row)
+        for (int c = 0; c < 3; ++c) r[row][c] = R.m[row][c];
+    p.rotation = quaternionOf(r);
+    p.stretch = transpose(R) * L;
+    return p;
+}
+
+// pbrt's motion at fraction f: T and P blended linearly, R spherically (b's rotation already on
+// a's side).
+Matrix44 polarBlend(const PolarParts& a, const PolarParts& b, double f) {
+    double R[3][3];
+    rotationOf(slerp(a.rotation, b.rotation, f), R);
+    Matrix44 P;
+    for (int row = 0; row < 3; ++row)
+        for (int c = 0; c < 3; ++c) P.m[row][c] = (1 - f) * a.stretch.m[row][c] + f * b.stretch.m[row][c];
+    Matrix44 m = linearOf(R) * P;
+    for (int row = 0; row < 3; ++row) m.m[row][3] = (1 - f) * a.translation[row] + f * b.translation[row];
+    return m;
+}
+
+bool nearlySame(const Matrix44& a, const Matrix44& b) {
+    double size = 0, difference = 0;
+    for (int row = 0; row < 3; ++row)
+        for (int c = 0; c < 4; ++c) {
+            size = std::max(size, std::fabs(a.m[row][c]));
+            difference = std::max(difference, std::fabs(a.m[row][c] - b.m[row][c]));
+        }
+    return difference <= 1e-9 * (1 + size);
+}
+
+}  // namespace
+
+AnimatedTransform::AnimatedTransform(const Transform& start, const Transform& end)
+    : start_(start), end_(end), moves_(!sameMatrix(start.forward, end.forward)) {
+    if (!moves_) return;
+    TransformParts a = partsOf(start.forward), b = partsOf(end.forward);
+    b.rotation = nearSide(a.rotation, b.rotation);
+    PolarParts pa = polarOf(start.forward), pb = polarOf(end.forward);
+    pb.rotation = nearSide(pa.rotation, pb.rotation);
+    bool same = true;
+    for (const double f : {0.25, 0.5, 0.75}) same = same && nearlySame(blend(a, b, f), polarBlend(pa, pb, f));
+    if (same) {
+        steps_ = {a, b};
+        return;
+    }
+    steps_.push_back(a);
+    for (int i = 1; i <= kMotionSteps; ++i) {
+        TransformParts p = i == kMotionSteps ? b : partsOf(polarBlend(pa, pb, double(i) / kMotionSteps));
+        p.rotation = nearSide(steps_.back().rotation, p.rotation);
+        steps_.push_back(p);
+    }
+}
+
+Transform AnimatedTransform::at(float time) const {
+    if (!moves_ || time <= 0) return start_;
+    if (time >= 1) return end_;
+    // The step and the fraction within it, in float as Embree finds them.
+    const float segments = float(steps_.size() - 1), scaled = time * segments;
+    const float index = std::clamp(std::floor(scaled), 0.0f, segments - 1);
+    return makeTransform(blend(steps_[std::size_t(index)], steps_[std::size_t(index) + 1], scaled - index));
 }
 
 }  // namespace lenslab

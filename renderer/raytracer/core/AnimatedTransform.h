@@ -1,10 +1,18 @@
 #pragma once
 // A transform that moves during the exposure: pbrt's two keyframes (ActiveTransform StartTime and
-// EndTime), at the scene times TransformTimes names. Between them each keyframe's affine matrix is
-// taken apart as M = T R S (translation, rotation, and an upper-triangular scale and shear S) and the
-// parts are blended: T and S linearly, R by spherical interpolation of its quaternion. That is
-// Embree's quaternion motion for instances, so a moving instance and every ray's own copy of its
-// transform (the hit's shading frame, the camera) agree at every moment.
+// EndTime), at the scene times TransformTimes names. In between it moves as in pbrt-v3 and pbrt-v4:
+// each keyframe's affine matrix is taken apart by polar decomposition, M = T R P (translation,
+// rotation, symmetric stretch), and the parts are blended, T and P linearly, R by spherical
+// interpolation of its quaternion the short way round.
+// Embree's quaternion motion blends a different split, M = T R S with S upper triangular
+// (Gram-Schmidt), between its time steps. Where that split moves the same way (translations,
+// rotations, scales along the object's own axes: nearly every scene) the two keyframes are its two
+// time steps; where it does not (a stretch across the turning axes) pbrt's motion is sampled at
+// kMotionSteps + 1 even moments, and Embree blends between neighbours. at() blends the same steps,
+// so a moving instance and every ray's own copy of its transform (the hit's shading frame, the
+// camera) agree at every moment.
+#include <vector>
+
 #include "core/Transform.h"
 
 namespace lenslab {
@@ -21,7 +29,7 @@ struct Quaternion {
     double r = 1, i = 0, j = 0, k = 0;
 };
 
-// One keyframe's parts: M = T R S.
+// One time step's parts in Embree's form: M = T R S.
 struct TransformParts {
     double translation[3] = {0, 0, 0};
     Quaternion rotation;
@@ -30,6 +38,11 @@ struct TransformParts {
 
 class AnimatedTransform {
 public:
+    // Time steps where the Gram-Schmidt blend strays from pbrt's motion. The error falls as the
+    // square of the step: for a 60 degree turn of a 2:1 stretch at most 6e-5 of the object's size,
+    // against 0.039 with the two keyframes alone.
+    static constexpr int kMotionSteps = 32;
+
     AnimatedTransform() = default;  // the identity, still
     // Throws std::domain_error when the keyframes differ and one of them is not affine.
     AnimatedTransform(const Transform& start, const Transform& end);
@@ -39,15 +52,15 @@ public:
     // The transform at `time`, a TransformTimes::fraction: the keyframes themselves at 0 and 1 (a
     // still transform is returned as given, so a scene without motion renders as it did before).
     Transform at(float time) const;
-    // The keyframes' parts (moving transforms only), the end rotation on the start's side of the
-    // quaternion sphere so that interpolation turns the short way.
-    const TransformParts& startParts() const { return startParts_; }
-    const TransformParts& endParts() const { return endParts_; }
+    // Embree's time steps, evenly spread over the fractions 0 to 1 (moving transforms only: 2 or
+    // kMotionSteps + 1), each rotation on its predecessor's side of the quaternion sphere so that
+    // interpolation turns the short way.
+    const std::vector<TransformParts>& steps() const { return steps_; }
 
 private:
     Transform start_, end_;
     bool moves_ = false;
-    TransformParts startParts_, endParts_;
+    std::vector<TransformParts> steps_;
 };
 
 }  // namespace lenslab

@@ -36,16 +36,18 @@ RTCQuaternionDecomposition embreeParts(const TransformParts& p) {
     return q;
 }
 
-// A still instance takes Embree's affine 3x4 matrix, column by column; a moving one its two keyframes
-// as time steps, which Embree blends as AnimatedTransform::at does.
+// A still instance takes Embree's affine 3x4 matrix, column by column; a moving one its time steps,
+// which Embree blends as AnimatedTransform::at does.
 unsigned attachInstance(RTCDevice device, RTCScene world, RTCScene object, const AnimatedTransform& toWorld) {
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(g, object);
     if (toWorld.moves()) {
-        rtcSetGeometryTimeStepCount(g, 2);
-        const RTCQuaternionDecomposition start = embreeParts(toWorld.startParts()), end = embreeParts(toWorld.endParts());
-        rtcSetGeometryTransformQuaternion(g, 0, &start);
-        rtcSetGeometryTransformQuaternion(g, 1, &end);
+        const std::vector<TransformParts>& steps = toWorld.steps();
+        rtcSetGeometryTimeStepCount(g, unsigned(steps.size()));
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            const RTCQuaternionDecomposition q = embreeParts(steps[i]);
+            rtcSetGeometryTransformQuaternion(g, unsigned(i), &q);
+        }
     } else {
         float m[12];
         for (int col = 0; col < 4; ++col)

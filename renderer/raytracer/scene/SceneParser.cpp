@@ -48,6 +48,10 @@ struct TransformPair {
 struct GraphicsState {
     Transform ctm;      // at the start time (TransformTimes)
     Transform ctmEnd;   // at the end time
+    // Which of the two the transform directives change (ActiveTransform). Scoped like the
+    // transforms themselves, as in pbrt-v3 and pbrt-v4: AttributeEnd and TransformEnd restore it,
+    // WorldBegin resets it to both.
+    bool activeStart = true, activeEnd = true;
     std::shared_ptr<const Material> material;
     std::optional<AreaEmission> area;
     bool reverseOrientation = false;
@@ -198,12 +202,12 @@ private:
     // --- transforms -------------------------------------------------------------------------
     // Applies t to the transforms ActiveTransform selected (both unless told otherwise).
     void applyTransform(const Transform& t) {
-        if (activeStart_) g_.ctm = g_.ctm * t;
-        if (activeEnd_) g_.ctmEnd = g_.ctmEnd * t;
+        if (g_.activeStart) g_.ctm = g_.ctm * t;
+        if (g_.activeEnd) g_.ctmEnd = g_.ctmEnd * t;
     }
     void setTransform(const Transform& t) {
-        if (activeStart_) g_.ctm = t;
-        if (activeEnd_) g_.ctmEnd = t;
+        if (g_.activeStart) g_.ctm = t;
+        if (g_.activeEnd) g_.ctmEnd = t;
     }
     void translateDirective(SourceLocation& where) {
         const double x = number(where), y = number(where), z = number(where);
@@ -233,19 +237,21 @@ private:
     }
     void identityDirective(SourceLocation&) { setTransform(Transform{}); }
     void coordinateSystem(SourceLocation& where) { namedCoordinates_[quoted(where, "a name")] = {g_.ctm, g_.ctmEnd}; }
+    // Both keyframes, whatever ActiveTransform says (as pbrt-v3 and pbrt-v4 do): a named system
+    // is a whole motion.
     void coordSysTransform(SourceLocation& where) {
         const std::string n = quoted(where, "a name");
         auto it = namedCoordinates_.find(n);
         if (it == namedCoordinates_.end()) sceneFail(where, "unknown coordinate system \"" + n + "\"");
-        setTransform(activeStart_ ? it->second.start : it->second.end);
-        if (activeStart_ && activeEnd_) g_.ctmEnd = it->second.end;
+        g_.ctm = it->second.start;
+        g_.ctmEnd = it->second.end;
     }
     void activeTransform(SourceLocation& where) {
         const Token& t = in_.take(where, "StartTime, EndTime or All");
         if (t.quoted || (t.text != "StartTime" && t.text != "EndTime" && t.text != "All"))
             sceneFail(where, "expected StartTime, EndTime or All, got '" + t.text + "'");
-        activeStart_ = t.text != "EndTime";
-        activeEnd_ = t.text != "StartTime";
+        g_.activeStart = t.text != "EndTime";
+        g_.activeEnd = t.text != "StartTime";
     }
     void transformTimes(SourceLocation& where) {
         const double start = number(where), end = number(where);
@@ -271,6 +277,8 @@ private:
         } else {
             g_.ctm = stack_.back().state.ctm;
             g_.ctmEnd = stack_.back().state.ctmEnd;
+            g_.activeStart = stack_.back().state.activeStart;
+            g_.activeEnd = stack_.back().state.activeEnd;
         }
         stack_.pop_back();
     }
@@ -377,6 +385,7 @@ private:
     void worldBegin(SourceLocation&) {
         worldBegun_ = true;
         g_.ctm = g_.ctmEnd = Transform{};
+        g_.activeStart = g_.activeEnd = true;
         namedCoordinates_["world"] = {Transform{}, Transform{}};
     }
     void worldEnd(SourceLocation&) { worldEnded_ = true; }
@@ -658,7 +667,6 @@ private:
     SceneDescription& scene_;
     SceneParseOptions options_;
     GraphicsState g_;
-    bool activeStart_ = true, activeEnd_ = true;
     std::vector<StackEntry> stack_;
     std::map<std::string, TransformPair> namedCoordinates_;
     NamedMaterials namedMaterials_;
