@@ -1,7 +1,10 @@
 #include "LensDesignAnalysis.h"
 
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "Chromatic.h"
 #include "DiffractionMtf.h"
@@ -52,31 +55,26 @@ public:
         const ObjectField object{fieldDegrees, out_.lens.focus.objectZ};
         if (const std::optional<FieldAim> aimD = aimField(out_.lens.lens, object))
             f.reference = chiefImage(out_.lens.lens, *aimD, out_.imageZ);
+        // The wavelengths are independent (the wavefront and its PSF above all): traced side by
+        // side, then summed in their order, so the result does not depend on the thread count.
+        std::vector<WavelengthTrace> traces(lenses_.size());
+        tbb::parallel_for(std::size_t(0), lenses_.size(), [&](std::size_t j) { traces[j] = trace(lenses_[j], object, f.reference); });
         std::vector<std::complex<double>> sagittal(out_.frequencies.size()), tangential(out_.frequencies.size());
         double weightTotal = 0;
         for (std::size_t j = 0; j < lenses_.size(); ++j) {
-            const LensSystem& lens = lenses_[j];
-            const std::optional<FieldAim> aim = aimField(lens, object);
-            if (!aim) {
-                f.spots.push_back({lens.wavelength, {}, {}, 0, 0, int(pupil_.size())});
-                f.fans.push_back({lens.wavelength, {}, {}, {}});
-                f.rmsWavefrontWaves.push_back(kNaN);
-                continue;
-            }
-            f.spots.push_back(spotDiagram(lens, *aim, out_.imageZ, f.reference, pupil_));
-            f.fans.push_back(rayFan(lens, *aim, out_.imageZ, f.reference, in_.fanSamples));
-            const std::optional<WavefrontMap> w = wavefrontMap(lens, *aim, out_.imageZ, exitPupilZ_, in_.wavefront);
-            f.rmsWavefrontWaves.push_back(w ? w->rmsWaves : kNaN);
-            if (!w) continue;
+            WavelengthTrace& t = traces[j];
+            f.spots.push_back(std::move(t.spot));
+            f.fans.push_back(std::move(t.fan));
+            f.rmsWavefrontWaves.push_back(t.rmsWaves);
+            if (!t.otf) continue;
             // Each wavelength's OTF is relative to its own chief ray: its offset from the reference
             // (lateral colour) is a phase.
-            const OpticalTransfer otf = opticalTransfer(pointSpreadFunction(*w, in_.psfPadding));
-            const double sx = w->chiefImage.x - f.reference.x, sy = w->chiefImage.y - f.reference.y;
+            const double sx = t.chiefImage.x - f.reference.x, sy = t.chiefImage.y - f.reference.y;
             const double weight = out_.weights[j];
             for (std::size_t k = 0; k < out_.frequencies.size(); ++k) {
                 const double nu = out_.frequencies[k];
-                sagittal[k] += weight * otf.sagittal.at(nu) * std::polar(1.0, -kTwoPi * nu * sx);
-                tangential[k] += weight * otf.tangential.at(nu) * std::polar(1.0, -kTwoPi * nu * sy);
+                sagittal[k] += weight * t.otf->sagittal.at(nu) * std::polar(1.0, -kTwoPi * nu * sx);
+                tangential[k] += weight * t.otf->tangential.at(nu) * std::polar(1.0, -kTwoPi * nu * sy);
             }
             weightTotal += weight;
         }
@@ -90,6 +88,33 @@ public:
     }
 
 private:
+    // One wavelength at one field: its spot, fan and wavefront's OTF.
+    struct WavelengthTrace {
+        SpotDiagram spot;
+        RayFan fan;
+        double rmsWaves = kNaN;
+        std::optional<OpticalTransfer> otf;  // none when the wavefront could not be traced
+        Point2 chiefImage;
+    };
+
+    WavelengthTrace trace(const LensSystem& lens, const ObjectField& object, Point2 reference) const {
+        WavelengthTrace t;
+        const std::optional<FieldAim> aim = aimField(lens, object);
+        if (!aim) {
+            t.spot = {lens.wavelength, {}, {}, 0, 0, int(pupil_.size())};
+            t.fan = {lens.wavelength, {}, {}, {}};
+            return t;
+        }
+        t.spot = spotDiagram(lens, *aim, out_.imageZ, reference, pupil_);
+        t.fan = rayFan(lens, *aim, out_.imageZ, reference, in_.fanSamples);
+        const std::optional<WavefrontMap> w = wavefrontMap(lens, *aim, out_.imageZ, exitPupilZ_, in_.wavefront);
+        if (!w) return t;
+        t.rmsWaves = w->rmsWaves;
+        t.otf = opticalTransfer(pointSpreadFunction(*w, in_.psfPadding));
+        t.chiefImage = w->chiefImage;
+        return t;
+    }
+
     const LensDesignAnalysis& out_;
     const DesignAnalysisInputs& in_;
     const std::vector<LensSystem>& lenses_;
@@ -157,7 +182,10 @@ LensDesignAnalysis analyzeLensDesign(const LensSystem& lensAsBuilt, const Design
     std::vector<LensSystem> lenses;
     for (double nm : out.wavelengths) lenses.push_back(atWavelength(lensD, nm));
     const FieldAnalyser analyser(out, in, lenses, out.lens.pupils.exit.z);
-    for (double f : in.fields) out.fields.push_back(analyser.analyse(in.fieldsInDegrees ? f : f * out.largestFieldDegrees));
+    out.fields.resize(in.fields.size());
+    tbb::parallel_for(std::size_t(0), in.fields.size(), [&](std::size_t i) {
+        out.fields[i] = analyser.analyse(in.fieldsInDegrees ? in.fields[i] : in.fields[i] * out.largestFieldDegrees);
+    });
 
     for (int k = 0; k < in.curveSamples; ++k) out.curveFieldDegrees.push_back(out.largestFieldDegrees * k / (in.curveSamples - 1));
     for (const LensSystem& lens : lenses) out.fieldCurvature.push_back(fieldCurvature(lens, objectZ, out.imageZ, out.curveFieldDegrees));

@@ -273,7 +273,7 @@ function showAnalysis(analysis) {
       tr.insertCell().textContent = v;
   }
   const plots = $("editor-plots");
-  // Parsed as HTML, as the report embeds them (the plots leave out the SVG namespace); parsing does
+  // Parsed as HTML, as the report page inlines its own plots; parsing does
   // not run scripts, and the service wrote every byte.
   const parser = new DOMParser();
   const figures = Object.entries(analysis.plots_svg).map(([name, svg]) => {
