@@ -17,9 +17,12 @@ struct Box {
 // Passing rays from one film point through a grid of aiming-plane points.
 class FilmPointProbe {
 public:
-    FilmPointProbe(const LensSystem& lens, double filmZ) : lens_(lens), filmZ_(filmZ), aimZ_(lens.rearZ()) {}
+    // Aims through the plane of surface `aim`'s vertex.
+    FilmPointProbe(const LensSystem& lens, double filmZ, int aim)
+        : lens_(lens), filmZ_(filmZ), aimZ_(lens.surfaces[aim].z), aimRadius_(lens.surfaces[aim].apertureRadius) {}
 
     double aimDistance() const { return aimZ_ - filmZ_; }
+    double aimRadius() const { return aimRadius_; }  // the clear aperture at the aiming plane
 
     // Traces an n x n grid of cell centres over `box` from (r, 0, filmZ); pass[k] for cell k (row-major).
     const std::vector<BlockReason>& trace(double r, const Box& box, int n) {
@@ -36,7 +39,7 @@ public:
 
 private:
     const LensSystem& lens_;
-    double filmZ_, aimZ_;
+    double filmZ_, aimZ_, aimRadius_;
     RayBatch batch_;
 };
 
@@ -45,8 +48,8 @@ constexpr int kCoarse = 64;
 // The bounding box of the passing points seen from film radius r, one coarse cell wider on every
 // side; empty (x1 <= x0) when nothing passes. The search square grows while passing points touch
 // its edge.
-Box passingBounds(FilmPointProbe& probe, const LensSystem& lens, double r) {
-    double extent = 1.5 * lens.surfaces.back().apertureRadius;
+Box passingBounds(FilmPointProbe& probe, double r) {
+    double extent = 1.5 * probe.aimRadius();
     for (int grow = 0; grow < 5; ++grow, extent *= 2) {
         const Box square{-extent, extent, -extent, extent};
         const std::vector<BlockReason>& blocked = probe.trace(r, square, kCoarse);
@@ -72,8 +75,8 @@ struct Flux {
     double weighted = 0;  // the same area weighted by cos^4(theta)
 };
 
-Flux passingFlux(FilmPointProbe& probe, const LensSystem& lens, double r, int grid) {
-    const Box box = passingBounds(probe, lens, r);
+Flux passingFlux(FilmPointProbe& probe, double r, int grid) {
+    const Box box = passingBounds(probe, r);
     Flux flux;
     if (!(box.x1 > box.x0)) return flux;
     const std::vector<BlockReason>& blocked = probe.trace(r, box, grid);
@@ -102,13 +105,23 @@ std::vector<IlluminationSample> relativeIllumination(const LensSystem& lens, dou
     requireFilmBehindLens(lens, filmZ);
     if (options.filmRadii < 2 || options.grid < 8)
         throw OpticsError("relative illumination: need at least 2 film radii and an 8 x 8 grid");
-    FilmPointProbe probe(lens, filmZ);
-    const Flux centre = passingFlux(probe, lens, 0.0, options.grid);
+    // Rays are aimed through points of the rear vertex's plane. A cover glass just before the film
+    // brings that plane so close that the passing region is smaller than a search cell: then aim
+    // through the front vertex's plane, where it is about as large as the lens. (The ratio of
+    // fluxes does not depend on the plane: both film points are measured on the same one.)
+    FilmPointProbe nearProbe(lens, filmZ, int(lens.surfaces.size()) - 1), farProbe(lens, filmZ, 0);
+    FilmPointProbe* probeUsed = &nearProbe;
+    Flux centre = passingFlux(nearProbe, 0.0, options.grid);
+    if (!(centre.weighted > 0)) {
+        probeUsed = &farProbe;
+        centre = passingFlux(farProbe, 0.0, options.grid);
+    }
     if (!(centre.weighted > 0)) throw OpticsError("relative illumination: no ray from the film centre passes the lens");
+    FilmPointProbe& probe = *probeUsed;
     std::vector<IlluminationSample> samples;
     for (int k = 0; k < options.filmRadii; ++k) {
         const double r = maxFilmRadius * k / (options.filmRadii - 1);
-        const Flux f = k == 0 ? centre : passingFlux(probe, lens, r, options.grid);
+        const Flux f = k == 0 ? centre : passingFlux(probe, r, options.grid);
         samples.push_back({r, f.area / centre.area, f.weighted / centre.weighted});
     }
     return samples;
@@ -116,9 +129,9 @@ std::vector<IlluminationSample> relativeIllumination(const LensSystem& lens, dou
 
 double imageCircleRadius(const LensSystem& lens, double filmZ, double limit) {
     requireFilmBehindLens(lens, filmZ);
-    FilmPointProbe probe(lens, filmZ);
+    FilmPointProbe probe(lens, filmZ, int(lens.surfaces.size()) - 1);
     auto anyPasses = [&](double r) {
-        const Box b = passingBounds(probe, lens, r);
+        const Box b = passingBounds(probe, r);
         return b.x1 > b.x0;
     };
     if (!anyPasses(0.0)) return 0.0;

@@ -205,7 +205,7 @@ std::string designCaption(const std::string& file, const DesignPlots& d) {
         return "Transverse ray aberration at " + field("fans-field-") + ", tangential and sagittal, against pupil coordinate.";
     if (name == "field-curvature") return "Field curvature: sagittal and tangential focus against field, from the film plane.";
     if (name == "distortion") return "Distortion in percent against field.";
-    if (name == "relative-illumination") return "Relative illumination against field, 1 on the axis.";
+    if (name == "relative-illumination") return "Relative illumination against image height on the film, 1 on the axis.";
     if (name == "chromatic-focal-shift") return "Chromatic focal shift: the paraxial focus against wavelength, from the d line's.";
     return name;
 }

@@ -39,6 +39,30 @@ TEST(RelativeIllumination, BareStopFollowsCosineFourthLaw) {
     }
 }
 
+// A cover glass 0.2 mm before the film (as many real prescriptions end) leaves the rear vertex's
+// plane so close to the film that the light from a film point crosses it in a spot far smaller than
+// a search cell: the aim moves to the front vertex's plane, and the stop's cos^4 law comes out as
+// without the plate (a 0.3 mm plate 50 mm behind the stop moves the rays by well under 1%).
+TEST(RelativeIllumination, ACoverGlassJustBeforeTheFilmStillGivesTheFalloff) {
+    const double filmDistance = 50;
+    LensSystem lens = bareStop(0.5);
+    Surface front, back;
+    front.z = -49.5;
+    front.apertureRadius = back.apertureRadius = 60;
+    front.indexAfter = 1.5;
+    back.z = -49.8;
+    lens.surfaces.push_back(front);
+    lens.surfaces.push_back(back);
+    const auto plate = relativeIllumination(lens, -filmDistance, 40.0);
+    const auto bare = relativeIllumination(bareStop(0.5), -filmDistance, 40.0);
+    ASSERT_EQ(plate.size(), bare.size());
+    for (std::size_t k = 0; k < plate.size(); ++k) {
+        SCOPED_TRACE(plate[k].filmRadius);
+        EXPECT_NEAR(plate[k].relativeIllumination, bare[k].relativeIllumination, 0.01);
+    }
+    EXPECT_LT(plate.back().relativeIllumination, 0.5);  // the corner of a 40 mm field: cos^4(38.7 deg) = 0.37
+}
+
 TEST(RelativeIllumination, DoubleGaussFallsOffMonotonicallyFromOneAtTheCentre) {
     const LensSystem lens = bundled("dgauss.50mm.dat");
     const FirstOrder fo = computeFirstOrder(lens);
