@@ -190,4 +190,8 @@ std::string binaryUnderTest() { return overridden("LENSLAB_SERVER_BINARY", LENSL
 
 std::string fakeServerUnderTest() { return overridden("LENSLAB_FAKE_SERVER_BINARY", LENSLAB_FAKE_SERVER); }
 
+void writeFakeRendererScene(const std::string& folder) {
+    std::ofstream(folder + "/any.pbrt") << "# a scene the fake renderer ignores\nCamera \"realistic\"\nWorldBegin\nWorldEnd\n";
+}
+
 }  // namespace lenslab::test

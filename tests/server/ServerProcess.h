@@ -68,6 +68,10 @@ std::string binaryUnderTest();
 // The fake-render server likewise: LENSLAB_FAKE_SERVER_BINARY when set, else this build's.
 std::string fakeServerUnderTest();
 
+// Writes folder/any.pbrt: a scene the fake renderer never draws, but valid as far as the service's
+// submit checks read it (a realistic camera for the request's lens, a world).
+void writeFakeRendererScene(const std::string& folder);
+
 // A small valid lens table (a singlet and a stop).
 inline const std::string kSmallLensTable = "50.0 5.0 1.5 20.0\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
 

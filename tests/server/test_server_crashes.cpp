@@ -16,7 +16,7 @@ namespace {
 
 class ServerCrashes : public ::testing::Test {
 protected:
-    void SetUp() override { std::ofstream(scenes_.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n"; }
+    void SetUp() override { writeFakeRendererScene(scenes_.path()); }
     std::vector<std::string> args(std::vector<std::string> extra) const {
         extra.insert(extra.end(), {"--scenes", scenes_.path()});
         return extra;

@@ -29,7 +29,7 @@ double peakResidentMb(const ServerProcess& server) {
 // each cost the whole image in memory: they are sent a band of rows at a time.
 TEST(ServerDownloads, LargeDownloadsAreStreamed) {
     TempDir data, scenes;
-    std::ofstream(scenes.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n";
+    writeFakeRendererScene(scenes.path());
     ServerProcess server(fakeServerUnderTest(), data.path() + "/data", {"--scenes", scenes.path()});
     auto c = server.client();
     const Reply job = postJson(c, "/api/renders", {{"scene", "any"}, {"spp", 1}, {"width", 1024}, {"height", 1024}});
@@ -53,7 +53,7 @@ TEST(ServerDownloads, LargeDownloadsAreStreamed) {
 // Finding 11: a render whose EXR is missing or truncated.
 TEST(ServerDownloads, AnUnreadableImageNamesNoServerPath) {
     TempDir data, scenes;
-    std::ofstream(scenes.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n";
+    writeFakeRendererScene(scenes.path());
     ServerProcess server(fakeServerUnderTest(), data.path() + "/data", {"--scenes", scenes.path()});
     auto c = server.client();
     const Reply job = postJson(c, "/api/renders", {{"scene", "any"}, {"spp", 1}, {"width", 64}, {"height", 64}});

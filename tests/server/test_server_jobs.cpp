@@ -26,7 +26,7 @@ protected:
         return std::make_unique<ServerProcess>(kFakeServer, data_.path() + "/data", args);
     }
     std::vector<std::string> sceneArgs() const { return {"--scenes", scenes_.path()}; }
-    void SetUp() override { std::ofstream(scenes_.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n"; }
+    void SetUp() override { writeFakeRendererScene(scenes_.path()); }
 
     TempDir data_, scenes_;
 };

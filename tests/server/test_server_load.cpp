@@ -33,7 +33,7 @@ double healthSeconds(const ServerProcess& server) {
 // Finding 3: 40 event streams on a long render (more than the 32 HTTP threads).
 TEST(ServerLoad, EventStreamsDoNotHoldEveryThread) {
     TempDir data, scenes;
-    std::ofstream(scenes.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n";
+    writeFakeRendererScene(scenes.path());
     ServerProcess server(fakeServerUnderTest(), data.path() + "/data", {"--scenes", scenes.path()});
     auto c = server.client();
     // 300 tiles of 100 ms: 30 s unless cancelled.

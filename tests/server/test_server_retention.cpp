@@ -18,7 +18,7 @@ const std::string kFakeServer = LENSLAB_FAKE_SERVER;
 
 class ServerRetention : public ::testing::Test {
 protected:
-    void SetUp() override { std::ofstream(scenes_.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n"; }
+    void SetUp() override { writeFakeRendererScene(scenes_.path()); }
     std::unique_ptr<ServerProcess> start(std::vector<std::string> args = {}) {
         args.insert(args.end(), {"--scenes", scenes_.path()});
         return std::make_unique<ServerProcess>(kFakeServer, data(), args);

@@ -24,7 +24,7 @@ class ServerStorage : public ::testing::Test {
 protected:
     // Starts the fake-render server with files limited to kFileSizeLimit bytes.
     void SetUp() override {
-        std::ofstream(scenes_.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n";
+        writeFakeRendererScene(scenes_.path());
         server_ = startWithFileSizeLimit(LENSLAB_FAKE_SERVER, data_.path() + "/data", {"--scenes", scenes_.path()},
                                          kFileSizeLimit);
     }
@@ -91,7 +91,7 @@ TEST_F(ServerStorage, ALensWhoseFileCannotBeRemovedStaysAndTheClientHearsWhy) {
 // again once space is freed.
 TEST(ServerQuota, WritesAre507AtTheDataFolderQuotaAndReadsGoOn) {
     TempDir data, scenes;
-    std::ofstream(scenes.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n";
+    writeFakeRendererScene(scenes.path());
     const double quotaGiB = 4.0 / 1024;  // 4 MiB: the fresh folder (database, log) holds far less
     ServerProcess server(LENSLAB_FAKE_SERVER, data.path() + "/data",
                          {"--scenes", scenes.path(), "--max-data-gb", std::to_string(quotaGiB)});

@@ -17,7 +17,7 @@ namespace {
 class ServerValidation : public ::testing::Test {
 protected:
     void SetUp() override {
-        std::ofstream(scenes_.path() + "/any.pbrt") << "# a scene the fake renderer ignores\n";
+        writeFakeRendererScene(scenes_.path());
         server_ = std::make_unique<ServerProcess>(fakeServerUnderTest(), data(), std::vector<std::string>{"--scenes", scenes_.path()});
     }
     std::string data() const { return data_.path() + "/data"; }
