@@ -85,6 +85,21 @@ Counts counts(const std::string& out) {
     return c;
 }
 
+// What `lenslab COMMAND LENS --focus FOCUS --json` prints (the focus written to the last digit);
+// null, with a test failure, when it fails.
+nlohmann::json commandJson(const std::string& command, const fs::path& lens, double focus) {
+    std::ostringstream focusText;
+    focusText.precision(17);
+    focusText << focus;
+    const CommandRun cli =
+        run(std::string(LENSLAB_BINARY) + " " + command + " " + lens.string() + " --focus " + focusText.str() + " --json");
+    if (cli.status != 0) {
+        ADD_FAILURE() << cli.out;
+        return nullptr;
+    }
+    return nlohmann::json::parse(cli.out);
+}
+
 class ReportPage : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
@@ -198,13 +213,7 @@ TEST_F(ReportPage, TablesHoldTheNumbersOfLensJson) {
         const nlohmann::json stored = nlohmann::json::parse(readFile(site_ / "assets/lenses" / (lens + ".json")));
         const double focus = stored["focus"]["distance"].get<double>();
         EXPECT_TRUE(focus == 2000 || std::fabs(focus - 20 * stored["efl"].get<double>()) < 1e-9) << focus;
-        std::ostringstream focusText;
-        focusText.precision(17);
-        focusText << focus;
-        const CommandRun cli =
-            run(std::string(LENSLAB_BINARY) + " lens " + lensFile(source, lens).string() + " --focus " + focusText.str() + " --json");
-        ASSERT_EQ(cli.status, 0) << cli.out;
-        const nlohmann::json expected = nlohmann::json::parse(cli.out);
+        const nlohmann::json expected = commandJson("lens", lensFile(source, lens), focus);
         EXPECT_EQ(stored, expected);
 
         const std::size_t begin = html_.find("<article class=\"lens\" id=\"lens-" + lens + "\">");
@@ -244,13 +253,7 @@ TEST_F(ReportPage, EveryLensShowsTheDesignersAnalysisOfTheCommandLine) {
             EXPECT_NE(article.find("<img src=\"" + folder + plot + ".svg\""), std::string::npos) << plot;
 
         const double focus = nlohmann::json::parse(readFile(site_ / "assets/lenses" / (lens + ".json")))["focus"]["distance"];
-        std::ostringstream focusText;
-        focusText.precision(17);
-        focusText << focus;
-        const CommandRun cli =
-            run(std::string(LENSLAB_BINARY) + " analyze " + lensFile(source, lens).string() + " --focus " + focusText.str() + " --json");
-        ASSERT_EQ(cli.status, 0) << cli.out;
-        const nlohmann::json expected = nlohmann::json::parse(cli.out);
+        const nlohmann::json expected = commandJson("analyze", lensFile(source, lens), focus);
         EXPECT_EQ(nlohmann::json::parse(readFile(site_ / (folder + "analysis.json"))), expected);
         // The captions name each field as the data does.
         for (const nlohmann::json& field : expected["fields"]) {
