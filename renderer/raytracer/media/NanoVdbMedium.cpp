@@ -24,14 +24,13 @@ Vec3f indexExtentOf(const NanoVdbGrid& g) {
 
 // The largest density each cell of a grid over the index box can see: every stored value (leaf,
 // tile, background) raised over the cells its voxels reach by interpolation, one voxel beyond each
-// side. Up to 64 cells per axis (pbrt-v4's resolution), no more than one per voxel.
+// side.
 class DensityMajorants {
 public:
-    explicit DensityMajorants(const NanoVdbGrid& g) : g_(g), lo_(indexMinOf(g)), extent_(indexExtentOf(g)) {
-        m_.nx = std::min(64, int(extent_.x));
-        m_.ny = std::min(64, int(extent_.y));
-        m_.nz = std::min(64, int(extent_.z));
-        m_.values.assign(std::size_t(m_.nx) * m_.ny * m_.nz, std::max(0.0f, g.background));
+    explicit DensityMajorants(const NanoVdbGrid& g)
+        : g_(g), lo_(indexMinOf(g)), extent_(indexExtentOf(g)),
+          m_(MajorantGrid::forSamples(int(extent_.x), int(extent_.y), int(extent_.z))) {
+        for (float& v : m_.values) v = std::max(0.0f, g.background);
     }
 
     MajorantGrid scaled(float sigmaT) {
@@ -42,7 +41,7 @@ public:
             else
                 upper(std::size_t(tile.upper), origin);
         }
-        for (float& v : m_.values) v *= sigmaT;
+        scaleMajorants(m_, sigmaT);
         return std::move(m_);
     }
 
@@ -77,26 +76,16 @@ private:
             }
         }
     }
-    // Voxels origin .. origin + size - 1 hold values up to v: the cells of index space from one
-    // voxel below to one above see it.
+    // Voxels origin .. origin + size - 1 hold values up to v: index space from one voxel below to
+    // one above sees it.
     void raise(const std::array<int, 3>& origin, int size, float v) {
         if (v <= 0) return;
-        const int res[3] = {m_.nx, m_.ny, m_.nz};
-        int from[3], to[3];
+        double lo[3], hi[3];
         for (int a = 0; a < 3; ++a) {
-            const double cell = extent_[a] / res[a];
-            const double first = std::floor((double(origin[a]) - 1 - lo_[a]) / cell);
-            const double last = std::floor((double(origin[a]) + size - lo_[a]) / cell);
-            if (last < 0 || first >= res[a]) return;
-            from[a] = int(std::max(0.0, first));
-            to[a] = int(std::min(double(res[a] - 1), last));
+            lo[a] = (double(origin[a]) - 1 - lo_[a]) / extent_[a];
+            hi[a] = (double(origin[a]) + size - lo_[a]) / extent_[a];
         }
-        for (int z = from[2]; z <= to[2]; ++z)
-            for (int y = from[1]; y <= to[1]; ++y)
-                for (int x = from[0]; x <= to[0]; ++x) {
-                    float& m = m_.values[(std::size_t(z) * m_.ny + y) * m_.nx + x];
-                    m = std::max(m, v);
-                }
+        raiseMajorants(m_, lo, hi, v);
     }
 
     const NanoVdbGrid& g_;
