@@ -19,8 +19,7 @@ MediumEvent HomogeneousMedium::sampleChannel(float tMax, int channel, Pcg32& rng
     // Distance drawn for one channel: density sigma_t T(t) of scattering at t, T(tMax) of passing
     // through; pdf receives every channel's density of the same event.
     const float sigma = sigmaT_[channel];
-    const float u = rng.uniform();
-    const float t = sigma > 0 ? -std::log1p(-u) / sigma : std::numeric_limits<float>::infinity();
+    const float t = sigma > 0 ? rng.exponential() / sigma : std::numeric_limits<float>::infinity();
     MediumEvent e;
     e.scattered = t < tMax;
     e.t = e.scattered ? t : tMax;
