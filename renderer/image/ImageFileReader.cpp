@@ -5,6 +5,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "ExrFileReader.h"
 #include "ImagePluginAbi.h"
 
 #ifndef LENSLAB_IMAGE_PLUGIN
@@ -40,6 +41,8 @@ const Plugin& plugin() {
 }  // namespace
 
 DecodedImage readImageFile(const std::string& path) {
+    if (isExrFile(path))
+        if (std::optional<DecodedImage> exr = readExrFile(path)) return std::move(*exr);
     const Plugin& p = plugin();
     if (!p.error.empty()) throw std::runtime_error(p.error);
     PluginImage raw{};
