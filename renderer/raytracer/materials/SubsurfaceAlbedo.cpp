@@ -33,7 +33,7 @@ int scatteringsBeforeEscape(float eta, Pcg32& rng) {
     double z = 0;
     float mu = -enteringCosine(eta, rng);  // direction's z component
     for (int n = 0; n < kMaxScatterings;) {
-        const double step = -std::log1p(-double(rng.uniform()));
+        const double step = rng.exponential();
         if (z + step * mu < 0) {
             z += step * mu;
             mu = 2 * rng.uniform() - 1;
