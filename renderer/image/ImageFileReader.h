@@ -3,7 +3,7 @@
 // to floats. OpenImageIO drags in some 250 shared libraries (video codecs, OpenCV, GStreamer) that
 // cost every lenslab process 0.4 s to load, so it lives in a plugin loaded on the first read:
 // only scenes with image files pay for it, and none with EXR colour or luminance files, which
-// OpenEXR reads (ExrFileReader.h).
+// OpenEXR reads (ExrFileReader.h), or 8-bit PNGs, which lenslab's codec reads (as RGBA).
 #include <string>
 #include <vector>
 

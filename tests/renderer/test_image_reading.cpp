@@ -1,6 +1,7 @@
-// EXR files read by OpenEXR directly (without the OpenImageIO plugin): colour with alpha in R, G,
-// B, A order over an offset data window, luminance, exact values; other channels left to the
-// plugin, damaged files an error.
+// Image files read without the OpenImageIO plugin. EXR files by OpenEXR: colour with alpha in R,
+// G, B, A order over an offset data window, luminance, exact values; other channels left to the
+// plugin, damaged files an error. 8-bit PNGs by lenslab's codec: exact multiples of 1/255, a
+// header claiming too many pixels refused before anything is allocated.
 #include <gtest/gtest.h>
 
 #include <ImfChannelList.h>
@@ -13,6 +14,7 @@
 #include <stdexcept>
 
 #include "ExrFileReader.h"
+#include "PngCodec.h"
 #include "TempDir.h"
 
 namespace lenslab {
@@ -87,6 +89,43 @@ TEST(ExrReading, DamagedFilesAreErrors) {
     std::ofstream(dir.path() + "/header.exr", std::ios::binary) << bytes.substr(0, 40);
     EXPECT_THROW(readImageFile(dir.path() + "/header.exr"), std::runtime_error);
     EXPECT_FALSE(isExrFile(dir.path() + "/none.exr"));
+}
+
+std::string writePng(const std::string& path, int width, int height) {
+    std::vector<std::uint8_t> rgba;
+    for (int i = 0; i < width * height * 4; ++i) rgba.push_back(std::uint8_t(i * 37 % 256));
+    const std::vector<std::uint8_t> png = encodePngRgba8(width, height, rgba.data());
+    const std::string bytes(png.begin(), png.end());
+    std::ofstream(path, std::ios::binary) << bytes;
+    return bytes;
+}
+
+TEST(PngReading, EightBitPixelsComeBackAsExactFractions) {
+    test::TempDir dir;
+    writePng(dir.path() + "/p.png", 5, 3);
+    const DecodedImage image = readImageFile(dir.path() + "/p.png");
+    EXPECT_EQ(image.width, 5);
+    EXPECT_EQ(image.height, 3);
+    ASSERT_EQ(image.channels, 4);
+    EXPECT_TRUE(image.eightBit);
+    EXPECT_FALSE(image.floatingPoint);
+    for (int i = 0; i < 60; ++i) EXPECT_EQ(image.pixels[i], float(i * 37 % 256) / 255.0f) << i;
+}
+
+TEST(PngReading, HugeOrDamagedFilesAreErrors) {
+    test::TempDir dir;
+    std::string bytes = writePng(dir.path() + "/p.png", 4, 4);
+    bytes[16] = bytes[20] = 0x01;  // IHDR: 16.8 M x 16.8 M pixels
+    std::ofstream(dir.path() + "/huge.png", std::ios::binary) << bytes;
+    try {
+        readImageFile(dir.path() + "/huge.png");
+        ADD_FAILURE() << "read a 2^48-pixel image";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("268 Mpixels"), std::string::npos) << e.what();
+    }
+    const std::string good = writePng(dir.path() + "/p.png", 4, 4);
+    std::ofstream(dir.path() + "/cut.png", std::ios::binary) << good.substr(0, good.size() - 20);
+    EXPECT_THROW(readImageFile(dir.path() + "/cut.png"), std::runtime_error);
 }
 
 }  // namespace
