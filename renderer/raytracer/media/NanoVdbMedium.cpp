@@ -22,7 +22,7 @@ Vec3f indexExtentOf(const NanoVdbGrid& g) {
     return {size(0), size(1), size(2)};
 }
 
-// The largest density each cell of a grid over the index box can see: every stored value (leaf,
+// The largest density each cell of a grid over the index box can see: every stored value (voxel,
 // tile, background) raised over the cells its voxels reach by interpolation, one voxel beyond each
 // side.
 class DensityMajorants {
@@ -71,10 +71,14 @@ private:
             if (g_.lowerChild[slot] < 0) {
                 raise(slotOrigin(origin, n, 4, 8), 8, g_.lowerValue[slot]);
             } else {
-                const float* v = &g_.leafValues[std::size_t(g_.lowerChild[slot]) * kNanoVdbLeafVoxels];
-                raise(slotOrigin(origin, n, 4, 8), 8, *std::max_element(v, v + kNanoVdbLeafVoxels));
+                leaf(std::size_t(g_.lowerChild[slot]), slotOrigin(origin, n, 4, 8));
             }
         }
+    }
+    // Each voxel on its own: the cells of a leaf's empty and thin parts keep low majorants.
+    void leaf(std::size_t f, const std::array<int, 3>& origin) {
+        const float* v = &g_.leafValues[f * kNanoVdbLeafVoxels];
+        for (int n = 0; n < kNanoVdbLeafVoxels; ++n) raise(slotOrigin(origin, n, 3, 1), 1, v[n]);
     }
     // Voxels origin .. origin + size - 1 hold values up to v: index space from one voxel below to
     // one above sees it.
@@ -100,9 +104,11 @@ Transform boxToWorldOf(const NanoVdbGrid& g, const Transform& mediumToWorld) {
 
 }  // namespace
 
+MajorantGrid nanoVdbMajorants(const NanoVdbGrid& g, float sigmaT) { return DensityMajorants(g).scaled(sigmaT); }
+
 NanoVdbMedium::NanoVdbMedium(NanoVdbGrid density, Vec3f sigmaA, Vec3f sigmaS, const Transform& mediumToWorld,
                              HenyeyGreenstein phase)
-    : TrackedBoxMedium(boxToWorldOf(density, mediumToWorld), DensityMajorants(density).scaled(maxComponent(sigmaA + sigmaS)),
+    : TrackedBoxMedium(boxToWorldOf(density, mediumToWorld), nanoVdbMajorants(density, maxComponent(sigmaA + sigmaS)),
                        phase),
       grid_(std::move(density)), sigmaA_(sigmaA), sigmaS_(sigmaS), indexToMedium_(indexToMediumOf(grid_)),
       indexMin_(indexMinOf(grid_)), indexExtent_(indexExtentOf(grid_)) {}
