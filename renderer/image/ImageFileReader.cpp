@@ -2,10 +2,18 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 
+#include "ExrFileReader.h"
 #include "ImagePluginAbi.h"
+#include "PngCodec.h"
 
 #ifndef LENSLAB_IMAGE_PLUGIN
 #error "LENSLAB_IMAGE_PLUGIN (the plugin's path) must be defined by the build"
@@ -37,9 +45,42 @@ const Plugin& plugin() {
     return p;
 }
 
+constexpr std::uint64_t kMaxPixels = 1ULL << 28;  // as the plugin
+
+std::uint64_t bigEndian32(const unsigned char* p) {
+    return std::uint64_t(p[0]) << 24 | std::uint64_t(p[1]) << 16 | std::uint64_t(p[2]) << 8 | p[3];
+}
+
+// PNG files of up to 8 bits per channel through lenslab's own codec (PngCodec.h), without the
+// plugin; nothing for other files (16-bit PNGs keep their precision through OpenImageIO). Colour
+// types all come as RGBA.
+std::optional<DecodedImage> readEightBitPng(const std::string& path) {
+    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    std::ifstream in(path, std::ios::binary);
+    std::vector<std::uint8_t> bytes(25);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), 25)) return std::nullopt;
+    // The signature, then the IHDR chunk: width, height, bit depth.
+    if (!std::equal(kSignature, kSignature + 8, bytes.begin()) || std::memcmp(&bytes[12], "IHDR", 4) != 0 || bytes[24] > 8)
+        return std::nullopt;
+    if (bigEndian32(&bytes[16]) * bigEndian32(&bytes[20]) > kMaxPixels) throw std::runtime_error("more than 268 Mpixels");
+    bytes.insert(bytes.end(), std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    const RgbaImage rgba = decodePng(bytes);
+    DecodedImage image;
+    image.width = rgba.width;
+    image.height = rgba.height;
+    image.channels = 4;
+    image.eightBit = true;
+    image.pixels.reserve(rgba.rgba.size());
+    for (std::uint8_t v : rgba.rgba) image.pixels.push_back(v / 255.0f);
+    return image;
+}
+
 }  // namespace
 
 DecodedImage readImageFile(const std::string& path) {
+    if (isExrFile(path))
+        if (std::optional<DecodedImage> exr = readExrFile(path)) return std::move(*exr);
+    if (std::optional<DecodedImage> png = readEightBitPng(path)) return std::move(*png);
     const Plugin& p = plugin();
     if (!p.error.empty()) throw std::runtime_error(p.error);
     PluginImage raw{};

@@ -122,6 +122,25 @@ TEST(Media, CameraTakesTheOutsideMediumAtCamera) {
     EXPECT_NEAR(meanRadiance(probe, {0, 0, 0.25f}, {0, 0, 1}, 4).x, std::exp(-0.75), 1e-5);
 }
 
+// Without an Integrator directive each pbrt's own default: pbrt-v3 traces paths (the media
+// ignored, with a warning), pbrt-v4 runs volpath (a pbrt-v4 material marks the file as pbrt-v4's).
+TEST(Media, DefaultIntegratorIsEachPbrtsOwn) {
+    test::TempDir dir;
+    const std::string medium = "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n";
+    const SceneDescription v3 = parseSceneFile(scene(dir, medium + slab(1)));
+    ASSERT_EQ(v3.dialect, SceneDialect::PbrtV3);
+    EXPECT_EQ(v3.integrator.type, IntegratorType::Path);
+    ASSERT_FALSE(v3.warnings.empty());
+    EXPECT_NE(v3.warnings.back().find("ignores the scene's participating media"), std::string::npos);
+    const SceneDescription v4 = parseSceneFile(scene(dir, "Material \"diffuse\"\n" + medium + slab(1)));
+    ASSERT_EQ(v4.dialect, SceneDialect::PbrtV4);
+    EXPECT_EQ(v4.integrator.type, IntegratorType::VolPath);
+    EXPECT_EQ(v4.integrator.maxDepth, 5);
+    for (const std::string& w : v4.warnings) EXPECT_EQ(w.find("Integrator"), std::string::npos) << w;
+    const SceneDescription v4Path = parseSceneFile(scene(dir, "Material \"diffuse\"\n" + medium + slab(1), "Integrator \"path\"\n"));
+    EXPECT_EQ(v4Path.integrator.type, IntegratorType::Path);
+}
+
 TEST(Media, ParserChoosesVolpathAndNamesErrors) {
     test::TempDir dir;
     const std::string medium = "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n";

@@ -200,6 +200,37 @@ TEST(NanoVdb, TrackingThroughVaryingVoxelsMatchesQuadrature) {
     EXPECT_NEAR(passed / kSamples / std::exp(-depth), 1.0, 0.02);
 }
 
+// One dense voxel among thin ones in a leaf, and a second leaf of thin voxels: the majorant of
+// every cell bounds the interpolated density at 300,000 random points (on and between voxel
+// centres), and cells two voxels away from the dense voxel stay below it (voxels bounded one by
+// one, not by their leaf's largest value).
+TEST(NanoVdb, MajorantsBoundTheDensityVoxelByVoxel) {
+    NanoVdbTestGrid g;
+    Pcg32 rng(23);
+    for (int i = 0; i < 16; ++i)
+        for (int j = 0; j < 8; ++j)
+            for (int k = 0; k < 8; ++k) g.voxels[{i, j, k}] = 0.1f * rng.uniform();
+    g.voxels[{2, 5, 6}] = 4;
+    const NanoVdbGrid read = readBack(test::nanoVdbFile({g}));
+    const float sigmaT = 1.5f;
+    const MajorantGrid m = nanoVdbMajorants(read, sigmaT);
+    ASSERT_EQ(m.nx, 16);
+    ASSERT_EQ(m.ny, 8);
+    ASSERT_EQ(m.nz, 8);
+    for (int n = 0; n < 300000; ++n) {
+        const float x = 16 * rng.uniform(), y = 8 * rng.uniform(), z = 8 * rng.uniform();
+        ASSERT_LE(sigmaT * read.interpolate(x, y, z), m.at(int(x), int(y), int(z)) * (1 + 1e-6f)) << x << " " << y << " " << z;
+    }
+    // Voxel centres sit at integers and voxel i spans [i, i + 1): the dense voxel reaches cells
+    // 1..3, 4..6, 5..7 by interpolation, one voxel beyond that for safety.
+    for (int x = 0; x < 16; ++x)
+        for (int y = 0; y < 8; ++y)
+            for (int z = 0; z < 8; ++z) {
+                const bool near = std::abs(x - 2) <= 2 && std::abs(y - 5) <= 2 && std::abs(z - 6) <= 2;
+                if (!near) EXPECT_LE(m.at(x, y, z), sigmaT * 0.1f) << x << " " << y << " " << z;
+            }
+}
+
 TEST(NanoVdb, UnsupportedFilesAreErrorsNamingTheFile) {
     const std::string good = test::nanoVdbFile({blockGrid()});
     const auto errorContains = [](const std::string& bytes, const std::string& text) {

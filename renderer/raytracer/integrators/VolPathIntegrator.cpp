@@ -148,11 +148,14 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg
     for (;;) {
         Intersection it;
         ++raysTraced;
-        const bool hit = geometry_.intersect(o, d, kInf, time, it);
+        // Inside a subsurface volume the distance to the next scattering is drawn first and the ray
+        // traced only that far: most steps of a walk end before the boundary, without a hit.
+        const bool inVolume = interior.inside && medium == &*interior.medium;
+        const float tScatter = inVolume ? interior.medium->walkDistance(beta, rng) : kInf;
+        const bool hit = geometry_.intersect(o, d, tScatter, time, it);
         if (medium) {
             const float tMax = hit ? it.t : kInf;
-            const MediumEvent e = interior.inside && medium == &*interior.medium ? interior.medium->sampleByThroughput(tMax, beta, rng)
-                                                                               : medium->sample(o, d, tMax, hero, rng);
+            const MediumEvent e = inVolume ? interior.medium->walkEvent(tScatter, tMax, beta) : medium->sample(o, d, tMax, hero, rng);
             ratio *= e.pdfRatio;
             const float meanRatio = (ratio.x + ratio.y + ratio.z) / 3;
             beta = beta * e.weight / meanRatio;

@@ -33,7 +33,7 @@ int scatteringsBeforeEscape(float eta, Pcg32& rng) {
     double z = 0;
     float mu = -enteringCosine(eta, rng);  // direction's z component
     for (int n = 0; n < kMaxScatterings;) {
-        const double step = -std::log1p(-double(rng.uniform()));
+        const double step = rng.exponential();
         if (z + step * mu < 0) {
             z += step * mu;
             mu = 2 * rng.uniform() - 1;
@@ -73,12 +73,19 @@ SubsurfaceAlbedoTable::SubsurfaceAlbedoTable(float eta, int walks) : escapes_(kM
 }
 
 float SubsurfaceAlbedoTable::reflectance(float albedo) const {
-    double sum = 0, power = 1;
-    for (float fraction : escapes_) {
-        sum += fraction * power;
-        power *= albedo;
-    }
-    return float(sum);
+    // The sum of escapes_[n] albedo^n as four series in albedo^4, whose chains of multiplications
+    // the processor overlaps (one chain of up to 16,384 took a tenth of the table's time).
+    const double a = albedo, a4 = a * a * a * a;
+    double sum[4] = {0, 0, 0, 0}, power[4] = {1, a, a * a, a * a * a};
+    const std::size_t n = escapes_.size();
+    std::size_t i = 0;
+    for (; i + 4 <= n; i += 4)
+        for (int k = 0; k < 4; ++k) {
+            sum[k] += escapes_[i + k] * power[k];
+            power[k] *= a4;
+        }
+    for (int k = 0; i < n; ++i, ++k) sum[0] += escapes_[i] * power[k];
+    return float(sum[0] + sum[1] + sum[2] + sum[3]);
 }
 
 float SubsurfaceAlbedoTable::singleScatteringAlbedo(float reflectance) const {

@@ -13,14 +13,22 @@ Vec3f beer(Vec3f sigma, float t) {
     return {one(sigma.x), one(sigma.y), one(sigma.z)};
 }
 
+// A walk's channel probabilities: in proportion to the throughput.
+Vec3f byThroughput(Vec3f throughput) {
+    const float total = throughput.x + throughput.y + throughput.z;
+    return total > 0 ? throughput / total : Vec3f{1.0f / 3, 1.0f / 3, 1.0f / 3};
+}
+
 }  // namespace
 
-MediumEvent HomogeneousMedium::sampleChannel(float tMax, int channel, Pcg32& rng, Vec3f& pdf) const {
-    // Distance drawn for one channel: density sigma_t T(t) of scattering at t, T(tMax) of passing
-    // through; pdf receives every channel's density of the same event.
+float HomogeneousMedium::distance(int channel, Pcg32& rng) const {
     const float sigma = sigmaT_[channel];
-    const float u = rng.uniform();
-    const float t = sigma > 0 ? -std::log1p(-u) / sigma : std::numeric_limits<float>::infinity();
+    return sigma > 0 ? rng.exponential() / sigma : std::numeric_limits<float>::infinity();
+}
+
+MediumEvent HomogeneousMedium::eventAt(float t, float tMax, Vec3f& pdf) const {
+    // Scattered at t (density sigma_t T(t)) or passed on to tMax (T(tMax)), the same for every
+    // channel's draw: pdf receives each channel's density of the event.
     MediumEvent e;
     e.scattered = t < tMax;
     e.t = e.scattered ? t : tMax;
@@ -33,7 +41,7 @@ MediumEvent HomogeneousMedium::sampleChannel(float tMax, int channel, Pcg32& rng
 MediumEvent HomogeneousMedium::sample(Vec3f, Vec3f, float tMax, int hero, Pcg32& rng) const {
     if (isBlack(sigmaS_)) return absorbed(tMax);
     Vec3f pdf;
-    MediumEvent e = sampleChannel(tMax, hero, rng, pdf);
+    MediumEvent e = eventAt(distance(hero, rng), tMax, pdf);
     const float heroPdf = pdf[hero];
     if (!(heroPdf > 0)) return {false, e.t, {}, {1, 1, 1}};
     e.weight = e.weight / heroPdf;
@@ -41,15 +49,18 @@ MediumEvent HomogeneousMedium::sample(Vec3f, Vec3f, float tMax, int hero, Pcg32&
     return e;
 }
 
-MediumEvent HomogeneousMedium::sampleByThroughput(float tMax, Vec3f throughput, Pcg32& rng) const {
-    if (isBlack(sigmaS_)) return absorbed(tMax);
-    const float total = throughput.x + throughput.y + throughput.z;
-    const Vec3f w = total > 0 ? throughput / total : Vec3f{1.0f / 3, 1.0f / 3, 1.0f / 3};
+float HomogeneousMedium::walkDistance(Vec3f throughput, Pcg32& rng) const {
+    if (isBlack(sigmaS_)) return std::numeric_limits<float>::infinity();
+    const Vec3f w = byThroughput(throughput);
     const float u = rng.uniform();
-    const int channel = u < w.x ? 0 : u < w.x + w.y ? 1 : 2;
+    return distance(u < w.x ? 0 : u < w.x + w.y ? 1 : 2, rng);
+}
+
+MediumEvent HomogeneousMedium::walkEvent(float t, float tMax, Vec3f throughput) const {
+    if (isBlack(sigmaS_)) return absorbed(tMax);
     Vec3f pdf;
-    MediumEvent e = sampleChannel(tMax, channel, rng, pdf);
-    const float mixture = dot(w, pdf);
+    MediumEvent e = eventAt(t, tMax, pdf);
+    const float mixture = dot(byThroughput(throughput), pdf);
     if (!(mixture > 0)) return {false, e.t, {}, {1, 1, 1}};
     e.weight = e.weight / mixture;
     return e;

@@ -16,10 +16,15 @@ public:
     // channel's weight runs away over hundreds of events, where the path-level hero weights leave
     // most paths to one channel (colour noise). The density does not depend on the path's hero,
     // whose throughput is hero-independent: pdfRatio is 1.
-    MediumEvent sampleByThroughput(float tMax, Vec3f throughput, Pcg32& rng) const;
+    // The distance is drawn first (infinite where nothing scatters), so that the caller traces its
+    // ray only that far; walkEvent, with the same throughput, then gives the event for the surface
+    // at tMax (t >= tMax: passed on to it).
+    float walkDistance(Vec3f throughput, Pcg32& rng) const;
+    MediumEvent walkEvent(float t, float tMax, Vec3f throughput) const;
 
 private:
-    MediumEvent sampleChannel(float tMax, int channel, Pcg32& rng, Vec3f& pdf) const;
+    float distance(int channel, Pcg32& rng) const;
+    MediumEvent eventAt(float t, float tMax, Vec3f& pdf) const;
     MediumEvent absorbed(float tMax) const;
 
     Vec3f sigmaS_, sigmaT_;

@@ -15,8 +15,38 @@ struct MajorantGrid {
     std::vector<float> values;  // per cell, x fastest: (z * ny + y) * nx + x
 
     static MajorantGrid uniform(float majorant) { return {1, 1, 1, {majorant}}; }
+    // Zeros over a volume of nx x ny x nz samples: one cell per sample, up to 64 per axis (pbrt-v4's
+    // nanovdb resolution; finer cells cost more steps of the walk than they save lookups).
+    static MajorantGrid forSamples(int nx, int ny, int nz) {
+        const auto cells = [](int n) { return std::clamp(n, 1, 64); };
+        MajorantGrid g{cells(nx), cells(ny), cells(nz), {}};
+        g.values.assign(std::size_t(g.nx) * g.ny * g.nz, 0.0f);
+        return g;
+    }
     float at(int x, int y, int z) const { return values[(std::size_t(z) * ny + y) * nx + x]; }
+    float& at(int x, int y, int z) { return values[(std::size_t(z) * ny + y) * nx + x]; }
 };
+
+// Raises to at least v every cell that meets the box lo..hi of the unit cube (a sample's reach by
+// interpolation; it may extend past the cube). Cells touching the box at a face count too, so
+// rounding never leaves out a cell the box reaches.
+inline void raiseMajorants(MajorantGrid& g, const double lo[3], const double hi[3], float v) {
+    const int res[3] = {g.nx, g.ny, g.nz};
+    int from[3], to[3];
+    for (int a = 0; a < 3; ++a) {
+        const double first = std::floor(lo[a] * res[a]), last = std::floor(hi[a] * res[a]);
+        if (last < 0 || first >= res[a]) return;
+        from[a] = int(std::max(0.0, first));
+        to[a] = int(std::min(double(res[a] - 1), last));
+    }
+    for (int z = from[2]; z <= to[2]; ++z)
+        for (int y = from[1]; y <= to[1]; ++y)
+            for (int x = from[0]; x <= to[0]; ++x) g.at(x, y, z) = std::max(g.at(x, y, z), v);
+}
+
+inline void scaleMajorants(MajorantGrid& g, float factor) {
+    for (float& v : g.values) v *= factor;
+}
 
 // Calls visit(tStart, tEnd, majorant) for the cells the ray o + t d (unit-cube coordinates) crosses
 // between t0 and t1 (both inside the cube), in order, until visit returns false.

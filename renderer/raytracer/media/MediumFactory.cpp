@@ -51,7 +51,7 @@ std::shared_ptr<const ParticipatingMedium> makeDensityGrid(const ParamSet& p, co
                                               Vec3f defaultS) {
     Vec3f sigmaA, sigmaS;
     coefficients(p, defaultA, defaultS, sigmaA, sigmaS);
-    MediumGrid grid;
+    DensityGrid grid;
     grid.nx = p.getInt("nx", 1);
     grid.ny = p.getInt("ny", 1);
     grid.nz = p.getInt("nz", 1);
@@ -62,13 +62,13 @@ std::shared_ptr<const ParticipatingMedium> makeDensityGrid(const ParamSet& p, co
                std::to_string(std::size_t(grid.nx) * grid.ny * grid.nz));
     for (double d : density) {
         if (!(d >= 0)) p.fail("\"density\" values must not be negative");
-        grid.sigmaA.push_back(float(d) * sigmaA);
-        grid.sigmaS.push_back(float(d) * sigmaS);
+        if (!(float(d) < INFINITY)) p.fail("\"density\" values must be finite single-precision numbers");
+        grid.density.push_back(float(d));
     }
     Vec3f p0, p1;
     boxCorners(p, p0, p1);
     const Transform boxToWorld = mediumToWorld * translate(p0.x, p0.y, p0.z) * scale(p1.x - p0.x, p1.y - p0.y, p1.z - p0.z);
-    return std::make_shared<GridMedium>(std::move(grid), boxToWorld, phaseOf(p));
+    return std::make_shared<GridMedium>(std::move(grid), sigmaA, sigmaS, boxToWorld, phaseOf(p));
 }
 
 std::shared_ptr<const ParticipatingMedium> makeCloud(const ParamSet& p, const Transform& mediumToWorld) {

@@ -293,16 +293,26 @@ std::optional<NanoVdbGrid> readNanoVdbFile(const std::string& path, const std::s
     return readNanoVdbGrid(in, gridName, path);
 }
 
-float NanoVdbGrid::voxel(int i, int j, int k) const {
+const float* NanoVdbGrid::block(int i, int j, int k, float& constant) const {
     const uint64_t key = (uint64_t(uint32_t(i) >> 12) << 42) | (uint64_t(uint32_t(j) >> 12) << 21) | uint64_t(uint32_t(k) >> 12);
     const auto tile = std::lower_bound(root.begin(), root.end(), key, [](const RootTile& t, uint64_t k) { return t.key < k; });
-    if (tile == root.end() || tile->key != key) return background;
-    if (tile->upper < 0) return tile->value;
+    constant = background;
+    if (tile == root.end() || tile->key != key) return nullptr;
+    constant = tile->value;
+    if (tile->upper < 0) return nullptr;
     const std::size_t u = std::size_t(tile->upper) * kNanoVdbUpperSlots + (((i & 4095) >> 7) << 10 | ((j & 4095) >> 7) << 5 | ((k & 4095) >> 7));
-    if (upperChild[u] < 0) return upperValue[u];
+    constant = upperValue[u];
+    if (upperChild[u] < 0) return nullptr;
     const std::size_t l = std::size_t(upperChild[u]) * kNanoVdbLowerSlots + (((i & 127) >> 3) << 8 | ((j & 127) >> 3) << 4 | ((k & 127) >> 3));
-    if (lowerChild[l] < 0) return lowerValue[l];
-    return leafValues[std::size_t(lowerChild[l]) * kNanoVdbLeafVoxels + ((i & 7) << 6 | (j & 7) << 3 | (k & 7))];
+    constant = lowerValue[l];
+    if (lowerChild[l] < 0) return nullptr;
+    return &leafValues[std::size_t(lowerChild[l]) * kNanoVdbLeafVoxels];
+}
+
+float NanoVdbGrid::voxel(int i, int j, int k) const {
+    float constant;
+    const float* leaf = block(i, j, k, constant);
+    return leaf ? leaf[(i & 7) << 6 | (j & 7) << 3 | (k & 7)] : constant;
 }
 
 float NanoVdbGrid::interpolate(double x, double y, double z) const {
@@ -311,10 +321,22 @@ float NanoVdbGrid::interpolate(double x, double y, double z) const {
     const double fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
     const int i = int(fx), j = int(fy), k = int(fz);
     const float tx = float(x - fx), ty = float(y - fy), tz = float(z - fz);
+    const auto weight = [&](int dx, int dy, int dz) { return (dx ? tx : 1 - tx) * (dy ? ty : 1 - ty) * (dz ? tz : 1 - tz); };
     float sum = 0;
+    if ((i & 7) != 7 && (j & 7) != 7 && (k & 7) != 7) {
+        // The eight corners share one aligned 8^3 block (7 in 8 lookups per axis): one descent.
+        float constant;
+        const float* leaf = block(i, j, k, constant);
+        const int first = (i & 7) << 6 | (j & 7) << 3 | (k & 7);
+        for (int corner = 0; corner < 8; ++corner) {
+            const int dx = corner & 1, dy = (corner >> 1) & 1, dz = corner >> 2;
+            sum += weight(dx, dy, dz) * (leaf ? leaf[first + (dx << 6 | dy << 3 | dz)] : constant);
+        }
+        return sum;
+    }
     for (int corner = 0; corner < 8; ++corner) {
         const int dx = corner & 1, dy = (corner >> 1) & 1, dz = corner >> 2;
-        const float w = (dx ? tx : 1 - tx) * (dy ? ty : 1 - ty) * (dz ? tz : 1 - tz);
+        const float w = weight(dx, dy, dz);
         if (w > 0) sum += w * voxel(i + dx, j + dy, k + dz);
     }
     return sum;

@@ -51,6 +51,9 @@ struct NanoVdbGrid {
 
     // The stored value of voxel (i, j, k): inactive voxels keep theirs, as in NanoVDB.
     float voxel(int i, int j, int k) const;
+    // The aligned 8^3 block of voxels around (i, j, k): its leaf's 512 values (x slowest, z
+    // fastest), or null when a tile or the background gives the whole block `constant`.
+    const float* block(int i, int j, int k, float& constant) const;
     // Trilinear between voxel centres at index-space point (x, y, z).
     float interpolate(double x, double y, double z) const;
 };

@@ -22,16 +22,15 @@ Vec3f indexExtentOf(const NanoVdbGrid& g) {
     return {size(0), size(1), size(2)};
 }
 
-// The largest density each cell of a grid over the index box can see: every stored value (leaf,
+// The largest density each cell of a grid over the index box can see: every stored value (voxel,
 // tile, background) raised over the cells its voxels reach by interpolation, one voxel beyond each
-// side. Up to 64 cells per axis (pbrt-v4's resolution), no more than one per voxel.
+// side.
 class DensityMajorants {
 public:
-    explicit DensityMajorants(const NanoVdbGrid& g) : g_(g), lo_(indexMinOf(g)), extent_(indexExtentOf(g)) {
-        m_.nx = std::min(64, int(extent_.x));
-        m_.ny = std::min(64, int(extent_.y));
-        m_.nz = std::min(64, int(extent_.z));
-        m_.values.assign(std::size_t(m_.nx) * m_.ny * m_.nz, std::max(0.0f, g.background));
+    explicit DensityMajorants(const NanoVdbGrid& g)
+        : g_(g), lo_(indexMinOf(g)), extent_(indexExtentOf(g)),
+          m_(MajorantGrid::forSamples(int(extent_.x), int(extent_.y), int(extent_.z))) {
+        for (float& v : m_.values) v = std::max(0.0f, g.background);
     }
 
     MajorantGrid scaled(float sigmaT) {
@@ -42,7 +41,7 @@ public:
             else
                 upper(std::size_t(tile.upper), origin);
         }
-        for (float& v : m_.values) v *= sigmaT;
+        scaleMajorants(m_, sigmaT);
         return std::move(m_);
     }
 
@@ -72,31 +71,25 @@ private:
             if (g_.lowerChild[slot] < 0) {
                 raise(slotOrigin(origin, n, 4, 8), 8, g_.lowerValue[slot]);
             } else {
-                const float* v = &g_.leafValues[std::size_t(g_.lowerChild[slot]) * kNanoVdbLeafVoxels];
-                raise(slotOrigin(origin, n, 4, 8), 8, *std::max_element(v, v + kNanoVdbLeafVoxels));
+                leaf(std::size_t(g_.lowerChild[slot]), slotOrigin(origin, n, 4, 8));
             }
         }
     }
-    // Voxels origin .. origin + size - 1 hold values up to v: the cells of index space from one
-    // voxel below to one above see it.
+    // Each voxel on its own: the cells of a leaf's empty and thin parts keep low majorants.
+    void leaf(std::size_t f, const std::array<int, 3>& origin) {
+        const float* v = &g_.leafValues[f * kNanoVdbLeafVoxels];
+        for (int n = 0; n < kNanoVdbLeafVoxels; ++n) raise(slotOrigin(origin, n, 3, 1), 1, v[n]);
+    }
+    // Voxels origin .. origin + size - 1 hold values up to v: index space from one voxel below to
+    // one above sees it.
     void raise(const std::array<int, 3>& origin, int size, float v) {
         if (v <= 0) return;
-        const int res[3] = {m_.nx, m_.ny, m_.nz};
-        int from[3], to[3];
+        double lo[3], hi[3];
         for (int a = 0; a < 3; ++a) {
-            const double cell = extent_[a] / res[a];
-            const double first = std::floor((double(origin[a]) - 1 - lo_[a]) / cell);
-            const double last = std::floor((double(origin[a]) + size - lo_[a]) / cell);
-            if (last < 0 || first >= res[a]) return;
-            from[a] = int(std::max(0.0, first));
-            to[a] = int(std::min(double(res[a] - 1), last));
+            lo[a] = (double(origin[a]) - 1 - lo_[a]) / extent_[a];
+            hi[a] = (double(origin[a]) + size - lo_[a]) / extent_[a];
         }
-        for (int z = from[2]; z <= to[2]; ++z)
-            for (int y = from[1]; y <= to[1]; ++y)
-                for (int x = from[0]; x <= to[0]; ++x) {
-                    float& m = m_.values[(std::size_t(z) * m_.ny + y) * m_.nx + x];
-                    m = std::max(m, v);
-                }
+        raiseMajorants(m_, lo, hi, v);
     }
 
     const NanoVdbGrid& g_;
@@ -111,9 +104,11 @@ Transform boxToWorldOf(const NanoVdbGrid& g, const Transform& mediumToWorld) {
 
 }  // namespace
 
+MajorantGrid nanoVdbMajorants(const NanoVdbGrid& g, float sigmaT) { return DensityMajorants(g).scaled(sigmaT); }
+
 NanoVdbMedium::NanoVdbMedium(NanoVdbGrid density, Vec3f sigmaA, Vec3f sigmaS, const Transform& mediumToWorld,
                              HenyeyGreenstein phase)
-    : TrackedBoxMedium(boxToWorldOf(density, mediumToWorld), DensityMajorants(density).scaled(maxComponent(sigmaA + sigmaS)),
+    : TrackedBoxMedium(boxToWorldOf(density, mediumToWorld), nanoVdbMajorants(density, maxComponent(sigmaA + sigmaS)),
                        phase),
       grid_(std::move(density)), sigmaA_(sigmaA), sigmaS_(sigmaS), indexToMedium_(indexToMediumOf(grid_)),
       indexMin_(indexMinOf(grid_)), indexExtent_(indexExtentOf(grid_)) {}

@@ -27,4 +27,9 @@ private:
     Vec3f indexMin_, indexExtent_;
 };
 
+// The majorants of sigma_t = density * sigmaT over the active voxels' index box (the medium's unit
+// cube): up to 64 cells per axis, no more than one per voxel, each at least every stored value
+// (voxel, tile, background) whose voxels reach into it by interpolation.
+MajorantGrid nanoVdbMajorants(const NanoVdbGrid& g, float sigmaT);
+
 }  // namespace lenslab

@@ -51,7 +51,7 @@ MediumEvent TrackedBoxMedium::sample(Vec3f o, Vec3f d, float tMax, int hero, Pcg
     walkMajorants(majorants_, oBox, dBox, t0, t1, [&](float t, float tEnd, float majorant) {
         if (majorant <= 0) return true;
         for (;;) {
-            t -= std::log1p(-rng.uniform()) / majorant;
+            t += rng.exponential() / majorant;
             if (t >= tEnd) return true;
             Vec3f sigmaA, sigmaS;
             coefficients(oBox + t * dBox, sigmaA, sigmaS);
@@ -82,7 +82,7 @@ Vec3f TrackedBoxMedium::transmittance(Vec3f o, Vec3f d, float tMax, Pcg32& rng) 
     walkMajorants(majorants_, oBox, dBox, t0, t1, [&](float t, float tEnd, float majorant) {
         if (majorant <= 0) return true;
         for (;;) {
-            t -= std::log1p(-rng.uniform()) / majorant;
+            t += rng.exponential() / majorant;
             if (t >= tEnd) return true;
             Vec3f sigmaA, sigmaS;
             coefficients(oBox + t * dBox, sigmaA, sigmaS);

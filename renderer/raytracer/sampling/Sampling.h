@@ -33,6 +33,9 @@ public:
         return (xorshifted >> rot) | (xorshifted << ((-rot) & 31));
     }
     float uniform() { return std::min(float(next() >> 8) * 0x1p-24f, 0x1.fffffep-1f); }
+    // A distance of exponential density exp(-t) (in mean free paths). 1 - u is exact for uniform()'s
+    // multiples of 2^-24, so logf serves where log1pf would cost twice the time.
+    float exponential() { return -std::log(1 - uniform()); }
 
 private:
     std::uint64_t state_ = 0, inc_;

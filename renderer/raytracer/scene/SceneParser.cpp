@@ -366,17 +366,20 @@ private:
     }
     // Media show only through an integrator that renders them: volpath, and bdpt, mlt and sppm,
     // which render media in pbrt too (here by volpath). path, directlighting and whitted ignore
-    // them, as in pbrt.
+    // them, as in pbrt. Without an Integrator, pbrt-v3 traces paths and pbrt-v4 runs volpath (the
+    // path tracer's picture wherever there is neither medium nor subsurface material).
     void chooseMediaIntegrator() {
         IntegratorSpec& spec = scene_.integrator;
+        const bool v4Default = !integratorGiven_ && scene_.dialect == SceneDialect::PbrtV4;
         if (subsurfaceWhere_ && spec.type != IntegratorType::VolPath) {
             spec.type = IntegratorType::VolPath;
-            warn(integratorWhere_, "rendered by volpath (pbrt-v4's default integrator): the subsurface material at " +
-                                       describe(*subsurfaceWhere_) + " scatters light in a volume, which only volpath follows");
+            if (!v4Default)
+                warn(integratorWhere_, "rendered by volpath (pbrt-v4's default integrator): the subsurface material at " +
+                                           describe(*subsurfaceWhere_) + " scatters light in a volume, which only volpath follows");
             return;
         }
         if (!mediaUsed_) return;
-        if (integratorRendersMedia_) {
+        if (integratorRendersMedia_ || v4Default) {
             spec.type = IntegratorType::VolPath;
         } else {
             warn(integratorWhere_, "ignores the scene's participating media, as in pbrt (Integrator \"volpath\" renders them)");
@@ -454,6 +457,7 @@ private:
         const ParamSet p = params(where);
         IntegratorSpec& spec = scene_.integrator;
         integratorWhere_ = where;
+        integratorGiven_ = true;
         integratorRendersMedia_ =
             type == "volpath" || type == "simplevolpath" || type == "bdpt" || type == "mlt" || type == "sppm";
         // Global-illumination methods of pbrt-v3 and pbrt-v2 converge to the path tracer's picture
@@ -674,6 +678,7 @@ private:
     std::string cameraMedium_;           // the outside medium's name at Camera
     SourceLocation cameraMediumWhere_;
     bool mediaUsed_ = false;             // a shape or the camera lies in a medium
+    bool integratorGiven_ = false;       // the file has an Integrator directive
     bool integratorRendersMedia_ = false;
     std::optional<SourceLocation> subsurfaceWhere_;  // the first subsurface material
     SourceLocation integratorWhere_{"", 0, "Integrator (default path)"};
