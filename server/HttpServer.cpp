@@ -16,6 +16,7 @@
 #include "OpticsError.h"
 #include "Render.h"
 #include "RequestChecks.h"
+#include "ResponseEncoding.h"
 #include "StorageError.h"
 
 namespace lenslab {
@@ -108,6 +109,7 @@ HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log)
     // The checks on a request's head; true when it is answered already (refused, or a CORS preflight).
     const auto answeredByHead = [&log, http, access, listenHost](const httplib::Request& req, httplib::Response& res) {
         log.requestStarted();
+        declineBrotli(req);
         auto refusal = refuseRequestHead(req, http);
         if (!refusal) refusal = refuseHost(req, listenHost, access.allowedHosts);
         if (!refusal && allowListedOrigin(req, res, access)) return true;
