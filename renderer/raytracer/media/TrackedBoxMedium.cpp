@@ -37,17 +37,8 @@ bool TrackedBoxMedium::clip(Vec3f o, Vec3f d, float tMax, Vec3f& oBox, Vec3f& dB
     return t0 < t1;
 }
 
-MediumEvent TrackedBoxMedium::sample(Vec3f o, Vec3f d, float tMax, int hero, Pcg32& rng) const {
-    MediumEvent e;
-    e.t = tMax;
-    Vec3f oBox, dBox;
-    float t0, t1;
-    if (!clip(o, d, tMax, oBox, dBox, t0, t1)) return e;
-    // Tentative collisions at the cell's majorant rate (the same for every channel); each is
-    // absorption, scattering or a null collision with the hero's coefficients over the majorant as
-    // probabilities. A channel's density of the same choice is its own coefficient over the
-    // majorant, so weight and ratio are both coefficient over the hero's (1 in a grey medium:
-    // plain delta tracking). Leaving a cell, the exponential draw starts afresh (memoryless).
+template <class Collide>
+void TrackedBoxMedium::walkCollisions(Vec3f oBox, Vec3f dBox, float t0, float t1, Pcg32& rng, Collide collide) const {
     walkMajorants(majorants_, oBox, dBox, t0, t1, [&](float t, float tEnd, float majorant) {
         if (majorant <= 0) return true;
         for (;;) {
@@ -55,22 +46,37 @@ MediumEvent TrackedBoxMedium::sample(Vec3f o, Vec3f d, float tMax, int hero, Pcg
             if (t >= tEnd) return true;
             Vec3f sigmaA, sigmaS;
             coefficients(oBox + t * dBox, sigmaA, sigmaS);
-            const Vec3f sigmaN = nullCoefficient(majorant, sigmaA, sigmaS);
-            const float u = rng.uniform() * majorant;
-            if (u < sigmaA[hero]) {
-                e.weight = {};
-                return false;
-            }
-            const bool scatters = u < sigmaA[hero] + sigmaS[hero];
-            const Vec3f sigma = scatters ? sigmaS : sigmaN;
-            e.weight *= sigma / sigma[hero];
-            e.pdfRatio *= sigma / sigma[hero];
-            if (scatters) {
-                e.scattered = true;
-                e.t = t;
-                return false;
-            }
+            if (!collide(t, sigmaA, sigmaS, majorant)) return false;
         }
+    });
+}
+
+MediumEvent TrackedBoxMedium::sample(Vec3f o, Vec3f d, float tMax, int hero, Pcg32& rng) const {
+    MediumEvent e;
+    e.t = tMax;
+    Vec3f oBox, dBox;
+    float t0, t1;
+    if (!clip(o, d, tMax, oBox, dBox, t0, t1)) return e;
+    // Each tentative collision (at the majorant rate, the same for every channel) is absorption,
+    // scattering or a null collision with the hero's coefficients over the majorant as
+    // probabilities. A channel's density of the same choice is its own coefficient over the
+    // majorant, so weight and ratio are both coefficient over the hero's (1 in a grey medium:
+    // plain delta tracking).
+    walkCollisions(oBox, dBox, t0, t1, rng, [&](float t, Vec3f sigmaA, Vec3f sigmaS, float majorant) {
+        const Vec3f sigmaN = nullCoefficient(majorant, sigmaA, sigmaS);
+        const float u = rng.uniform() * majorant;
+        if (u < sigmaA[hero]) {
+            e.weight = {};
+            return false;
+        }
+        const bool scatters = u < sigmaA[hero] + sigmaS[hero];
+        const Vec3f sigma = scatters ? sigmaS : sigmaN;
+        e.weight *= sigma / sigma[hero];
+        e.pdfRatio *= sigma / sigma[hero];
+        if (!scatters) return true;
+        e.scattered = true;
+        e.t = t;
+        return false;
     });
     return e;
 }
@@ -79,22 +85,15 @@ Vec3f TrackedBoxMedium::transmittance(Vec3f o, Vec3f d, float tMax, Pcg32& rng) 
     Vec3f oBox, dBox, tr{1, 1, 1};
     float t0, t1;
     if (!clip(o, d, tMax, oBox, dBox, t0, t1)) return tr;
-    walkMajorants(majorants_, oBox, dBox, t0, t1, [&](float t, float tEnd, float majorant) {
-        if (majorant <= 0) return true;
-        for (;;) {
-            t += rng.exponential() / majorant;
-            if (t >= tEnd) return true;
-            Vec3f sigmaA, sigmaS;
-            coefficients(oBox + t * dBox, sigmaA, sigmaS);
-            tr *= nullCoefficient(majorant, sigmaA, sigmaS) / majorant;
-            if (maxComponent(tr) < kRouletteBelow) {
-                if (rng.uniform() < 0.5f) {
-                    tr = {};
-                    return false;
-                }
-                tr = 2.0f * tr;
-            }
+    walkCollisions(oBox, dBox, t0, t1, rng, [&](float, Vec3f sigmaA, Vec3f sigmaS, float majorant) {
+        tr *= nullCoefficient(majorant, sigmaA, sigmaS) / majorant;
+        if (maxComponent(tr) >= kRouletteBelow) return true;
+        if (rng.uniform() < 0.5f) {
+            tr = {};
+            return false;
         }
+        tr = 2.0f * tr;
+        return true;
     });
     return tr;
 }

@@ -23,6 +23,11 @@ private:
     // Where the ray o + t d (world) runs inside the box, clipped to [0, tMax]; false if nowhere.
     // oBox, dBox: the ray in the box's unit-cube coordinates, with the same t.
     bool clip(Vec3f o, Vec3f d, float tMax, Vec3f& oBox, Vec3f& dBox, float& t0, float& t1) const;
+    // Tentative collisions along the box-space ray from t0 to t1 at each cell's majorant rate (the
+    // exponential draw starts afresh in each cell: it is memoryless). At each,
+    // collide(t, sigmaA, sigmaS, majorant) returns false to end the walk.
+    template <class Collide>
+    void walkCollisions(Vec3f oBox, Vec3f dBox, float t0, float t1, Pcg32& rng, Collide collide) const;
 
     Transform worldToBox_;
     MajorantGrid majorants_;
