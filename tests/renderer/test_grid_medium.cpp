@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "MidpointDepth.h"
 #include "media/GridMedium.h"
 
 namespace lenslab {
@@ -63,13 +64,7 @@ TEST(GridMedium, TrackingThroughEmptyRegionsMatchesQuadrature) {
     const GridMedium m(g, sigmaA, {}, Transform{}, HenyeyGreenstein(0));
     const Vec3f o{-0.2f, 0.3f, 0.2f}, d = normalize(Vec3f{1.4f, 0.2f, 0.5f});
     const float length = 1.8f;
-    constexpr int kSteps = 40000;
-    double depth = 0;
-    for (int i = 0; i < kSteps; ++i) {
-        const Vec3f p = o + (length * (i + 0.5f) / kSteps) * d;
-        if (p.x >= 0 && p.x <= 1 && p.y >= 0 && p.y <= 1 && p.z >= 0 && p.z <= 1) depth += m.density(p);
-    }
-    depth *= length / kSteps;
+    const double depth = test::midpointDepth(o, d, length, 40000, {0, 0, 0}, {1, 1, 1}, [&](Vec3f p) { return m.density(p); });
     ASSERT_GT(depth * sigmaA.z, 0.5);  // thick enough to matter, thin enough for a tight estimate
     ASSERT_LT(depth * sigmaA.z, 2.0);
     constexpr int kSamples = 200000;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "MidpointDepth.h"
 #include "NanoVdbTestFile.h"
 #include "TempDir.h"
 #include "TestScenes.h"
@@ -182,13 +183,7 @@ TEST(NanoVdb, TrackingThroughVaryingVoxelsMatchesQuadrature) {
     const NanoVdbMedium m(readBack(test::nanoVdbFile({g})), {sigma, sigma, sigma}, {}, Transform{}, HenyeyGreenstein(0));
     const Vec3f o{-1, 1.5f, 2.5f}, d = normalize(Vec3f{26, 4, 3});
     const float length = 27;
-    constexpr int kSteps = 20000;
-    double depth = 0;
-    for (int i = 0; i < kSteps; ++i) {
-        const Vec3f p = o + (length * (i + 0.5f) / kSteps) * d;
-        if (p.x >= 0 && p.x < 24 && p.y >= 0 && p.y < 8 && p.z >= 0 && p.z < 8) depth += m.density(p);
-    }
-    depth *= sigma * length / kSteps;
+    const double depth = sigma * test::midpointDepth(o, d, length, 20000, {0, 0, 0}, {24, 8, 8}, [&](Vec3f p) { return m.density(p); });
     ASSERT_GT(depth, 1.0);  // thick enough to matter, thin enough for a tight estimate
     constexpr int kSamples = 200000;
     double transmitted = 0, passed = 0;
