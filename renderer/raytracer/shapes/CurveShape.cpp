@@ -89,7 +89,13 @@ public:
         if (type_ != CurveType::Cylinder && dot(n, d) > 0) n = -n;  // a ribbon is seen from either side
         h.ng = h.ns = n;
         h.u = (float(prim) + hitU) / float(segs_.size());
-        h.v = std::clamp(0.5f * (hitV + 1), 0.0f, 1.0f);
+        // v: where the ray crossed the curve's apparent width, from the hit's offset off the axis
+        // along n x T for a curve facing the ray (for a tube, along the seen width -d x T), so that
+        // pbrt-v4's hair reads its offset h = 2v - 1 the same way for every curve type.
+        const Vec3f across = type_ == CurveType::Cylinder ? cross(-d, T) : cross(n, T);
+        const float acrossLen = length(across), radius = radiusAt(prim, hitU);
+        const float offset = acrossLen > 0 && radius > 0 ? dot(h.p - centre, across) / (acrossLen * radius) : hitV;
+        h.v = std::clamp(0.5f * (offset + 1), 0.0f, 1.0f);
         // Along the curve, per unit of this u; across it, the width, turned so that dp/du x dp/dv
         // runs along the normal (as pbrt-v3's curves).
         h.dpdu = float(segs_.size()) * tangent;
