@@ -298,7 +298,7 @@ TEST(Materials, DefinitionErrorsNameTheProblem) {
     EXPECT_NE(errorOf(dir, "MakeNamedMaterial \"a\" \"rgb Kd\" [1 1 1]").find("needs \"string type\""), std::string::npos);
     EXPECT_NE(errorOf(dir, "Material \"metal\" \"string distribution\" \"phong\"").find("beckmann"), std::string::npos);
     EXPECT_NE(errorOf(dir, "Material \"glass\" \"float eta\" 0").find("must be positive"), std::string::npos);
-    EXPECT_NE(errorOf(dir, "Material \"hair\"").find("material \"hair\" is not supported"), std::string::npos);
+    EXPECT_NE(errorOf(dir, "Material \"fourier\"").find("material \"fourier\" is not supported"), std::string::npos);
     const std::string uber = "MakeNamedMaterial \"u\" \"string type\" \"uber\"\n";
     std::string nested = uber + "MakeNamedMaterial \"m1\" \"string type\" \"mix\" \"string namedmaterial1\" \"u\" "
                                 "\"string namedmaterial2\" \"u\"\n";

@@ -153,13 +153,6 @@ TEST(Pbrt4Scenes, ReadsGzippedIncludesAndAttributeDefaults) {
     EXPECT_EQ(s.dialect, SceneDialect::PbrtV4);
 }
 
-TEST(Pbrt4Scenes, RefusesHairNamingTheLine) {
-    test::TempDir dir;
-    const std::string msg = test::sceneErrorOf(dir.write("s.pbrt", "WorldBegin\n\nMaterial \"hair\"\n"));
-    EXPECT_NE(msg.find("s.pbrt:3"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("hair"), std::string::npos) << msg;
-}
-
 TEST(Pbrt4Scenes, EqualAreaMapRoundTrips) {
     for (float u = 0.05f; u < 1; u += 0.1f)
         for (float v = 0.05f; v < 1; v += 0.1f) {

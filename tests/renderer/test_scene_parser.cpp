@@ -161,7 +161,7 @@ TEST(SceneErrors, UnsupportedFeaturesAreNamedNeverIgnored) {
         EXPECT_NE(e.find(expected), std::string::npos) << e;
     };
     check("Shape \"plymesh\" \"string filename\" \"x.ply\"", "cannot open 'x.ply'");
-    check("Material \"hair\"", "material \"hair\" is not supported");
+    check("Material \"fourier\" \"string bsdffile\" \"x.bsdf\"", "material \"fourier\" is not supported");
     check("ObjectBegin \"x\"", "u.pbrt:5: ObjectBegin \"x\": not closed by ObjectEnd");
     check("AttributeBegin\nShape \"sphere\"", "not closed by AttributeEnd");
 }

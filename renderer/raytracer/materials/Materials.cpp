@@ -348,7 +348,7 @@ bool takesBumpMap(const std::string& type) { return type != "mix" && type != "" 
 
 const char* kSupported =
     "(matte, plastic, metal, mirror, glass, substrate, uber, translucent, mix, measured, none, interface; pbrt-v4's "
-    "diffuse, conductor, dielectric, thindielectric, diffusetransmission, coateddiffuse, coatedconductor, subsurface)";
+    "diffuse, conductor, dielectric, thindielectric, diffusetransmission, coateddiffuse, coatedconductor, subsurface, hair)";
 
 }  // namespace
 
@@ -389,8 +389,6 @@ std::shared_ptr<const Material> makeMaterial(const std::string& type, const Para
         m = std::make_shared<Passthrough>();
     } else if (isPbrt4MaterialName(type)) {
         m = makePbrt4Material(type, p, c);
-    } else if (type == "hair") {
-        p.fail("material \"hair\" is not supported: lenslab has no hair scattering model and the picture would differ");
     } else {
         p.fail("material \"" + type + "\" is not supported " + kSupported);
     }

@@ -7,6 +7,7 @@
 
 #include "materials/Bsdf.h"
 #include "materials/DiffuseLobes.h"
+#include "materials/HairMaterial.h"
 #include "materials/MetalSpectra.h"
 #include "core/MeasuredMedia.h"
 #include "materials/MicrofacetLobes.h"
@@ -322,7 +323,8 @@ std::shared_ptr<Material> makeSubsurface(const Reader& r) {
 
 bool isPbrt4MaterialName(const std::string& type) {
     return type == "diffuse" || type == "conductor" || type == "dielectric" || type == "thindielectric" ||
-           type == "diffusetransmission" || type == "coateddiffuse" || type == "coatedconductor" || type == "subsurface";
+           type == "diffusetransmission" || type == "coateddiffuse" || type == "coatedconductor" || type == "subsurface" ||
+           type == "hair";
 }
 
 std::shared_ptr<Material> makePbrt4Material(const std::string& type, const ParamSet& p, const MaterialContext& c) {
@@ -335,6 +337,7 @@ std::shared_ptr<Material> makePbrt4Material(const std::string& type, const Param
         return std::make_shared<DiffuseTransmission>(r.color("reflectance", grey(0.25f)), r.color("transmittance", grey(0.25f)),
                                                      float(p.getFloat("scale", 1)));
     if (type == "subsurface") return makeSubsurface(r);
+    if (type == "hair") return makeHairMaterial(p, c);
     if (type == "coateddiffuse")
         return std::make_shared<CoatedDiffuseMaterial>(r.color("reflectance", grey(0.5f)), r.roughness(), r.eta("eta"), layerThickness(r));
     return std::make_shared<CoatedConductorMaterial>(r.roughness("interface."), r.eta("interface.eta"), layerThickness(r),

@@ -1,0 +1,196 @@
+#include "materials/HairLobe.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "materials/Fresnel.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr float kPi = 3.14159265f;
+
+float sq(float x) { return x * x; }
+float safeSqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
+float safeAsin(float x) { return std::asin(std::clamp(x, -1.0f, 1.0f)); }
+
+// Modified Bessel function of the first kind, order 0: its power series, enough terms for the
+// arguments below 12 where it is used directly.
+float besselI0(float x) {
+    float sum = 0, term = 1;
+    const float x2 = x * x / 4;
+    for (int i = 1; i <= 11; ++i) {
+        sum += term;
+        term *= x2 / float(i * i);
+    }
+    return sum;
+}
+
+// log I0, by its asymptotic expansion where I0 would overflow.
+float logBesselI0(float x) {
+    if (x > 12) return x + 0.5f * (-std::log(2 * kPi) + std::log(1 / x) + 1 / (8 * x));
+    return std::log(besselI0(x));
+}
+
+// d'Eon 2011 eq. 6: csch(1/v) / (2v) exp(-sin_i sin_o / v) I0(cos_i cos_o / v); for narrow lobes
+// in logarithms, as csch(1/v) underflows.
+float longitudinal(float cosI, float cosO, float sinI, float sinO, float v) {
+    const float a = cosI * cosO / v, b = sinI * sinO / v;
+    if (v <= 0.1f) return std::exp(logBesselI0(a) - b - 1 / v + 0.6931f + std::log(1 / (2 * v)));
+    return std::exp(-b) * besselI0(a) / (std::sinh(1 / v) * 2 * v);
+}
+
+float logistic(float x, float s) {
+    const float e = std::exp(-std::fabs(x) / s);
+    return e / (s * sq(1 + e));
+}
+float logisticCdf(float x, float s) { return 1 / (1 + std::exp(-x / s)); }
+
+// Chiang 2016's azimuthal lobe: a logistic around the path's exit azimuth, trimmed to [-pi, pi].
+float trimmedLogistic(float x, float s) { return logistic(x, s) / (logisticCdf(kPi, s) - logisticCdf(-kPi, s)); }
+float sampleTrimmedLogistic(float u, float s) {
+    const float k = logisticCdf(kPi, s) - logisticCdf(-kPi, s);
+    const float x = -s * std::log(1 / (u * k + logisticCdf(-kPi, s)) - 1);
+    return std::clamp(x, -kPi, kPi);
+}
+
+// The azimuth at which path p leaves, relative to the incoming one (d'Eon 2011, eq. 9).
+float exitAzimuth(int p, float gammaO, float gammaT) { return 2 * float(p) * gammaT - 2 * gammaO + float(p) * kPi; }
+
+float azimuthal(float phi, int p, float s, float gammaO, float gammaT) {
+    float d = phi - exitAzimuth(p, gammaO, gammaT);
+    d = std::remainder(d, 2 * kPi);  // into [-pi, pi]
+    return trimmedLogistic(d, s);
+}
+
+float average(Vec3f c) { return (c.x + c.y + c.z) / 3; }
+
+Vec3f expNeg(Vec3f a) { return {std::exp(-a.x), std::exp(-a.y), std::exp(-a.z)}; }
+
+}  // namespace
+
+struct HairLobe::Outgoing {
+    float sinTheta, cosTheta, phi, gammaO, gammaT;
+    // The outgoing elevation tilted by the cuticle for each path (the residual is not tilted).
+    float sinThetaP[kPaths + 1], cosThetaP[kPaths + 1];
+    Vec3f ap[kPaths + 1];  // attenuation per path
+    float apShare[kPaths + 1];  // the paths' shares of the attenuation, for sampling
+};
+
+HairLobe::HairLobe(const HairParams& q) : h_(q.h), eta_(q.eta), sigmaA_(q.sigmaA) {
+    // Chiang 2016 eq. 7 and 8: roughness to longitudinal variance and logistic scale.
+    const float bm = q.betaM, bn = q.betaN;
+    v_[0] = sq(0.726f * bm + 0.812f * sq(bm) + 3.7f * std::pow(bm, 20.0f));
+    v_[1] = 0.25f * v_[0];
+    v_[2] = 4 * v_[0];
+    v_[3] = v_[2];
+    s_ = std::sqrt(kPi / 8) * (0.265f * bn + 1.194f * sq(bn) + 5.372f * std::pow(bn, 22.0f));
+    // sin and cos of 2^k alpha by doubling.
+    sin2kAlpha_[0] = std::sin(q.alphaDeg * kPi / 180);
+    cos2kAlpha_[0] = safeSqrt(1 - sq(sin2kAlpha_[0]));
+    for (int k = 1; k < kPaths; ++k) {
+        sin2kAlpha_[k] = 2 * cos2kAlpha_[k - 1] * sin2kAlpha_[k - 1];
+        cos2kAlpha_[k] = sq(cos2kAlpha_[k - 1]) - sq(sin2kAlpha_[k - 1]);
+    }
+}
+
+HairLobe::Outgoing HairLobe::outgoing(Vec3f wo) const {
+    Outgoing o;
+    o.sinTheta = std::clamp(wo.x, -1.0f, 1.0f);
+    o.cosTheta = safeSqrt(1 - sq(o.sinTheta));
+    o.phi = std::atan2(wo.z, wo.y);
+    o.gammaO = safeAsin(h_);
+    // Inside the fibre: the refracted elevation, and the modified index (Bravais) for the azimuth.
+    const float sinThetaT = o.sinTheta / eta_, cosThetaT = safeSqrt(1 - sq(sinThetaT));
+    const float etaP = safeSqrt(sq(eta_) - sq(o.sinTheta)) / std::max(o.cosTheta, 1e-6f);
+    const float sinGammaT = h_ / etaP, cosGammaT = safeSqrt(1 - sq(sinGammaT));
+    o.gammaT = safeAsin(sinGammaT);
+    const Vec3f t = expNeg(sigmaA_ * (2 * cosGammaT / std::max(cosThetaT, 1e-6f)));  // one chord
+
+    // Tilts (Chiang 2016 section 4.2): R by -2 alpha, TT by alpha, TRT by 4 alpha.
+    const auto tilt = [&](int p, float sinA, float cosA) {
+        o.sinThetaP[p] = o.sinTheta * cosA + o.cosTheta * sinA;
+        o.cosThetaP[p] = std::fabs(o.cosTheta * cosA - o.sinTheta * sinA);
+    };
+    tilt(0, -sin2kAlpha_[1], cos2kAlpha_[1]);
+    tilt(1, sin2kAlpha_[0], cos2kAlpha_[0]);
+    tilt(2, sin2kAlpha_[2], cos2kAlpha_[2]);
+    tilt(3, 0, 1);
+
+    // Attenuation: Fresnel at the entry point, the chord's transmittance per internal pass, and
+    // the geometric series of all longer paths in the residual.
+    const float f = fresnelDielectric(o.cosTheta * safeSqrt(1 - sq(h_)), 1, eta_);
+    o.ap[0] = Vec3f{f, f, f};
+    o.ap[1] = sq(1 - f) * t;
+    o.ap[2] = o.ap[1] * t * f;
+    const Vec3f tf = f * t;
+    o.ap[3] = o.ap[2] * tf * Vec3f{1 / (1 - tf.x), 1 / (1 - tf.y), 1 / (1 - tf.z)};
+    float total = 0;
+    for (const Vec3f& a : o.ap) total += average(a);
+    for (int p = 0; p <= kPaths; ++p) o.apShare[p] = total > 0 ? average(o.ap[p]) / total : 0;
+    return o;
+}
+
+template <class Weight>
+Weight HairLobe::lobeSum(const Outgoing& o, Vec3f wi, const Weight* weights) const {
+    const float sinThetaI = std::clamp(wi.x, -1.0f, 1.0f), cosThetaI = safeSqrt(1 - sq(sinThetaI));
+    const float phi = std::atan2(wi.z, wi.y) - o.phi;
+    Weight sum{};
+    for (int p = 0; p < kPaths; ++p)
+        sum += longitudinal(cosThetaI, o.cosThetaP[p], sinThetaI, o.sinThetaP[p], v_[p]) *
+               azimuthal(phi, p, s_, o.gammaO, o.gammaT) * weights[p];
+    sum += longitudinal(cosThetaI, o.cosThetaP[kPaths], sinThetaI, o.sinThetaP[kPaths], v_[kPaths]) / (2 * kPi) *
+           weights[kPaths];
+    return sum;
+}
+
+Vec3f HairLobe::f(Vec3f wo, Vec3f wi) const {
+    const Outgoing o = outgoing(wo);
+    // The lobes are already a density per solid angle (Mp is normalised against cos theta_i
+    // dtheta_i, Np against dphi): divide out the normal's cosine the integrator multiplies in.
+    const float c = std::fabs(wi.z);
+    return c > 0 ? lobeSum(o, wi, o.ap) / c : Vec3f{};
+}
+
+float HairLobe::pdf(Vec3f wo, Vec3f wi) const {
+    const Outgoing o = outgoing(wo);
+    return lobeSum(o, wi, o.apShare);
+}
+
+bool HairLobe::sample(Vec3f wo, float uc, float u1, float u2, LobeSample& out) const {
+    const Outgoing o = outgoing(wo);
+    // Choose a path by its share of the attenuation, then reuse uc's remainder for the azimuth.
+    int p = 0;
+    float below = 0;
+    while (p < kPaths && uc >= below + o.apShare[p]) below += o.apShare[p++];
+    if (!(o.apShare[p] > 0)) return false;
+    uc = std::min((uc - below) / o.apShare[p], 0x1.fffffep-1f);
+
+    // Elevation: Mp sampled exactly (d'Eon 2011's lobe around the tilted specular elevation).
+    const float v = v_[p];
+    const float cosT = 1 + v * std::log(std::max(u1, 1e-5f) + (1 - u1) * std::exp(-2 / v));
+    const float sinT = safeSqrt(1 - sq(cosT));
+    const float sinThetaI = -cosT * o.sinThetaP[p] + sinT * std::cos(2 * kPi * u2) * o.cosThetaP[p];
+    const float cosThetaI = safeSqrt(1 - sq(sinThetaI));
+    const float dphi = p < kPaths ? exitAzimuth(p, o.gammaO, o.gammaT) + sampleTrimmedLogistic(uc, s_) : 2 * kPi * uc;
+    const float phiI = o.phi + dphi;
+    out.wi = {sinThetaI, cosThetaI * std::cos(phiI), cosThetaI * std::sin(phiI)};
+    out.pdf = lobeSum(o, out.wi, o.apShare);
+    out.f = std::fabs(out.wi.z) > 0 ? lobeSum(o, out.wi, o.ap) / std::fabs(out.wi.z) : Vec3f{};
+    out.specular = false;
+    return out.pdf > 0;
+}
+
+Vec3f hairSigmaAFromMelanin(float eumelanin, float pheomelanin) {
+    return eumelanin * Vec3f{0.419f, 0.697f, 1.37f} + pheomelanin * Vec3f{0.187f, 0.4f, 1.05f};
+}
+
+Vec3f hairSigmaAFromReflectance(Vec3f c, float bn) {
+    const float d = 5.969f - 0.215f * bn + 2.532f * sq(bn) - 10.73f * std::pow(bn, 3.0f) + 5.574f * std::pow(bn, 4.0f) +
+                    0.245f * std::pow(bn, 5.0f);
+    const auto one = [&](float r) { return sq(std::log(std::clamp(r, 1e-4f, 1.0f)) / d); };
+    return {one(c.x), one(c.y), one(c.z)};
+}
+
+}  // namespace lenslab
