@@ -33,13 +33,14 @@ float logBesselI0(float x) {
     return std::log(besselI0(x));
 }
 
-// d'Eon 2011 eq. 6: csch(1/v) / (2v) exp(-sin_i sin_o / v) I0(cos_i cos_o / v); for narrow lobes
-// in logarithms, as csch(1/v) underflows.
-float longitudinal(float cosI, float cosO, float sinI, float sinO, float v) {
-    const float a = cosI * cosO / v, b = sinI * sinO / v;
-    if (v <= 0.1f) return std::exp(logBesselI0(a) - b - 1 / v + 0.6931f + std::log(1 / (2 * v)));
-    return std::exp(-b) * besselI0(a) / (std::sinh(1 / v) * 2 * v);
+// d'Eon 2011 eq. 6, csch(1/v) / (2v) exp(-sin_i sin_o / v) I0(cos_i cos_o / v), in logarithms
+// (csch(1/v) underflows for narrow lobes); logNorm: log(csch(1/v) / (2v)), fixed per lobe.
+float longitudinal(float cosI, float cosO, float sinI, float sinO, float v, float logNorm) {
+    return std::exp(logBesselI0(cosI * cosO / v) - sinI * sinO / v + logNorm);
 }
+
+// csch(1/v) / (2v) = exp(-1/v) / (v (1 - exp(-2/v))).
+float longitudinalLogNorm(float v) { return -1 / v - std::log(v) - std::log1p(-std::exp(-2 / v)); }
 
 float logistic(float x, float s) {
     const float e = std::exp(-std::fabs(x) / s);
@@ -47,11 +48,11 @@ float logistic(float x, float s) {
 }
 float logisticCdf(float x, float s) { return 1 / (1 + std::exp(-x / s)); }
 
-// Chiang 2016's azimuthal lobe: a logistic around the path's exit azimuth, trimmed to [-pi, pi].
-float trimmedLogistic(float x, float s) { return logistic(x, s) / (logisticCdf(kPi, s) - logisticCdf(-kPi, s)); }
+// Chiang 2016's azimuthal lobe: a logistic around the path's exit azimuth, trimmed to [-pi, pi]
+// (the logistic's mass inside, 1 - 2 cdf(-pi), is divided out).
+float trimmedMass(float s) { return logisticCdf(kPi, s) - logisticCdf(-kPi, s); }
 float sampleTrimmedLogistic(float u, float s) {
-    const float k = logisticCdf(kPi, s) - logisticCdf(-kPi, s);
-    const float x = -s * std::log(1 / (u * k + logisticCdf(-kPi, s)) - 1);
+    const float x = -s * std::log(1 / (u * trimmedMass(s) + logisticCdf(-kPi, s)) - 1);
     return std::clamp(x, -kPi, kPi);
 }
 
@@ -59,9 +60,8 @@ float sampleTrimmedLogistic(float u, float s) {
 float exitAzimuth(int p, float gammaO, float gammaT) { return 2 * float(p) * gammaT - 2 * gammaO + float(p) * kPi; }
 
 float azimuthal(float phi, int p, float s, float gammaO, float gammaT) {
-    float d = phi - exitAzimuth(p, gammaO, gammaT);
-    d = std::remainder(d, 2 * kPi);  // into [-pi, pi]
-    return trimmedLogistic(d, s);
+    const float d = std::remainder(phi - exitAzimuth(p, gammaO, gammaT), 2 * kPi);  // into [-pi, pi]
+    return logistic(d, s);  // untrimmed: the callers divide by the trimmed mass
 }
 
 float average(Vec3f c) { return (c.x + c.y + c.z) / 3; }
@@ -86,6 +86,8 @@ HairLobe::HairLobe(const HairParams& q) : h_(q.h), eta_(q.eta), sigmaA_(q.sigmaA
     v_[2] = 4 * v_[0];
     v_[3] = v_[2];
     s_ = std::sqrt(kPi / 8) * (0.265f * bn + 1.194f * sq(bn) + 5.372f * std::pow(bn, 22.0f));
+    for (int p = 0; p <= kPaths; ++p) logNorm_[p] = longitudinalLogNorm(v_[p]);
+    invTrimmedMass_ = 1 / trimmedMass(s_);
     // sin and cos of 2^k alpha by doubling.
     sin2kAlpha_[0] = std::sin(q.alphaDeg * kPi / 180);
     cos2kAlpha_[0] = safeSqrt(1 - sq(sin2kAlpha_[0]));
@@ -138,10 +140,10 @@ Weight HairLobe::lobeSum(const Outgoing& o, Vec3f wi, const Weight* weights) con
     const float phi = std::atan2(wi.z, wi.y) - o.phi;
     Weight sum{};
     for (int p = 0; p < kPaths; ++p)
-        sum += longitudinal(cosThetaI, o.cosThetaP[p], sinThetaI, o.sinThetaP[p], v_[p]) *
-               azimuthal(phi, p, s_, o.gammaO, o.gammaT) * weights[p];
-    sum += longitudinal(cosThetaI, o.cosThetaP[kPaths], sinThetaI, o.sinThetaP[kPaths], v_[kPaths]) / (2 * kPi) *
-           weights[kPaths];
+        sum += longitudinal(cosThetaI, o.cosThetaP[p], sinThetaI, o.sinThetaP[p], v_[p], logNorm_[p]) *
+               (azimuthal(phi, p, s_, o.gammaO, o.gammaT) * invTrimmedMass_) * weights[p];
+    sum += longitudinal(cosThetaI, o.cosThetaP[kPaths], sinThetaI, o.sinThetaP[kPaths], v_[kPaths], logNorm_[kPaths]) /
+           (2 * kPi) * weights[kPaths];
     return sum;
 }
 

@@ -42,7 +42,9 @@ private:
     float h_, eta_;
     Vec3f sigmaA_;
     float v_[kPaths + 1];  // longitudinal variance per path
+    float logNorm_[kPaths + 1];  // log of Mp's normalisation per path
     float s_;              // logistic scale of Np
+    float invTrimmedMass_;  // 1 / the logistic's mass inside [-pi, pi]
     float sin2kAlpha_[kPaths], cos2kAlpha_[kPaths];
 };
 
