@@ -126,7 +126,7 @@ TEST(Hair, ParameterFormsGiveTheirAbsorption) {
                      valueOf(dir, "\"rgb sigma_a\" [0.9315 1.594 3.265]"));
     // pbrt-v4's default is brown hair, eumelanin 1.3.
     expectSameColour(valueOf(dir, ""), valueOf(dir, "\"float eumelanin\" 1.3"));
-    // Chiang 2016 eq. 9 at beta_n 0.3: sigma_a = (ln 0.5 / 5.88862)^2 = 0.0138556.
+    // Chiang 2016's inversion at beta_n 0.3: sigma_a = (ln 0.5 / 5.88862)^2 = 0.0138556.
     expectSameColour(valueOf(dir, "\"rgb reflectance\" [0.5 0.5 0.5]"), valueOf(dir, "\"rgb sigma_a\" [0.0138556 0.0138556 0.0138556]"));
     expectSameColour(valueOf(dir, "\"rgb color\" [0.5 0.5 0.5]"), valueOf(dir, "\"rgb reflectance\" [0.5 0.5 0.5]"));
     // sigma_a wins over the others, as in pbrt-v4; absorption darkens.

@@ -33,7 +33,7 @@ float logBesselI0(float x) {
     return std::log(besselI0(x));
 }
 
-// d'Eon 2011 eq. 6, csch(1/v) / (2v) exp(-sin_i sin_o / v) I0(cos_i cos_o / v), in logarithms
+// d'Eon 2011's longitudinal lobe, csch(1/v) / (2v) exp(-sin_i sin_o / v) I0(cos_i cos_o / v), in logarithms
 // (csch(1/v) underflows for narrow lobes); logNorm: log(csch(1/v) / (2v)), fixed per lobe.
 float longitudinal(float cosI, float cosO, float sinI, float sinO, float v, float logNorm) {
     return std::exp(logBesselI0(cosI * cosO / v) - sinI * sinO / v + logNorm);
@@ -56,7 +56,7 @@ float sampleTrimmedLogistic(float u, float s) {
     return std::clamp(x, -kPi, kPi);
 }
 
-// The azimuth at which path p leaves, relative to the incoming one (d'Eon 2011, eq. 9).
+// The azimuth at which path p leaves, relative to the incoming one (d'Eon 2011).
 float exitAzimuth(int p, float gammaO, float gammaT) { return 2 * float(p) * gammaT - 2 * gammaO + float(p) * kPi; }
 
 float azimuthal(float phi, int p, float s, float gammaO, float gammaT) {
@@ -79,7 +79,7 @@ struct HairLobe::Outgoing {
 };
 
 HairLobe::HairLobe(const HairParams& q) : h_(q.h), eta_(q.eta), sigmaA_(q.sigmaA) {
-    // Chiang 2016 eq. 7 and 8: roughness to longitudinal variance and logistic scale.
+    // Chiang 2016's fits: roughness to longitudinal variance and logistic scale.
     const float bm = q.betaM, bn = q.betaN;
     v_[0] = sq(0.726f * bm + 0.812f * sq(bm) + 3.7f * std::pow(bm, 20.0f));
     v_[1] = 0.25f * v_[0];
@@ -110,7 +110,7 @@ HairLobe::Outgoing HairLobe::outgoing(Vec3f wo) const {
     o.gammaT = safeAsin(sinGammaT);
     const Vec3f t = expNeg(sigmaA_ * (2 * cosGammaT / std::max(cosThetaT, 1e-6f)));  // one chord
 
-    // Tilts (Chiang 2016 section 4.2): R by -2 alpha, TT by alpha, TRT by 4 alpha.
+    // Cuticle tilts (Chiang 2016): R by -2 alpha, TT by alpha, TRT by 4 alpha.
     const auto tilt = [&](int p, float sinA, float cosA) {
         o.sinThetaP[p] = o.sinTheta * cosA + o.cosTheta * sinA;
         o.cosThetaP[p] = std::fabs(o.cosTheta * cosA - o.sinTheta * sinA);

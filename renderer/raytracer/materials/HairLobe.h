@@ -4,8 +4,8 @@
 // importance sampling and parameter mappings of Chiang, Bitterli, Tappan & Burley, "A Practical
 // and Controllable Hair and Fur Model for Production Path Tracing" (EGSR 2016). Light leaves a
 // rough dielectric cylinder after p = 0 (R), 1 (TT), 2 (TRT) internal paths, plus a residual
-// for the rest; each path has a longitudinal lobe Mp (a Bessel function of the first kind,
-// d'Eon 2011 eq. 6), an attenuation Ap (Fresnel and absorption inside) and an azimuthal lobe Np
+// for the rest; each path has a longitudinal lobe Mp (with a modified Bessel function,
+// d'Eon 2011), an attenuation Ap (Fresnel and absorption inside) and an azimuthal lobe Np
 // (a logistic trimmed to [-pi, pi], Chiang 2016). The cuticle scales tilt the lobes by alpha.
 //
 // Local frame (Bsdf.h's): x along the fibre, z the shading normal, y = z x x; the azimuth is
@@ -49,10 +49,10 @@ private:
 };
 
 // Absorption from melanin concentrations, with the absorption coefficients of eumelanin and
-// pheomelanin given by d'Eon 2011 (section 6) in linear sRGB, as pbrt-v4 uses them.
+// pheomelanin from d'Eon 2011, in linear sRGB, as pbrt-v4 uses them.
 Vec3f hairSigmaAFromMelanin(float eumelanin, float pheomelanin);
 // Absorption that gives a fibre of azimuthal roughness betaN roughly the multiple-scattered
-// colour `reflectance` (Chiang 2016, eq. 9), per channel; reflectance is clamped to (0, 1].
+// colour `reflectance` (Chiang 2016's fit), per channel; reflectance is clamped to (0, 1].
 Vec3f hairSigmaAFromReflectance(Vec3f reflectance, float betaN);
 
 }  // namespace lenslab
