@@ -194,4 +194,16 @@ void writeFakeRendererScene(const std::string& folder) {
     std::ofstream(folder + "/any.pbrt") << "# a scene the fake renderer ignores\nCamera \"realistic\"\nWorldBegin\nWorldEnd\n";
 }
 
+namespace {
+
+// The server's flags for a scenes folder, once the fake renderer's scene is written there.
+std::vector<std::string> fakeSceneFlags(const TempDir& scenes) {
+    writeFakeRendererScene(scenes.path());
+    return {"--scenes", scenes.path()};
+}
+
+}  // namespace
+
+FakeRenderService::FakeRenderService() : server(fakeServerUnderTest(), data.path() + "/data", fakeSceneFlags(scenes)) {}
+
 }  // namespace lenslab::test

@@ -72,6 +72,13 @@ std::string fakeServerUnderTest();
 // submit checks read it (a realistic camera for the request's lens, a world).
 void writeFakeRendererScene(const std::string& folder);
 
+// The fake-render server over a fresh data folder, its scenes folder holding any.pbrt.
+struct FakeRenderService {
+    TempDir data, scenes;
+    ServerProcess server;
+    FakeRenderService();
+};
+
 // A small valid lens table (a singlet and a stop).
 inline const std::string kSmallLensTable = "50.0 5.0 1.5 20.0\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
 

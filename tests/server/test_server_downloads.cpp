@@ -28,9 +28,8 @@ double peakResidentMb(const ServerProcess& server) {
 // Finding 5: 16 concurrent downloads of a large render's pixels (12.6 MB each) and its EXR must not
 // each cost the whole image in memory: they are sent a band of rows at a time.
 TEST(ServerDownloads, LargeDownloadsAreStreamed) {
-    TempDir data, scenes;
-    writeFakeRendererScene(scenes.path());
-    ServerProcess server(fakeServerUnderTest(), data.path() + "/data", {"--scenes", scenes.path()});
+    FakeRenderService service;
+    ServerProcess& server = service.server;
     auto c = server.client();
     const Reply job = postJson(c, "/api/renders", {{"scene", "any"}, {"spp", 1}, {"width", 1024}, {"height", 1024}});
     ASSERT_EQ(job.status, 202) << job.raw;
@@ -52,22 +51,21 @@ TEST(ServerDownloads, LargeDownloadsAreStreamed) {
 
 // Finding 11: a render whose EXR is missing or truncated.
 TEST(ServerDownloads, AnUnreadableImageNamesNoServerPath) {
-    TempDir data, scenes;
-    writeFakeRendererScene(scenes.path());
-    ServerProcess server(fakeServerUnderTest(), data.path() + "/data", {"--scenes", scenes.path()});
+    FakeRenderService service;
+    ServerProcess& server = service.server;
     auto c = server.client();
     const Reply job = postJson(c, "/api/renders", {{"scene", "any"}, {"spp", 1}, {"width", 64}, {"height", 64}});
     ASSERT_EQ(job.status, 202) << job.raw;
     const std::string id = job.body["id"];
     ASSERT_EQ(waitForRenderState(c, id, {"done"}, 20)["state"], "done");
-    const std::string exr = data.path() + "/data/renders/" + id + ".exr";
+    const std::string exr = service.data.path() + "/data/renders/" + id + ".exr";
     std::filesystem::resize_file(exr, 100);
     const Reply truncated = get(c, "/api/renders/" + id + "/pixels");
     EXPECT_EQ(truncated.status, 404);
-    EXPECT_EQ(truncated.raw.find(data.path()), std::string::npos) << truncated.raw;
+    EXPECT_EQ(truncated.raw.find(service.data.path()), std::string::npos) << truncated.raw;
     std::filesystem::remove(exr);
     const Reply missing = get(c, "/api/renders/" + id + "/pixels");
     EXPECT_EQ(missing.status, 404);
     EXPECT_TRUE(missing.body.is_object() && missing.body.contains("error")) << missing.raw;
-    EXPECT_EQ(missing.raw.find(data.path()), std::string::npos) << missing.raw;
+    EXPECT_EQ(missing.raw.find(service.data.path()), std::string::npos) << missing.raw;
 }

@@ -32,9 +32,8 @@ double healthSeconds(const ServerProcess& server) {
 
 // Finding 3: 40 event streams on a long render (more than the 32 HTTP threads).
 TEST(ServerLoad, EventStreamsDoNotHoldEveryThread) {
-    TempDir data, scenes;
-    writeFakeRendererScene(scenes.path());
-    ServerProcess server(fakeServerUnderTest(), data.path() + "/data", {"--scenes", scenes.path()});
+    FakeRenderService service;
+    ServerProcess& server = service.server;
     auto c = server.client();
     // 300 tiles of 100 ms: 30 s unless cancelled.
     const Reply job = postJson(c, "/api/renders", {{"scene", "any"}, {"spp", 100}, {"width", 320}, {"height", 240}});
