@@ -4,10 +4,13 @@
 #include <vector>
 
 #include "FirstOrder.h"
-#include "LensSettings.h"
 #include "LensSystem.h"
 
 namespace lenslab {
+
+// The narrowest f-number any front end accepts: the same everywhere (f/64, the smallest stop of
+// large-format lenses). A lens slower than that at its widest has just its widest setting.
+constexpr double kNarrowestFstop = 64.0;
 
 struct ApertureRange {
     double fstopMin = 0;                // the widest the lens allows (table stop or an element clips)

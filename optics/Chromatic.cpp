@@ -3,7 +3,7 @@
 #include <cmath>
 #include <optional>
 
-#include "Distortion.h"
+#include "ChiefRay.h"
 #include "ExactTrace.h"
 #include "FirstOrder.h"
 #include "NearAxis.h"

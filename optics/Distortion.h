@@ -24,11 +24,6 @@ struct DistortionSample {
     bool found = false;           // a chief ray through the stop centre exists and leaves the lens
 };
 
-// The incoming chief ray for a field angle: aimed so that, refracted by the elements in front of
-// the stop, it crosses the stop plane on the axis. Apertures are ignored (distortion is a property
-// of the surfaces' shapes); nullopt when no ray through the stop centre exists at that angle.
-std::optional<Ray> chiefRay(const LensSystem& lens, double fieldDegrees);
-
 // Samples at `count` equally spaced field angles from 0 to maxFieldDegrees (< 90). At 0 the
 // distortion is its limit, 0.
 std::vector<DistortionSample> distortionCurve(const LensSystem& lens, const FirstOrder& fo, double maxFieldDegrees,

@@ -34,8 +34,4 @@ struct LensSettings {
 constexpr double kShortestWavelength = 360.0;
 constexpr double kLongestWavelength = 830.0;
 
-// The narrowest f-number any front end accepts: the same everywhere (f/64, the smallest stop of
-// large-format lenses). A lens slower than that at its widest has just its widest setting.
-constexpr double kNarrowestFstop = 64.0;
-
 }  // namespace lenslab

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "Distortion.h"
+#include "ChiefRay.h"
 #include "ExactTrace.h"
 #include "Pupils.h"
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "ChiefRay.h"
 #include "Distortion.h"
 #include "ExactTrace.h"
 #include "FirstOrder.h"

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "Distortion.h"
+#include "ChiefRay.h"
 #include "ExactTrace.h"
 #include "LensSystem.h"
 #include "TestScenes.h"
