@@ -7,9 +7,9 @@
 #include "AnalysisPlots.h"
 #include "ArgParser.h"
 #include "Commands.h"
-#include "LensDesignAnalysis.h"
+#include "analysis/LensDesignAnalysis.h"
 #include "LensFlags.h"
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 
 namespace lenslab {
 

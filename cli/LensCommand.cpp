@@ -3,11 +3,11 @@
 
 #include "ArgParser.h"
 #include "Commands.h"
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "LensFlags.h"
 #include "LensJson.h"
 #include "LensText.h"
-#include "OpticsError.h"
+#include "prescription/OpticsError.h"
 
 namespace lenslab {
 

@@ -2,7 +2,7 @@
 // The lens settings every subcommand takes the same way: --fstop N and --focus MM|inf, each
 // carried with its flag's name so that optics' one check (analyzeLens) can blame the flag.
 #include "ArgParser.h"
-#include "LensSettings.h"
+#include "settings/LensSettings.h"
 
 namespace lenslab {
 

@@ -7,7 +7,7 @@
 #include "ArgParser.h"
 #include "BuildReport.h"
 #include "Commands.h"
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 
 namespace lenslab {
 

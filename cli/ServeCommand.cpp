@@ -6,12 +6,12 @@
 #include <filesystem>
 #include <iostream>
 
-#include "AccessControl.h"
+#include "guards/AccessControl.h"
 #include "Commands.h"
-#include "EngineRenderer.h"
-#include "MpiRenderer.h"
+#include "jobs/EngineRenderer.h"
+#include "jobs/MpiRenderer.h"
 #include "ServeOptions.h"
-#include "Service.h"
+#include "service/Service.h"
 
 namespace lenslab {
 

@@ -3,8 +3,8 @@
 // `lenslab serve`; tests substitute their own).
 #include <memory>
 
-#include "JobRenderer.h"
-#include "ServiceConfig.h"
+#include "jobs/JobRenderer.h"
+#include "core/ServiceConfig.h"
 
 namespace lenslab {
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "AccessControl.h"
+#include "guards/AccessControl.h"
 #include "ArgParser.h"
 
 #ifndef LENSLAB_SOURCE_DIR

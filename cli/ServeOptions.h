@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "ServiceConfig.h"
+#include "core/ServiceConfig.h"
 
 namespace lenslab {
 

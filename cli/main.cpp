@@ -6,8 +6,8 @@
 
 #include "ArgParser.h"
 #include "Commands.h"
-#include "LensTable.h"
-#include "OpticsError.h"
+#include "prescription/LensTable.h"
+#include "prescription/OpticsError.h"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "LensDesignAnalysis.h"
-#include "LensTable.h"
+#include "analysis/LensDesignAnalysis.h"
+#include "prescription/LensTable.h"
 
 namespace lenslab {
 

@@ -4,7 +4,7 @@
 // space (image points relative to the d line's chief ray on the image plane). NaN becomes null.
 #include <nlohmann/json.hpp>
 
-#include "LensDesignAnalysis.h"
+#include "analysis/LensDesignAnalysis.h"
 
 namespace lenslab {
 

@@ -2,7 +2,7 @@
 // A lens analysis as JSON: the shape `lenslab lens --json` prints and the API serves.
 #include <nlohmann/json.hpp>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 
 namespace lenslab {
 

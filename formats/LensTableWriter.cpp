@@ -1,7 +1,7 @@
 #include "LensTableWriter.h"
 
 #include "ExactNumberText.h"
-#include "GlassCatalog.h"
+#include "prescription/GlassCatalog.h"
 
 namespace lenslab {
 

@@ -3,7 +3,7 @@
 // table's own layout: parseLensTable reads it back to the same rows (with that layout given).
 #include <string>
 
-#include "LensTable.h"
+#include "prescription/LensTable.h"
 
 namespace lenslab {
 

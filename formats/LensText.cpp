@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 
 namespace lenslab {
 

@@ -2,7 +2,7 @@
 // A lens analysis as the text table `lenslab lens` prints.
 #include <string>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 
 namespace lenslab {
 

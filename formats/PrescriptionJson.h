@@ -6,7 +6,7 @@
 // design's image distance, which no analysis uses.
 #include <nlohmann/json.hpp>
 
-#include "LensTable.h"
+#include "prescription/LensTable.h"
 
 namespace lenslab {
 

@@ -4,7 +4,7 @@
 // thickness to the next surface).
 #include <string>
 
-#include "LensTable.h"
+#include "prescription/LensTable.h"
 
 namespace lenslab {
 

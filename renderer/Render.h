@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "LensSettings.h"
-#include "LensTable.h"
+#include "settings/LensSettings.h"
+#include "prescription/LensTable.h"
 
 namespace lenslab {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "LensDesignAnalysis.h"
+#include "analysis/LensDesignAnalysis.h"
 
 namespace lenslab {
 

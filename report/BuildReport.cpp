@@ -8,7 +8,7 @@
 
 #include "ItemRunner.h"
 #include "LensItems.h"
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 #include "RenderItems.h"
 #include "ReportPage.h"
 #include "SiteFiles.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <exception>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "LensJson.h"
 
 namespace lenslab {

@@ -7,11 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "LensSettings.h"
+#include "settings/LensSettings.h"
 
-#include "Distortion.h"
-#include "RelativeIllumination.h"
-#include "ThickLens.h"
+#include "analysis/Distortion.h"
+#include "analysis/RelativeIllumination.h"
+#include "firstorder/ThickLens.h"
 
 namespace lenslab {
 

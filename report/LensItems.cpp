@@ -4,8 +4,8 @@
 
 #include "AnalysisJson.h"
 #include "AnalysisPlots.h"
-#include "Focus.h"
-#include "LensDesignAnalysis.h"
+#include "firstorder/Focus.h"
+#include "analysis/LensDesignAnalysis.h"
 #include "LensDiagram.h"
 #include "SiteFiles.h"
 

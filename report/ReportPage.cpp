@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "MarkupText.h"
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 #include "SvgPlot.h"
 
 namespace lenslab {

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "MarkupText.h"
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 
 namespace lenslab {
 

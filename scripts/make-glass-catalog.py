@@ -11,7 +11,7 @@ except Schott's infrared glasses (chalcogenides measured from 0.6-1 um, opaque i
 A glass needs a dispersion formula and the maker's published nd and Vd; the others are skipped
 and counted. A seventh catalog, MISC, holds the few materials lens files name under Zemax's MISC
 catalog (fused silica, the fluoride crystals, sapphire), from the measurements the database cites;
-their nd and Vd are computed from the formula, as no maker publishes them. The coefficients are rewritten into the two layouts optics/Medium.h documents, so
+their nd and Vd are computed from the formula, as no maker publishes them. The coefficients are rewritten into the two layouts optics/prescription/Medium.h documents, so
 the C++ side reads numbers and never exponents:
 
   Sellmeier         A B1 C1 B2 C2 ...       n^2 = 1 + A + sum Bi L^2 / (L^2 - Ci)   (L in um, Ci in um^2)
@@ -39,7 +39,7 @@ MISC = [("SILICA", "database/data/main/SiO2/nk/Malitson.yml"),      # Malitson 1
         ("MGF2", "database/data/main/MgF2/nk/Dodge-o.yml")]         # ordinary ray, Dodge 1984
 SKIPPED_FOLDERS = {("schott", "infrared")}
 POLYNOMIAL_SLOTS = {0: 0, 2: 1, 4: 2, -2: 3, -4: 4, -6: 5, -8: 6, -10: 7, -12: 8}
-MAX_COEFFICIENTS = 12  # std::array<double, 12> in optics/Medium.h
+MAX_COEFFICIENTS = 12  # std::array<double, 12> in optics/prescription/Medium.h
 
 
 def git(git_dir, *args):
@@ -52,7 +52,7 @@ def number_text(value):
 
 
 def convert_formula(kind, tokens):
-    """(formula name, coefficient texts) in optics/Medium.h's layout, or None for other formulas."""
+    """(formula name, coefficient texts) in optics/prescription/Medium.h's layout, or None for other formulas."""
     values = [float(t) for t in tokens]
     if kind in ("formula 1", "formula 2"):
         if kind == "formula 1":
@@ -71,7 +71,7 @@ def convert_formula(kind, tokens):
 
 
 def refractive_index(formula, coefficients, nm):
-    """The same evaluation as optics/Medium.cpp, to check the data before it is written."""
+    """The same evaluation as optics/prescription/Medium.cpp, to check the data before it is written."""
     c = [float(t) for t in coefficients] + [0.0] * MAX_COEFFICIENTS
     x = (nm / 1000.0) ** 2
     if formula == "Sellmeier":
@@ -145,7 +145,7 @@ def main():
         rows.append(row)
 
     keys = [(r["maker"], re.sub(r"[\s_-]", "", r["name"]).upper()) for r in rows]
-    if len(set(keys)) != len(keys):  # optics/GlassCatalog.cpp matches names without these
+    if len(set(keys)) != len(keys):  # optics/prescription/GlassCatalog.cpp matches names without these
         raise SystemExit(f"names of one maker differ only in case, spaces, _ or -: {sorted(keys)}")
 
     with open(args.output, "w", encoding="utf-8", newline="\n") as out:
@@ -153,7 +153,7 @@ def main():
                   f"# commit {commit} ({date}); public domain, CC0 1.0 (waived by the database's authors).\n"
                   "# Written by scripts/make-glass-catalog.py; do not edit by hand.\n"
                   "# maker<TAB>name<TAB>formula<TAB>min nm<TAB>max nm<TAB>nd<TAB>Vd<TAB>coefficients"
-                  " (optics/Medium.h layout, wavelength in um)\n")
+                  " (optics/prescription/Medium.h layout, wavelength in um)\n")
         for r in rows:
             out.write("\t".join([r["maker"], r["name"], r["formula"], f"{r['min']:g}", f"{r['max']:g}",
                                  number_text(r["nd"]), number_text(r["vd"]), " ".join(r["coefficients"])]) + "\n")

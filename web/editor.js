@@ -7,7 +7,7 @@
 import { $, api, authorizedFetch, postJson, showMessage } from "./api.js";
 import { COLUMNS, needsZemax, newRow, setGlassCatalog } from "./prescription-cells.js";
 import { UndoHistory } from "./undo-history.js";
-import { lensPreviewSettings, loadLenses, selectedLens, showDiagramPng, showLensData } from "./lens.js";
+import { attachEditor, lensPreviewSettings, loadLenses, selectedLens, showDiagramPng, showLensData } from "./lens.js";
 
 const state = {
   lensId: null,
@@ -24,9 +24,9 @@ const state = {
 const cellId = (i, key) => `${i}:${key}`;
 const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
 
-export const hasEdits = () => state.prescription !== null && !same(state.rows, state.prescription.rows);
+const hasEdits = () => state.prescription !== null && !same(state.rows, state.prescription.rows);
 
-export async function loadPrescription(id) {
+async function loadPrescription(id) {
   const prescription = await api(`/api/lenses/${encodeURIComponent(id)}/prescription`);
   if (selectedLens() !== id) return;
   state.lensId = id;
@@ -211,7 +211,7 @@ const say = (text, bad = false) => { $("editor-status").textContent = text; $("e
 const prescriptionBody = (rows) => ({ rows, comments: state.prescription.comments, catalogs: state.prescription.catalogs,
   wavelengths_nm: state.prescription.wavelengths_nm, primary_wavelength_nm: state.prescription.primary_wavelength_nm });
 
-export function requestPreview() {
+function requestPreview() {
   if (!state.editedAt) state.editedAt = performance.now();
   if (state.invalid.size) {
     say(`Not sent: ${state.invalid.size} cell${state.invalid.size > 1 ? "s need" : " needs"} correcting (marked in red).`, true);
@@ -335,6 +335,7 @@ async function renderThroughThisLens() {
 }
 
 export async function setUpEditor() {
+  attachEditor({ hasEdits, loadPrescription, requestPreview });
   $("editor-undo").addEventListener("click", undo);
   $("editor-redo").addEventListener("click", redo);
   $("editor-save").addEventListener("click", () => saveAsNewLens().catch((e) => say(`Not saved: ${e.message}`, true)));

@@ -2,7 +2,6 @@
 // driven like the course's lens viewer (↑/↓ f-number by 0.1, Shift+↑/↓ a full stop, m the diagram
 // mode, ←/→ the focus). Out-of-range f-numbers are refused with the lens's range, never clamped.
 import { $, api, authorizedFetch, clearMessage, fixed, showMessage } from "./api.js";
-import { hasEdits, loadPrescription, requestPreview } from "./editor.js";
 
 const state = {
   lenses: [],
@@ -17,6 +16,11 @@ const MODES = ["exact", "thick", "overlay"];
 const FOCUS_STEP = 25;  // of the focus slider's 1000 (logarithmic) steps
 
 // ---- lens list and upload --------------------------------------------------------------------
+
+// The live editor (editor.js, which builds on this module) attaches how it follows the chosen lens
+// and shows an edited one; until it does, a lens is shown as stored.
+let editor = { hasEdits: () => false, loadPrescription: async () => {}, requestPreview: () => {} };
+export function attachEditor(hooks) { editor = hooks; }
 
 export async function loadLenses(selectId) {
   const body = await api("/api/lenses");
@@ -167,7 +171,7 @@ async function selectLens(id) {
   $("delete-lens").hidden = summary.bundled;
   trySetFstop(state.fstopMin);
   // The editor's rows first: until they are this lens's, an edit of the last lens would be shown.
-  await loadPrescription(id).catch((e) => showMessage(`The prescription of ${id} cannot be edited: ${e.message}`));
+  await editor.loadPrescription(id).catch((e) => showMessage(`The prescription of ${id} cannot be edited: ${e.message}`));
   await updateLensView();
 }
 
@@ -202,7 +206,7 @@ export function lensPreviewSettings() {
 
 async function updateLensView() {
   if (!state.lensId || wavelengthParameter() === null) return;
-  if (hasEdits()) { requestPreview(); return; }  // the edited lens, not the stored one
+  if (editor.hasEdits()) { editor.requestPreview(); return; }  // the edited lens, not the stored one
   const id = encodeURIComponent(state.lensId);
   const request = ++state.dataRequest;
   $("diagram-status").textContent = "Drawing the diagram…";

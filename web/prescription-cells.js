@@ -1,7 +1,7 @@
 // The prescription editor's columns: how each cell shows its row's value (as lens designers read
 // them: radii and thicknesses to 4 decimals, nd to 5, Vd to 2, aspheric terms in exponent form),
 // how typed text is checked (the reason when it is not acceptable), and what it changes in the row.
-// Rows are the service's JSON rows (server/PrescriptionRoutes.cpp): gap is the thickness after the
+// Rows are the service's JSON rows (server/routes/PrescriptionRoutes.cpp): gap is the thickness after the
 // surface; a catalog glass by name (index 0: the catalog's nd), a model glass by index and abbe.
 
 const ASPHERIC_TERMS = 8;

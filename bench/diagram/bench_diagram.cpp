@@ -7,7 +7,7 @@
 #include "DiagramPicture.h"
 #include "DiagramStyle.h"
 #include "GlCanvas.h"
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "LensDiagram.h"
 #include "PngCodec.h"
 

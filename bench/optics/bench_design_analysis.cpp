@@ -4,7 +4,7 @@
 // would call it.
 #include <benchmark/benchmark.h>
 
-#include "LensDesignAnalysis.h"
+#include "analysis/LensDesignAnalysis.h"
 
 using namespace lenslab;
 

@@ -7,8 +7,8 @@
 #include <random>
 #include <sstream>
 
-#include "LensAnalysis.h"
-#include "RayBatch.h"
+#include "settings/LensAnalysis.h"
+#include "trace/RayBatch.h"
 
 using namespace lenslab;
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <random>
 
-#include "LensAnalysis.h"
-#include "RayBatch.h"
+#include "settings/LensAnalysis.h"
+#include "trace/RayBatch.h"
 
 using namespace lenslab;
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "ProcessCpuTime.h"
 #include "Render.h"
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "ExactTrace.h"
-#include "ExitPupilBounds.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/ExitPupilBounds.h"
 
 namespace lenslab::tradeoff {
 

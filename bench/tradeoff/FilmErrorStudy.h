@@ -4,7 +4,7 @@
 // carried out in float (traceRayT<float>), both mapped back to the film the same way.
 #include <vector>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "cameras/ThickLensFilmError.h"
 #include "TradeoffCases.h"
 

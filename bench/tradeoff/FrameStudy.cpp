@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "ProcessCpuTime.h"
 
 namespace lenslab::tradeoff {

@@ -7,7 +7,7 @@
 #include "DiagramBackend.h"
 #include "DrawList.h"
 #include "GlCanvas.h"
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 #include "PngCodec.h"
 #include "TextRaster.h"
 

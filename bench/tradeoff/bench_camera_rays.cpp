@@ -12,9 +12,9 @@
 
 #include <memory>
 
-#include "ExactTrace.h"
+#include "trace/ExactTrace.h"
 #include "FieldSamples.h"
-#include "RayBatch.h"
+#include "trace/RayBatch.h"
 #include "cameras/RealisticCamera.h"
 #include "sampling/Sampling.h"
 

@@ -1,6 +1,6 @@
 #include "DiagramPicture.h"
 
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 
 #include <algorithm>
 #include <array>

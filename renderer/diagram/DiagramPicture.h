@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "LensDiagram.h"
 #include "RayFans.h"
 #include "TextRaster.h"

@@ -4,8 +4,8 @@
 
 #include "DiagramPicture.h"
 #include "DiagramStyle.h"
-#include "LensAnalysis.h"
-#include "NumberText.h"
+#include "settings/LensAnalysis.h"
+#include "prescription/NumberText.h"
 #include "PngCodec.h"
 #include "CanvasLease.h"
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "LensSettings.h"
-#include "LensSystem.h"
+#include "settings/LensSettings.h"
+#include "prescription/LensSystem.h"
 
 namespace lenslab {
 

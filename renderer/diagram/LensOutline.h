@@ -3,7 +3,7 @@
 // its clear aperture, the glass between surfaces, the element edges, and the aperture stop.
 #include <vector>
 
-#include "LensSystem.h"
+#include "prescription/LensSystem.h"
 
 namespace lenslab {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ExactTrace.h"
-#include "ThickLens.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/ThickLens.h"
 
 namespace lenslab {
 

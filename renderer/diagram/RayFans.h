@@ -4,7 +4,7 @@
 // model, until they reach the focus in front of it. Paths are in lens millimetres.
 #include <vector>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "LensOutline.h"
 
 namespace lenslab {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 
 namespace lenslab::test {
 

@@ -5,8 +5,8 @@
 #include <limits>
 
 #include "DiagramTestSupport.h"
-#include "LensTable.h"
-#include "OpticsError.h"
+#include "prescription/LensTable.h"
+#include "prescription/OpticsError.h"
 
 namespace lenslab::test {
 namespace {

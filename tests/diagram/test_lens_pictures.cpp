@@ -7,7 +7,7 @@
 
 #include "DiagramStyle.h"
 #include "DiagramTestSupport.h"
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 
 namespace lenslab::test {
 namespace {

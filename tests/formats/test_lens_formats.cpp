@@ -6,9 +6,9 @@
 
 #include <cstdio>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "LensJson.h"
-#include "LensTable.h"
+#include "prescription/LensTable.h"
 #include "LensText.h"
 
 using namespace lenslab;

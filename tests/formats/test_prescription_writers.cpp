@@ -6,8 +6,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "LensAnalysis.h"
-#include "LensSystem.h"
+#include "settings/LensAnalysis.h"
+#include "prescription/LensSystem.h"
 #include "LensTableWriter.h"
 #include "PrescriptionJson.h"
 #include "ZemaxWriter.h"

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "FuzzCheck.h"
-#include "LensSystem.h"
-#include "LensTable.h"
+#include "prescription/LensSystem.h"
+#include "prescription/LensTable.h"
 
 using namespace lenslab;
 using lenslab::fuzz::check;

@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "FuzzCheck.h"
-#include "ExactTrace.h"
-#include "LensAnalysis.h"
-#include "OpticsError.h"
-#include "RayBatch.h"
+#include "trace/ExactTrace.h"
+#include "settings/LensAnalysis.h"
+#include "prescription/OpticsError.h"
+#include "trace/RayBatch.h"
 
 using namespace lenslab;
 using lenslab::fuzz::check;

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "FuzzCheck.h"
-#include "LensTable.h"
-#include "ZemaxFile.h"
+#include "prescription/LensTable.h"
+#include "prescription/ZemaxFile.h"
 
 using namespace lenslab;
 using lenslab::fuzz::check;

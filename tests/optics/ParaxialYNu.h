@@ -4,7 +4,7 @@
 // light travels along +s = -z. It shares no code with optics/ beyond reading the lens table.
 #include <vector>
 
-#include "LensSystem.h"
+#include "prescription/LensSystem.h"
 
 namespace lenslab::test {
 

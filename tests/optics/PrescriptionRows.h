@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "LensSystem.h"
+#include "prescription/LensSystem.h"
 
 namespace lenslab::test {
 

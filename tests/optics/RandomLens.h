@@ -4,7 +4,7 @@
 #include <random>
 #include <sstream>
 
-#include "LensSystem.h"
+#include "prescription/LensSystem.h"
 
 namespace lenslab::test {
 

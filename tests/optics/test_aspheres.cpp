@@ -6,12 +6,12 @@
 #include <cmath>
 #include <cstring>
 
-#include "ExactTrace.h"
-#include "FirstOrder.h"
-#include "LensAnalysis.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/FirstOrder.h"
+#include "settings/LensAnalysis.h"
 #include "ParaxialYNu.h"
 #include "PrescriptionRows.h"
-#include "RayBatch.h"
+#include "trace/RayBatch.h"
 
 using namespace lenslab;
 using namespace lenslab::test;

@@ -7,12 +7,12 @@
 #include <cmath>
 #include <random>
 
-#include "DiffractionMtf.h"
-#include "ExactTrace.h"
-#include "Fft.h"
-#include "LensDesignAnalysis.h"
-#include "Medium.h"
-#include "OpticsError.h"
+#include "analysis/DiffractionMtf.h"
+#include "trace/ExactTrace.h"
+#include "analysis/Fft.h"
+#include "analysis/LensDesignAnalysis.h"
+#include "prescription/Medium.h"
+#include "prescription/OpticsError.h"
 #include "PrescriptionRows.h"
 
 using namespace lenslab;

@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "ChiefRay.h"
-#include "Distortion.h"
-#include "ExactTrace.h"
-#include "FirstOrder.h"
-#include "LensSystem.h"
-#include "NearAxis.h"
+#include "firstorder/ChiefRay.h"
+#include "analysis/Distortion.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/FirstOrder.h"
+#include "prescription/LensSystem.h"
+#include "trace/NearAxis.h"
 
 using namespace lenslab;
 

@@ -9,10 +9,10 @@
 #include <limits>
 #include <string>
 
-#include "ExactTrace.h"
-#include "LensAnalysis.h"
-#include "OpticsError.h"
-#include "RayBatch.h"
+#include "trace/ExactTrace.h"
+#include "settings/LensAnalysis.h"
+#include "prescription/OpticsError.h"
+#include "trace/RayBatch.h"
 
 using namespace lenslab;
 

@@ -6,14 +6,14 @@
 #include <filesystem>
 #include <limits>
 
-#include "Aperture.h"
-#include "FirstOrder.h"
-#include "Focus.h"
-#include "LensAnalysis.h"
-#include "OpticsError.h"
+#include "firstorder/Aperture.h"
+#include "firstorder/FirstOrder.h"
+#include "firstorder/Focus.h"
+#include "settings/LensAnalysis.h"
+#include "prescription/OpticsError.h"
 #include "ParaxialYNu.h"
-#include "Pupils.h"
-#include "ThickLens.h"
+#include "firstorder/Pupils.h"
+#include "firstorder/ThickLens.h"
 
 using namespace lenslab;
 using namespace lenslab::test;

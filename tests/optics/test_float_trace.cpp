@@ -5,9 +5,9 @@
 #include <cmath>
 #include <vector>
 
-#include "ExactTrace.h"
-#include "FirstOrder.h"
-#include "NearAxis.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/FirstOrder.h"
+#include "trace/NearAxis.h"
 
 using namespace lenslab;
 

@@ -6,11 +6,11 @@
 
 #include <limits>
 
-#include "ExactTrace.h"
-#include "FirstOrder.h"
-#include "Focus.h"
-#include "LensTable.h"
-#include "Pupils.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/FirstOrder.h"
+#include "firstorder/Focus.h"
+#include "prescription/LensTable.h"
+#include "firstorder/Pupils.h"
 
 using namespace lenslab;
 

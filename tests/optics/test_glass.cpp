@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "GlassCatalog.h"
-#include "LensTable.h"
-#include "Medium.h"
+#include "prescription/GlassCatalog.h"
+#include "prescription/LensTable.h"
+#include "prescription/Medium.h"
 
 using namespace lenslab;
 

@@ -6,9 +6,9 @@
 #include <set>
 #include <sstream>
 
-#include "FirstOrder.h"
-#include "LensSystem.h"
-#include "LensTable.h"
+#include "firstorder/FirstOrder.h"
+#include "prescription/LensSystem.h"
+#include "prescription/LensTable.h"
 
 using namespace lenslab;
 

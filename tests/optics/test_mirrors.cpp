@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "ExactTrace.h"
-#include "FirstOrder.h"
-#include "LensAnalysis.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/FirstOrder.h"
+#include "settings/LensAnalysis.h"
 
 using namespace lenslab;
 

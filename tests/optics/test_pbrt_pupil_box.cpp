@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "LensAnalysis.h"
-#include "LensSystem.h"
-#include "PbrtPupilBox.h"
-#include "ExactTrace.h"
-#include "RayBatch.h"
+#include "settings/LensAnalysis.h"
+#include "prescription/LensSystem.h"
+#include "firstorder/PbrtPupilBox.h"
+#include "trace/ExactTrace.h"
+#include "trace/RayBatch.h"
 
 using namespace lenslab;
 

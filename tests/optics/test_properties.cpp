@@ -5,12 +5,12 @@
 #include <cmath>
 #include <random>
 
-#include "ExactTrace.h"
-#include "FirstOrder.h"
-#include "OpticsError.h"
-#include "Pupils.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/FirstOrder.h"
+#include "prescription/OpticsError.h"
+#include "firstorder/Pupils.h"
 #include "RandomLens.h"
-#include "ThickLens.h"
+#include "firstorder/ThickLens.h"
 
 using namespace lenslab;
 using namespace lenslab::test;

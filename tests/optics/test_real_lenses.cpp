@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "FirstOrder.h"
-#include "LensAnalysis.h"
-#include "Medium.h"
+#include "firstorder/FirstOrder.h"
+#include "settings/LensAnalysis.h"
+#include "prescription/Medium.h"
 
 using namespace lenslab;
 

@@ -3,10 +3,10 @@
 
 #include <cmath>
 
-#include "FirstOrder.h"
-#include "LensSystem.h"
-#include "OpticsError.h"
-#include "RelativeIllumination.h"
+#include "firstorder/FirstOrder.h"
+#include "prescription/LensSystem.h"
+#include "prescription/OpticsError.h"
+#include "analysis/RelativeIllumination.h"
 
 using namespace lenslab;
 

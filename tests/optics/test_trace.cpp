@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "ExactTrace.h"
-#include "RayBatch.h"
+#include "trace/ExactTrace.h"
+#include "trace/RayBatch.h"
 
 using namespace lenslab;
 

@@ -5,10 +5,10 @@
 
 #include <random>
 
-#include "ExitPupilBounds.h"
-#include "Focus.h"
-#include "RayBatch.h"
-#include "WavelengthEtas.h"
+#include "firstorder/ExitPupilBounds.h"
+#include "firstorder/Focus.h"
+#include "trace/RayBatch.h"
+#include "trace/WavelengthEtas.h"
 
 using namespace lenslab;
 

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "LensTable.h"
-#include "ZemaxFile.h"
+#include "prescription/LensTable.h"
+#include "prescription/ZemaxFile.h"
 
 using namespace lenslab;
 

@@ -11,8 +11,8 @@
 
 #include "cameras/ApertureShape.h"
 #include "cameras/CameraFactory.h"
-#include "LensAnalysis.h"
-#include "PbrtPupilBox.h"
+#include "settings/LensAnalysis.h"
+#include "firstorder/PbrtPupilBox.h"
 #include "cameras/RealisticCamera.h"
 #include "TestScenes.h"
 

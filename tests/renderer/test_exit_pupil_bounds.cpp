@@ -3,10 +3,10 @@
 
 #include <random>
 
-#include "ExactTrace.h"
-#include "ExitPupilBounds.h"
-#include "Focus.h"
-#include "Pupils.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/ExitPupilBounds.h"
+#include "firstorder/Focus.h"
+#include "firstorder/Pupils.h"
 #include "TestScenes.h"
 
 namespace lenslab {

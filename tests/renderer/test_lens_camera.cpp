@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 #include "TestScenes.h"
 
 namespace lenslab {

@@ -5,10 +5,10 @@
 #include <chrono>
 #include <thread>
 
-#include "ExitPupilBounds.h"
-#include "FirstOrder.h"
-#include "LensSystem.h"
-#include "LensTable.h"
+#include "firstorder/ExitPupilBounds.h"
+#include "firstorder/FirstOrder.h"
+#include "prescription/LensSystem.h"
+#include "prescription/LensTable.h"
 #include "cameras/RealisticCamera.h"
 #include "TestScenes.h"
 

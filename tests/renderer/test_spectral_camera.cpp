@@ -8,9 +8,10 @@
 #include <cstdio>
 #include <vector>
 
-#include "ChiefRay.h"
-#include "ExactTrace.h"
-#include "LensSystem.h"
+#include "firstorder/ChiefRay.h"
+#include "firstorder/FirstOrder.h"
+#include "trace/ExactTrace.h"
+#include "prescription/LensSystem.h"
 #include "TestScenes.h"
 #include "core/ColourMatching.h"
 #include "core/SmitsSpectrum.h"

@@ -3,7 +3,7 @@
 // Lets tests drive the queue (limits, cancellation, restarts, crashes) quickly and predictably.
 #include <atomic>
 
-#include "JobRenderer.h"
+#include "jobs/JobRenderer.h"
 
 namespace lenslab {
 

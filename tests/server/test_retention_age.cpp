@@ -3,10 +3,10 @@
 // its limit of 0.00001 days cannot tell days from hours.)
 #include <gtest/gtest.h>
 
-#include "Database.h"
+#include "storage/Database.h"
 #include "FakeRenderer.h"
-#include "Identifiers.h"
-#include "RenderRetention.h"
+#include "core/Identifiers.h"
+#include "jobs/RenderRetention.h"
 #include "TempDir.h"
 
 using namespace lenslab;

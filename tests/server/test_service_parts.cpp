@@ -7,15 +7,15 @@
 #include <future>
 #include <thread>
 
-#include "Database.h"
-#include "DiagramCache.h"
+#include "storage/Database.h"
+#include "storage/DiagramCache.h"
 #include "FakeRenderer.h"
-#include "HttpError.h"
-#include "Identifiers.h"
-#include "JobQueue.h"
-#include "JobStore.h"
-#include "LensStore.h"
-#include "RenderRequest.h"
+#include "core/HttpError.h"
+#include "core/Identifiers.h"
+#include "jobs/JobQueue.h"
+#include "jobs/JobStore.h"
+#include "storage/LensStore.h"
+#include "jobs/RenderRequest.h"
 #include "ServerProcess.h"
 
 using namespace lenslab;

@@ -4,7 +4,7 @@
 // that write or spend CPU need it unless reads are private (GET, HEAD and OPTIONS are reads).
 #include <gtest/gtest.h>
 
-#include "AccessControl.h"
+#include "guards/AccessControl.h"
 
 using namespace lenslab;
 

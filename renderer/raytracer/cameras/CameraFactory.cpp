@@ -1,10 +1,10 @@
 #include "cameras/CameraFactory.h"
 
-#include "ExitPupilBounds.h"
+#include "firstorder/ExitPupilBounds.h"
 
-#include "LensTable.h"
-#include "NumberText.h"
-#include "OpticsError.h"
+#include "prescription/LensTable.h"
+#include "prescription/NumberText.h"
+#include "prescription/OpticsError.h"
 #include "cameras/EnvironmentCamera.h"
 #include "cameras/MovingCamera.h"
 #include "cameras/OrthographicCamera.h"

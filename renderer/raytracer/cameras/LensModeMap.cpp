@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 
 namespace lenslab {
 

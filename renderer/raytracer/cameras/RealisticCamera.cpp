@@ -3,12 +3,12 @@
 #include <cmath>
 #include <limits>
 
-#include "Aperture.h"
-#include "ExactTrace.h"
-#include "NumberText.h"
-#include "OpticsError.h"
-#include "PbrtPupilBox.h"
-#include "RayBatch.h"
+#include "firstorder/Aperture.h"
+#include "trace/ExactTrace.h"
+#include "prescription/NumberText.h"
+#include "prescription/OpticsError.h"
+#include "firstorder/PbrtPupilBox.h"
+#include "trace/RayBatch.h"
 #include "sampling/Sampling.h"
 
 namespace lenslab {

@@ -20,13 +20,13 @@
 
 #include "cameras/ApertureShape.h"
 #include "cameras/Camera.h"
-#include "ExactTrace.h"
-#include "ExitPupilBounds.h"
-#include "LensAnalysis.h"
-#include "LensSettings.h"
+#include "trace/ExactTrace.h"
+#include "firstorder/ExitPupilBounds.h"
+#include "settings/LensAnalysis.h"
+#include "settings/LensSettings.h"
 #include "cameras/LensModeMap.h"
-#include "RayBatch.h"
-#include "WavelengthEtas.h"
+#include "trace/RayBatch.h"
+#include "trace/WavelengthEtas.h"
 #include "core/Transform.h"
 
 namespace lenslab {
@@ -47,7 +47,7 @@ struct RealisticParams {
     std::array<double, 4> crop = {0, 1, 0, 1};
     double exposureTime = 1;               // seconds the shutter is open (> 0)
     bool simpleWeighting = false;          // pbrt-v3: weights normalised to 1 at the image centre
-    // With simpleWeighting: pbrt-v3's exposure (optics/PbrtPupilBox.h) instead of the centre at 1.
+    // With simpleWeighting: pbrt-v3's exposure (optics/firstorder/PbrtPupilBox.h) instead of the centre at 1.
     bool pbrtExposure = false;
     // Trace each exact ray at its sample's wavelength (CameraSample::wavelengthNm), with the lens's
     // dispersion; the thick lens stays at the lens's wavelength. Only for a dispersive lens.

@@ -1,6 +1,6 @@
 #include "cameras/Shutter.h"
 
-#include "NumberText.h"
+#include "prescription/NumberText.h"
 
 namespace lenslab {
 

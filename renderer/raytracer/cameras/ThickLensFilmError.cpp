@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "OpticsError.h"
-#include "RayBatch.h"
+#include "prescription/OpticsError.h"
+#include "trace/RayBatch.h"
 
 namespace lenslab {
 

@@ -12,7 +12,7 @@
 // Millimetres, lens space (origin at the front vertex, +z toward the scene, film at negative z).
 #include <vector>
 
-#include "LensAnalysis.h"
+#include "settings/LensAnalysis.h"
 
 namespace lenslab {
 

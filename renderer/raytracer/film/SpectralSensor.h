@@ -5,7 +5,7 @@
 // wavelength's probability, into linear Rec. 709 (sRGB primaries), as the RGB film stores.
 //
 // Wavelengths are drawn in 1 nm bands from 360 to 830 nm (the bands the lens's indices are
-// tabulated in, optics/WavelengthEtas.h) with probability proportional to x + y + z of the
+// tabulated in, optics/trace/WavelengthEtas.h) with probability proportional to x + y + z of the
 // matching functions, so that every band the eye sees is sampled and none it does not. The
 // estimate's expectation is the 1 nm sum of the spectrum against the matching functions,
 // calibrated per basis spectrum so that each comes back as its own colour (Smits's white exactly

@@ -5,7 +5,7 @@
 #include <optional>
 #include <sstream>
 
-#include "GlassCatalog.h"
+#include "prescription/GlassCatalog.h"
 #include "materials/MetalSpectra.h"
 #include "core/Spectrum.h"
 

@@ -9,7 +9,7 @@
 
 #include "CanvasLease.h"
 #include "LensDiagram.h"
-#include "LensSystem.h"
+#include "prescription/LensSystem.h"
 
 #ifndef LENSLAB_SOURCE_DIR
 #error "LENSLAB_SOURCE_DIR must be defined by the build"

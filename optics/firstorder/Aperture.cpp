@@ -1,0 +1,120 @@
+#include "firstorder/Aperture.h"
+
+#include "prescription/NumberText.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "trace/ExactTrace.h"
+#include "trace/NearAxis.h"
+#include "prescription/OpticsError.h"
+
+namespace lenslab {
+
+namespace {
+
+Ray marginalRayFromFPrime(const FirstOrder& fo, double sinTheta) {
+    return {{0, 0, fo.zFPrime}, {0, sinTheta, std::sqrt(1.0 - sinTheta * sinTheta)}};
+}
+
+// Whether the cone of half-angle theta from F' passes the whole lens (stop at table size). A central
+// obscuration takes out the middle of the cone, not its rim: it sets no f-number.
+bool conePasses(const LensSystem& lens, const FirstOrder& fo, double sinTheta) {
+    TraceOptions options;
+    options.ignoreObscurations = true;
+    return traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options).ok();
+}
+
+// Height at the stop plane of the marginal ray traced from F' through the surfaces behind the stop.
+double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta, bool* blocked) {
+    TraceOptions options;
+    options.begin = lens.stopIndex + 1;
+    options.ignoreObscurations = true;
+    const TraceResult r = traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options);
+    *blocked = !r.ok();
+    return std::fabs(heightAtZ(r.ray, lens.stop().z));
+}
+
+
+}  // namespace
+
+ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo) {
+    // Scan outward for the first blocked cone, then bisect; passing cones form [0, theta_max]
+    // for real lenses, and the scan guards against an isolated passing band beyond a blocked one.
+    constexpr int kScan = 256;
+    double lo = 0, hi = 1.0;
+    for (int k = 1; k <= kScan; ++k) {
+        const double s = static_cast<double>(k) / kScan * 0.999999;
+        if (!conePasses(lens, fo, s)) {
+            hi = s;
+            break;
+        }
+        lo = s;
+    }
+    if (lo == 0 && !conePasses(lens, fo, 1e-9))
+        throw OpticsError("no ray from the rear focal point passes the lens: check the apertures");
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (conePasses(lens, fo, mid) ? lo : hi) = mid;
+    }
+    ApertureRange range;
+    range.fstopMin = 1.0 / (2.0 * lo);
+    // A lens slower than kNarrowestFstop at its widest (a micrometre stop, a kilometre focal length) still
+    // has that one setting, rather than a range whose ends cross.
+    range.fstopMax = std::max(kNarrowestFstop, range.fstopMin);
+    bool blocked = false;
+    range.stopDiameterMax = 2.0 * stopHeight(lens, fo, lo, &blocked);
+    return range;
+}
+
+double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const ApertureRange& range,
+                            double fstop) {
+    // A relative tolerance lets the f-number printed for fstopMin be asked for again.
+    if (!(fstop >= range.fstopMin * (1 - 1e-9)) || !(fstop <= range.fstopMax))
+        throw OpticsError("f-number " + formatFNumber(fstop) + " is outside this lens's range f/" +
+                          formatFNumber(range.fstopMin) + " to f/" + formatFNumber(range.fstopMax));
+    const double sinTheta = std::min(1.0 / (2.0 * fstop), 1.0 / (2.0 * range.fstopMin));
+    bool blocked = false;
+    const double h = stopHeight(lens, fo, sinTheta, &blocked);
+    if (blocked) throw OpticsError("f/" + formatFNumber(fstop) + ": the marginal ray is blocked behind the stop");
+    return std::min(2.0 * h, 2.0 * lens.stop().apertureRadius);
+}
+
+double fstopForStopDiameter(const LensSystem& lens, const FirstOrder& fo, const ApertureRange& range, double diameter) {
+    if (!(diameter > 0)) throw OpticsError("the stop diameter must be positive, got " + formatFNumber(diameter) + " mm");
+    if (diameter >= range.stopDiameterMax) return range.fstopMin;
+    // The opening shrinks as the cone narrows: bisect sin theta between the widest cone and none.
+    double lo = 0, hi = 1.0 / (2.0 * range.fstopMin);
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        bool blocked = false;
+        (2.0 * stopHeight(lens, fo, mid, &blocked) < diameter ? lo : hi) = mid;
+    }
+    return 1.0 / (2.0 * 0.5 * (lo + hi));
+}
+
+std::vector<double> fullStops(double fstopMin, double fstopMax) {
+    std::vector<double> stops;
+    for (int k = 0; k < 40; ++k) {
+        const double v = std::pow(std::sqrt(2.0), k);
+        if (v > fstopMax * (1 + 1e-12)) break;
+        if (v >= fstopMin * (1 - 1e-9)) stops.push_back(v);
+    }
+    return stops;
+}
+
+std::vector<double> fineStops(double fstopMin, double fstopMax, double step) {
+    // A list to choose from, not a sweep: refuse a step or range that would never end.
+    constexpr double kMaxCount = 1e5;
+    const double first = std::ceil(fstopMin / step - 1e-9);
+    if (!(step > 0) || !(std::fabs(first) < 1e15) || !((fstopMax + 1e-12) / step - first < kMaxCount))
+        throw OpticsError("f-number steps of " + formatFNumber(step) + " from f/" + formatFNumber(fstopMin) + " to f/" +
+                          formatFNumber(fstopMax) + " are not a finite list of at most 100000");
+    std::vector<double> stops;
+    for (long k = static_cast<long>(first); k * step <= fstopMax + 1e-12; ++k) stops.push_back(k * step);
+    return stops;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,74 @@
+#include "firstorder/ChiefRay.h"
+
+#include <cmath>
+
+#include "trace/ExactTrace.h"
+#include "trace/NearAxis.h"
+#include "prescription/OpticsError.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Rays of one field angle, labelled by the height at which they cross the front vertex plane.
+struct FieldRays {
+    const LensSystem& lens;
+    double sinT, cosT;
+    double zIn;  // start plane, in front of every surface cap
+
+    Ray at(double vertexHeight) const {
+        const double t = (zIn - lens.frontZ()) / cosT;
+        return {{0, vertexHeight + t * sinT, zIn}, {0, -sinT, -cosT}};
+    }
+
+    // Height at the stop plane after the elements in front of it; nullopt when the ray cannot get there.
+    std::optional<double> stopHeight(double vertexHeight) const {
+        TraceOptions options;
+        options.end = lens.stopIndex;
+        options.ignoreApertures = true;
+        const TraceResult r = traceRay(lens, at(vertexHeight), TraceDirection::SceneToFilm, options);
+        if (!r.ok() || !(r.ray.direction.z * lens.zDirectionAfter(lens.stopIndex - 1) > 0)) return std::nullopt;
+        return heightAtZ(r.ray, lens.stop().z);
+    }
+};
+
+}  // namespace
+
+std::optional<Ray> chiefRay(const LensSystem& lens, double fieldDegrees) {
+    if (!(std::fabs(fieldDegrees) < 90)) throw OpticsError("chief ray: the field angle must lie below 90 degrees");
+    const double theta = fieldDegrees * kPi / 180;
+    double reach = 0;
+    for (const Surface& s : lens.surfaces) reach = std::max(reach, s.apertureRadius);
+    const FieldRays rays{lens, std::sin(theta), std::cos(theta), lens.frontZ() + lens.surfaces.front().apertureRadius + 1.0};
+    // Scan the vertex heights for a sign change of the stop height; take the bracket nearest the
+    // axis (the entrance pupil lies near it), then bisect.
+    constexpr int kScan = 400;
+    const double span = 3 * reach;
+    std::optional<double> prev = rays.stopHeight(-span);
+    double prevY = -span;
+    std::optional<std::pair<double, double>> bracket;
+    for (int k = 1; k <= kScan; ++k) {
+        const double y = -span + 2 * span * k / kScan;
+        const std::optional<double> g = rays.stopHeight(y);
+        if (prev && g && (*prev <= 0) != (*g <= 0)) {
+            const bool nearer = !bracket || std::fabs(0.5 * (prevY + y)) < std::fabs(0.5 * (bracket->first + bracket->second));
+            if (nearer) bracket = {{prevY, y}};
+        }
+        prev = g;
+        prevY = y;
+    }
+    if (!bracket) return std::nullopt;
+    auto [lo, hi] = *bracket;
+    const bool loNegative = *rays.stopHeight(lo) <= 0;
+    for (int it = 0; it < 100 && hi - lo > 1e-13 * reach; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        const std::optional<double> g = rays.stopHeight(mid);
+        if (!g) return std::nullopt;
+        ((*g <= 0) == loNegative ? lo : hi) = mid;
+    }
+    return rays.at(0.5 * (lo + hi));
+}
+
+}  // namespace lenslab

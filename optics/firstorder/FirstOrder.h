@@ -1,0 +1,22 @@
+#pragma once
+// Cardinal points of the lens, from near-axis rays traced from each side.
+#include "prescription/LensSystem.h"
+
+namespace lenslab {
+
+// All z in the lens convention: origin at the front vertex, +z toward the scene (mm).
+struct FirstOrder {
+    double efl = 0;       // effective focal length, image side (P' to F')
+    double eflFront = 0;  // object side (F to P); equals efl for a lens in air
+    double zF = 0;        // front (object-side) focal point
+    double zFPrime = 0;   // rear (image-side) focal point
+    double zP = 0;        // front principal plane
+    double zPPrime = 0;   // rear principal plane
+    double backFocalDistance = 0;   // rear vertex to F'
+    double frontFocalDistance = 0;  // F to front vertex
+};
+
+// Throws OpticsError for an afocal system or one a near-axis ray cannot pass.
+FirstOrder computeFirstOrder(const LensSystem& lens);
+
+}  // namespace lenslab

@@ -1,0 +1,235 @@
+#include "prescription/GlassCatalog.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <stdexcept>
+#include <string_view>
+#include <tuple>
+#include <utility>
+
+#include "prescription/GlassCatalogText.h"
+
+namespace lenslab {
+namespace {
+
+// The makers in the default search order, each with its name prefixes, its current line first.
+// Schott leads because the bare old names designers write (BK7, SF5, SK16) are Schott's; Hikari's
+// J-BK7 and Sumita's K-BK7 are copies of it under the makers' prefixes. The others follow in a
+// fixed order, so a lookup never depends on anything but its arguments.
+struct Maker {
+    std::string_view name;
+    std::array<std::string_view, 4> prefixes;
+};
+constexpr std::array<Maker, 7> kMakers{{
+    {"SCHOTT", {"N", "P"}},             // N: lead- and arsenic-free; P: precision moulding
+    {"OHARA", {"S", "L"}},              // S: the eco line; L: low Tg, moulding
+    {"HOYA", {"E", "M", "MC", "MP"}},   // E: eco; M, MC, MP: moulding
+    {"CDGM", {"H", "D"}},               // H: eco; D: moulding
+    {"HIKARI", {"J", "E", "Q", "P"}},   // J: today's eco line; E: the earlier one; Q, P: moulding
+    {"SUMITA", {"K"}},
+    {"MISC", {}},                       // Zemax's MISC: fused silica and crystals, measured, no maker
+}};
+constexpr std::size_t kSuggestions = 5;
+
+// A name as compared: upper case, without spaces, underscores and hyphens (no two glasses of one
+// maker differ only in those; a few names repeat across makers, where the search order decides).
+std::string nameKey(std::string_view name) {
+    std::string key;
+    for (const char c : name)
+        if (!std::isspace(static_cast<unsigned char>(c)) && c != '_' && c != '-')
+            key += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return key;
+}
+
+// "S-LAH64": prefix "S", rest "LAH64". Prefixes are one or two letters before the first hyphen.
+std::pair<std::string_view, std::string_view> splitPrefix(std::string_view name) {
+    const std::size_t hyphen = name.find('-');
+    const std::string_view prefix = name.substr(0, hyphen);
+    const bool letters = std::all_of(prefix.begin(), prefix.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
+    if (hyphen == std::string_view::npos || hyphen < 1 || hyphen > 2 || !letters) return {{}, name};
+    return {prefix, name.substr(hyphen + 1)};
+}
+
+struct GlassNames {
+    std::string key;         // the whole name
+    std::string base;        // the name without its maker prefix; "" when it has none
+    std::size_t maker = 0;   // index in kMakers
+    std::size_t prefixRank = 0;  // the prefix's place in the maker's list (unlisted prefixes last)
+};
+
+struct Catalog {
+    std::vector<Medium> glasses;
+    std::vector<GlassNames> names;  // parallel to glasses
+};
+
+std::vector<std::string_view> split(std::string_view text, char separator) {
+    std::vector<std::string_view> parts;
+    for (std::size_t start = 0;;) {
+        const std::size_t end = text.find(separator, start);
+        parts.push_back(text.substr(start, end - start));
+        if (end == std::string_view::npos) return parts;
+        start = end + 1;
+    }
+}
+
+[[noreturn]] void badLine(std::size_t line, const std::string& why) {
+    throw std::runtime_error("glass-catalog.tsv line " + std::to_string(line) + ": " + why);
+}
+
+double number(std::string_view text, std::size_t line) {
+    double value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size()) badLine(line, "bad number '" + std::string(text) + "'");
+    return value;
+}
+
+DispersionFormula formulaNamed(std::string_view name, std::size_t line) {
+    if (name == "Sellmeier") return DispersionFormula::Sellmeier;
+    if (name == "SchottPolynomial") return DispersionFormula::SchottPolynomial;
+    badLine(line, "unknown formula '" + std::string(name) + "'");
+}
+
+GlassNames namesOf(const Medium& glass, std::size_t line) {
+    GlassNames names;
+    const auto maker = std::find_if(kMakers.begin(), kMakers.end(), [&](const Maker& m) { return m.name == glass.catalog; });
+    if (maker == kMakers.end()) badLine(line, "unknown maker '" + glass.catalog + "'");
+    names.maker = static_cast<std::size_t>(maker - kMakers.begin());
+    names.key = nameKey(glass.name);
+    const auto [prefix, rest] = splitPrefix(glass.name);
+    if (!prefix.empty()) names.base = nameKey(rest);
+    const auto& prefixes = maker->prefixes;
+    names.prefixRank = static_cast<std::size_t>(std::find(prefixes.begin(), prefixes.end(), prefix) - prefixes.begin());
+    return names;
+}
+
+// The data file: comment lines start with '#'; each other line is one glass, tab-separated:
+// maker, name, formula, min nm, max nm, nd, Vd, coefficients (space-separated).
+Catalog parseCatalog(std::string_view text) {
+    Catalog catalog;
+    const std::vector<std::string_view> lines = split(text, '\n');
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::size_t line = i + 1;
+        if (lines[i].empty() || lines[i][0] == '#') continue;
+        const std::vector<std::string_view> f = split(lines[i], '\t');
+        if (f.size() != 8) badLine(line, "expected 8 fields, found " + std::to_string(f.size()));
+        Medium glass;
+        glass.catalog = f[0];
+        glass.name = f[1];
+        glass.formula = formulaNamed(f[2], line);
+        glass.minNm = number(f[3], line);
+        glass.maxNm = number(f[4], line);
+        glass.nd = number(f[5], line);
+        glass.vd = number(f[6], line);
+        const std::vector<std::string_view> coefficients = split(f[7], ' ');
+        if (coefficients.size() > glass.coefficients.size()) badLine(line, "too many coefficients");
+        for (std::size_t c = 0; c < coefficients.size(); ++c) glass.coefficients[c] = number(coefficients[c], line);
+        catalog.names.push_back(namesOf(glass, line));
+        catalog.glasses.push_back(std::move(glass));
+    }
+    return catalog;
+}
+
+const Catalog& catalog() {
+    static const Catalog parsed = parseCatalog(kGlassCatalogText);  // once, on first use; thread-safe
+    return parsed;
+}
+
+// position[maker]: where the maker comes in the search; preferred catalogs first. A Zemax catalog
+// name names its maker by its start ("SUMITA_AUG2011"); names of no known maker are passed over.
+std::array<std::size_t, kMakers.size()> searchPositions(const std::vector<std::string>& preferredCatalogs) {
+    std::vector<std::size_t> order;
+    auto add = [&](std::size_t maker) {
+        if (std::find(order.begin(), order.end(), maker) == order.end()) order.push_back(maker);
+    };
+    for (const std::string& catalogName : preferredCatalogs) {
+        const std::string key = nameKey(catalogName);
+        for (std::size_t m = 0; m < kMakers.size(); ++m)
+            if (key.compare(0, kMakers[m].name.size(), kMakers[m].name) == 0) add(m);
+    }
+    for (std::size_t m = 0; m < kMakers.size(); ++m) add(m);
+    std::array<std::size_t, kMakers.size()> position{};
+    for (std::size_t i = 0; i < order.size(); ++i) position[order[i]] = i;
+    return position;
+}
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t substitution = diagonal + (a[i - 1] != b[j - 1] ? 1 : 0);
+            diagonal = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
+        }
+    }
+    return row[b.size()];
+}
+
+// The names nearest to a key (with or without their prefix), ties in search order, then by name.
+std::vector<std::string> nearestNames(const std::string& key, const std::array<std::size_t, kMakers.size()>& position) {
+    const Catalog& c = catalog();
+    std::vector<std::tuple<std::size_t, std::size_t, std::string_view>> ranked;
+    for (std::size_t i = 0; i < c.glasses.size(); ++i) {
+        const GlassNames& n = c.names[i];
+        std::size_t distance = editDistance(key, n.key);
+        if (!n.base.empty()) distance = std::min(distance, editDistance(key, n.base));
+        ranked.emplace_back(distance, position[n.maker], c.glasses[i].name);
+    }
+    std::sort(ranked.begin(), ranked.end());
+    std::vector<std::string> names;
+    for (const auto& entry : ranked) {
+        const std::string name(std::get<2>(entry));
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        if (names.size() == kSuggestions) break;
+    }
+    return names;
+}
+
+}  // namespace
+
+// The makers are searched one after the other, preferred ones first, as a .zmx GCAT line asks.
+// Within a maker a glass whose whole name matches comes before one that matches without its
+// prefix, so a name that exists as written is taken as written: SF5 is Schott's lead SF5, not
+// N-SF5, because the design was made with that glass's dispersion. Old names therefore map to
+// new ones only where the old glass is not in the data (BK7 -> N-BK7, SK16 -> N-SK16), never
+// new to old (N-SF5 never finds SF5). Then the maker's prefix order (Hikari J- before E-) decides.
+GlassLookup findGlass(const std::string& name, const std::vector<std::string>& preferredCatalogs) {
+    const Catalog& c = catalog();
+    const auto position = searchPositions(preferredCatalogs);
+    GlassLookup lookup;
+    lookup.searched.resize(kMakers.size());
+    for (std::size_t m = 0; m < kMakers.size(); ++m) lookup.searched[position[m]] = kMakers[m].name;
+
+    const std::string key = nameKey(name);
+    std::optional<std::size_t> best;
+    std::tuple<std::size_t, int, std::size_t, std::string_view> bestRank;
+    for (std::size_t i = 0; i < c.glasses.size(); ++i) {
+        const GlassNames& n = c.names[i];
+        const int tier = key == n.key ? 0 : (!n.base.empty() && key == n.base) ? 1 : -1;
+        if (tier < 0) continue;
+        const auto rank = std::make_tuple(position[n.maker], tier, n.prefixRank, std::string_view(c.glasses[i].name));
+        if (!best || rank < bestRank) {
+            best = i;
+            bestRank = rank;
+        }
+    }
+    if (best) lookup.glass = c.glasses[*best];
+    else lookup.suggestions = nearestNames(key, position);
+    return lookup;
+}
+
+std::vector<std::string> glassCatalogNames() {
+    std::vector<std::string> names;
+    for (const Maker& maker : kMakers) names.emplace_back(maker.name);
+    return names;
+}
+
+std::size_t glassCount() { return catalog().glasses.size(); }
+
+const std::vector<Medium>& catalogGlasses() { return catalog().glasses; }
+
+}  // namespace lenslab

@@ -1,0 +1,28 @@
+#pragma once
+// The makers' catalog glasses (optics/data/glass-catalog.tsv, converted from the public-domain
+// refractiveindex.info database), found by name as lens designers write them. docs/glass.md
+// gives the catalogs, the matching rules and the formulas.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "prescription/Medium.h"
+
+namespace lenslab {
+
+struct GlassLookup {
+    std::optional<Medium> glass;           // empty: no glass of that name
+    std::vector<std::string> searched;     // the makers, in the order they were searched
+    std::vector<std::string> suggestions;  // when not found: the nearest names, nearest first
+};
+
+// Finds a catalog glass by name: case, spaces, underscores and hyphens do not matter, and a name
+// without its maker prefix ("BK7", "LAH64", "LAK02") finds the prefixed glass. preferredCatalogs
+// (a .zmx GCAT line: "SCHOTT", "OHARA", "SUMITA_AUG2011", ...) are searched first, then the rest.
+GlassLookup findGlass(const std::string& name, const std::vector<std::string>& preferredCatalogs = {});
+std::vector<std::string> glassCatalogNames();  // the makers, in the default search order
+std::size_t glassCount();
+const std::vector<Medium>& catalogGlasses();   // every glass, maker by maker
+
+}  // namespace lenslab

@@ -1,0 +1,147 @@
+#include "trace/RayBatch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "trace/WavelengthEtas.h"
+
+namespace lenslab {
+
+void RayBatch::resize(std::size_t n) {
+    for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz}) v->resize(n);
+    blocked.resize(n);
+    blockedAt.resize(n);
+}
+
+void RayBatch::set(std::size_t i, const Ray& r) {
+    ox[i] = r.origin.x; oy[i] = r.origin.y; oz[i] = r.origin.z;
+    dx[i] = r.direction.x; dy[i] = r.direction.y; dz[i] = r.direction.z;
+}
+
+Ray RayBatch::get(std::size_t i) const {
+    return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}};
+}
+
+namespace {
+
+// Keeps the batch's state for rays that passed this surface and records the block of those it stopped.
+struct BatchArrays {
+    double *px, *py, *pz, *vx, *vy, *vz;
+    std::uint8_t* why;
+    std::int16_t* at;
+};
+
+inline void keep(const BatchArrays& a, std::size_t r, double x, double y, double z, double u, double v, double w,
+                 BlockReason b, std::int16_t index) {
+    const bool alive = a.why[r] == 0;
+    a.px[r] = alive ? x : a.px[r];
+    a.py[r] = alive ? y : a.py[r];
+    a.pz[r] = alive ? z : a.pz[r];
+    a.vx[r] = alive ? u : a.vx[r];
+    a.vy[r] = alive ? v : a.vy[r];
+    a.vz[r] = alive ? w : a.vz[r];
+    const auto code = static_cast<std::uint8_t>(b);
+    const bool stops = alive & (code != 0);
+    a.why[r] = stops ? code : a.why[r];
+    a.at[r] = stops ? index : a.at[r];
+}
+
+// The index ratio each ray refracts with: the surface's own, or the ray's wavelength band's.
+struct SurfaceEta {
+    double eta;
+    double operator()(std::size_t) const { return eta; }
+};
+struct BandEtas {
+    const double* etaOfBand;  // this surface's row of WavelengthEtas
+    const std::uint16_t* band;
+    double operator()(std::size_t r) const { return etaOfBand[band[r]]; }
+};
+
+// One quadric surface for every ray. Rays are independent (ivdep) and the step uses selects instead
+// of branches, so this loop vectorises.
+template <bool kConic, class EtaOf>
+void stepQuadric(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s, EtaOf etaOf,
+                 std::int16_t index) {
+#pragma GCC ivdep
+    for (std::size_t r = 0; r < count; ++r) {
+        double x = a.px[r], y = a.py[r], z = a.pz[r], u = a.vx[r], v = a.vy[r], w = a.vz[r];
+        const BlockReason b = stepThroughQuadric<double, kConic>(x, y, z, u, v, w, s, etaOf(r));
+        keep(a, r, x, y, z, u, v, w, b, index);
+    }
+}
+
+// One asphere for every ray: Newton's passes run over the whole batch (each vectorises), a ray's t
+// frozen once its own step converged, so every ray sees exactly the scalar trace's iterations.
+template <class EtaOf>
+void stepAsphere(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s, EtaOf etaOf,
+                 std::int16_t index) {
+    thread_local std::vector<double> t;
+    thread_local std::vector<std::uint8_t> done;
+    t.resize(count);
+    done.assign(count, 0);
+    double* tt = t.data();
+    std::uint8_t* dn = done.data();
+#pragma GCC ivdep
+    for (std::size_t r = 0; r < count; ++r) {
+        tt[r] = asphereStart(a.px[r], a.py[r], a.pz[r] - s.zVertex, a.vx[r], a.vy[r], a.vz[r], s);
+        dn[r] = !std::isfinite(tt[r]);
+    }
+    for (int pass = 0; pass < kMaxAsphereIterations; ++pass) {
+        std::size_t open = 0;
+#pragma GCC ivdep
+        for (std::size_t r = 0; r < count; ++r) {
+            const double step = asphereNewtonStep(a.px[r], a.py[r], a.pz[r] - s.zVertex, a.vx[r], a.vy[r], a.vz[r], tt[r], s);
+            const bool moving = dn[r] == 0;
+            const double next = tt[r] + step;
+            tt[r] = moving ? next : tt[r];
+            // Converged (2), or stalled on a non-finite t (1, which finishAsphere reports as a miss).
+            const std::uint8_t state = asphereStepConverged(step, next) ? 2 : std::isfinite(next) ? 0 : 1;
+            dn[r] = moving ? state : dn[r];
+            open += dn[r] == 0;
+        }
+        if (open == 0) break;
+    }
+#pragma GCC ivdep
+    for (std::size_t r = 0; r < count; ++r) {
+        double x = a.px[r], y = a.py[r], z = a.pz[r], u = a.vx[r], v = a.vy[r], w = a.vz[r];
+        const BlockReason b = finishAsphere(x, y, z, u, v, w, tt[r], z - s.zVertex, dn[r] == 2, s, etaOf(r));
+        keep(a, r, x, y, z, u, v, w, b, index);
+    }
+}
+
+// Both traces: etaOfSurface(i, constants) gives surface i's ratio per ray.
+template <class EtaOfSurface>
+void traceBatchWith(const LensSystem& lens, RayBatch& batch, TraceDirection direction, EtaOfSurface etaOfSurface) {
+    const int n = static_cast<int>(lens.surfaces.size());
+    const bool toFilm = direction == TraceDirection::SceneToFilm;
+    std::fill(batch.blocked.begin(), batch.blocked.end(), BlockReason::None);
+    std::fill(batch.blockedAt.begin(), batch.blockedAt.end(), std::int16_t(-1));
+    static_assert(sizeof(BlockReason) == 1 && static_cast<int>(BlockReason::None) == 0);
+    const BatchArrays arrays{batch.ox.data(), batch.oy.data(), batch.oz.data(), batch.dx.data(), batch.dy.data(),
+                             batch.dz.data(), reinterpret_cast<std::uint8_t*>(batch.blocked.data()), batch.blockedAt.data()};
+    // Surface-major order: each surface's constants stay in registers across the ray loop.
+    for (int k = 0; k < n; ++k) {
+        const int i = toFilm ? k : n - 1 - k;
+        const SurfaceConstants<double> s = surfaceConstants<double>(lens, i, direction);
+        const auto index = static_cast<std::int16_t>(i);
+        const auto etaOf = etaOfSurface(i, s);
+        if (s.asphericTerms > 0) stepAsphere(batch.size(), arrays, s, etaOf, index);
+        else if (s.conicFactor != 1) stepQuadric<true>(batch.size(), arrays, s, etaOf, index);
+        else stepQuadric<false>(batch.size(), arrays, s, etaOf, index);
+    }
+}
+
+}  // namespace
+
+void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection direction) {
+    traceBatchWith(lens, batch, direction, [](int, const SurfaceConstants<double>& s) { return SurfaceEta{s.eta}; });
+}
+
+void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection direction, const WavelengthEtas& etas,
+                const std::uint16_t* bands) {
+    traceBatchWith(lens, batch, direction,
+                   [&](int i, const SurfaceConstants<double>&) { return BandEtas{etas.etasOf(i), bands}; });
+}
+
+}  // namespace lenslab

@@ -1,0 +1,53 @@
+#include "jobs/RenderJobResolver.h"
+
+#include <filesystem>
+
+#include "core/HttpError.h"
+
+namespace lenslab {
+
+RenderJobInput resolveRenderJob(const std::string& jobId, const RenderRequest& request, const LensStore& lenses,
+                                const SceneCatalog& scenes, RenderSettingsChecks& checks) {
+    const auto scene = scenes.find(request.scene);
+    if (!scene) throw HttpError(400, "no scene with id '" + request.scene + "' (see GET /api/scenes)");
+    const auto lens = lenses.find(request.lens);
+    if (!lens) throw HttpError(400, "no lens with id '" + request.lens + "' (see GET /api/lenses)");
+    RenderJobInput input{jobId, request, scene->path, lens->path, lens->system.layout};
+    checks.check(input);
+    return input;
+}
+
+RenderSettings renderSettings(const RenderJobInput& job) {
+    RenderSettings settings;
+    settings.scenePath = job.scenePath;
+    settings.confined = true;
+    settings.camera.lensFile = job.lensPath;
+    settings.camera.lensLayout = job.lensLayout;
+    const LensSettings lens = lensSettings(job.request);
+    settings.camera.fstop = lens.fstop;
+    settings.camera.focusDistance = lens.focusDistance;
+    settings.camera.filmDiagonal = job.request.filmDiagonal;
+    settings.camera.mode = job.request.mode;
+    settings.camera.spectral = job.request.spectral;
+    settings.spp = job.request.spp;
+    settings.width = job.request.width;
+    settings.height = job.request.height;
+    return settings;
+}
+
+std::string withoutServerPaths(std::string message, const RenderJobInput& job) {
+    namespace fs = std::filesystem;
+    for (const std::string& path : {job.scenePath, job.lensPath}) {
+        if (path.empty()) continue;
+        // The renderer names files by their canonical paths; the catalogs may hold relative ones.
+        const fs::path parent = fs::path(path).parent_path();
+        for (const fs::path& where : {fs::weakly_canonical(parent), parent}) {
+            const std::string folder = where.string() + "/";
+            for (std::size_t at; folder.size() > 1 && (at = message.find(folder)) != std::string::npos;)
+                message.erase(at, folder.size());
+        }
+    }
+    return message;
+}
+
+}  // namespace lenslab

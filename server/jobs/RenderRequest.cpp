@@ -1,0 +1,106 @@
+#include "jobs/RenderRequest.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/HttpError.h"
+#include "core/Identifiers.h"
+#include "cameras/LensModeMap.h"
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::json;
+
+std::string fieldText(const json& body, const char* field, const std::string& fallback) {
+    if (!body.contains(field)) return fallback;
+    const json& v = body.at(field);
+    if (!v.is_string()) throw HttpError(400, std::string(field) + " must be a string");
+    return v.get<std::string>();
+}
+
+std::optional<double> fieldNumber(const json& body, const char* field, double min, double max) {
+    if (!body.contains(field) || body.at(field).is_null()) return std::nullopt;
+    const json& v = body.at(field);
+    if (!v.is_number()) throw HttpError(400, std::string(field) + " must be a number");
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x < min || x > max)
+        throw HttpError(400, std::string(field) + " must lie between " + json(min).dump() + " and " + json(max).dump() +
+                                 ", got " + v.dump());
+    return x;
+}
+
+int fieldInteger(const json& body, const char* field, int fallback, int min, int max, const std::string& limitName) {
+    if (!body.contains(field)) return fallback;
+    const json& v = body.at(field);
+    if (!v.is_number() || std::floor(v.get<double>()) != v.get<double>())
+        throw HttpError(400, std::string(field) + " must be a whole number");
+    const double x = v.get<double>();
+    if (x < min || x > max)
+        throw HttpError(400, std::string(field) + " must lie between " + std::to_string(min) + " and " + std::to_string(max) +
+                                 " (" + limitName + "), got " + v.dump());
+    return static_cast<int>(x);
+}
+
+std::string identifierField(const json& body, const char* field, const std::string& fallback) {
+    const std::string id = fieldText(body, field, fallback);
+    if (!isSafeIdentifier(id)) throw HttpError(400, std::string(field) + " '" + id.substr(0, 80) + "' is not a valid id");
+    return id;
+}
+
+}  // namespace
+
+RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, const std::string& defaultScene) {
+    if (!body.is_object()) throw HttpError(400, "the render request must be a JSON object");
+    static const char* kFields[] = {"scene", "lens", "fstop", "focaldistance", "filmdiagonal",
+                                    "mode", "spectral", "spp", "width", "height"};
+    for (const auto& item : body.items()) {
+        bool known = false;
+        for (const char* f : kFields) known = known || item.key() == f;
+        if (!known) throw HttpError(400, "unknown field '" + item.key().substr(0, 40) + "' in the render request");
+    }
+    RenderRequest r;
+    if (!body.contains("scene") && defaultScene.empty()) throw HttpError(400, "scene is required (see GET /api/scenes)");
+    r.scene = identifierField(body, "scene", defaultScene);
+    r.lens = identifierField(body, "lens", r.lens);
+    constexpr double kAny = std::numeric_limits<double>::max();  // lens settings' ranges are optics' to check
+    r.fstop = fieldNumber(body, "fstop", -kAny, kAny);
+    r.focusDistance = fieldNumber(body, "focaldistance", 1, 1e7);
+    r.filmDiagonal = fieldNumber(body, "filmdiagonal", 1, 500);
+    r.mode = fieldText(body, "mode", r.mode);
+    const std::optional<LensMode> mode = parseLensMode(r.mode);
+    if (!mode) throw HttpError(400, "mode must be exact|thick|auto, got '" + r.mode.substr(0, 40) + "'");
+    r.mode = lensModeName(*mode);  // round one's accurate/approximate, stored under today's names
+    if (body.contains("spectral") && !body["spectral"].is_null()) {
+        if (!body["spectral"].is_boolean()) throw HttpError(400, "spectral must be true, false or null");
+        r.spectral = body["spectral"].get<bool>();
+    }
+    r.spp = fieldInteger(body, "spp", r.spp, 1, limits.maxSpp, "the service's spp limit");
+    r.width = fieldInteger(body, "width", r.width, 8, limits.maxWidth, "the service's width limit");
+    r.height = fieldInteger(body, "height", r.height, 8, limits.maxHeight, "the service's height limit");
+    return r;
+}
+
+LensSettings lensSettings(const RenderRequest& r) {
+    LensSettings s;
+    if (r.fstop) s.fstop = Setting{*r.fstop, "field fstop"};
+    if (r.focusDistance) s.focusDistance = Setting{*r.focusDistance, "field focaldistance"};
+    return s;
+}
+
+nlohmann::json renderRequestJson(const RenderRequest& r) {
+    auto optional = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
+    return {{"scene", r.scene},
+            {"lens", r.lens},
+            {"fstop", optional(r.fstop)},
+            {"focaldistance", optional(r.focusDistance)},
+            {"filmdiagonal", optional(r.filmDiagonal)},
+            {"mode", r.mode},
+            {"spectral", r.spectral ? json(*r.spectral) : json(nullptr)},
+            {"spp", r.spp},
+            {"width", r.width},
+            {"height", r.height}};
+}
+
+}  // namespace lenslab

@@ -1,0 +1,14 @@
+#pragma once
+// Collects finished renders by the retention policy: first those finished longer ago than the
+// age limit, then the oldest until their files fit the size limit. Runs at start and after
+// every job, so the data folder stops growing with the number of renders.
+#include "jobs/JobQueue.h"
+#include "jobs/JobStore.h"
+#include "core/ServiceConfig.h"
+
+namespace lenslab {
+
+// Deletes what the policy no longer keeps (files and rows); returns how many renders went.
+int collectRenders(JobQueue& jobs, const JobStore& store, const RetentionPolicy& policy, double now);
+
+}  // namespace lenslab

@@ -1,0 +1,105 @@
+// /api/lenses: list, upload (multipart field "file" or the raw table as the body), one lens's
+// data at an aperture and focus, its table text, deletion of uploads.
+#include <limits>
+
+#include "core/HttpError.h"
+#include "core/HttpReply.h"
+#include "core/Identifiers.h"
+#include "LensJson.h"
+#include "core/QueryParameters.h"
+#include "routes/ServiceParts.h"
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::json;
+
+json lensSummaryJson(const StoredLens& lens) {
+    return {{"id", lens.id},           {"name", lens.name},        {"description", lens.description},
+            {"bundled", lens.bundled}, {"efl", lens.efl},          {"fstop_min", lens.fstopMin},
+            {"fstop_max", lens.fstopMax}, {"created", lens.bundled ? json(nullptr) : json(lens.created)}};
+}
+
+// The `lenslab lens --json` object, with the lens's id and how the service holds it.
+json lensDetailJson(const StoredLens& lens, const LensSettings& settings) {
+    json body = lensAnalysisJson(analyzeLens(lens.system, settings));
+    body["id"] = lens.id;
+    body["name"] = lens.name;
+    body["description"] = lens.description;
+    body["bundled"] = lens.bundled;
+    return body;
+}
+
+std::optional<TableLayout> layoutParameter(const httplib::Request& req) {
+    const auto name = queryText(req, "layout");
+    if (!name) return std::nullopt;
+    const auto layout = parseLayoutName(*name);
+    if (!layout) throw HttpError(400, "layout must be gap-before or gap-after");
+    return layout;
+}
+
+}  // namespace
+
+std::shared_ptr<const StoredLens> findLens(const ServiceParts& parts, const std::string& id) {
+    if (!isSafeIdentifier(id)) throw HttpError(400, "'" + id.substr(0, 80) + "' is not a valid lens id");
+    auto lens = parts.lenses.find(id);
+    if (!lens) throw HttpError(404, "no lens with id '" + id + "' (see GET /api/lenses)");
+    return lens;
+}
+
+void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
+    server.Get("/api/lenses", [&parts](const httplib::Request&, httplib::Response& res) {
+        json list = json::array();
+        for (const auto& lens : parts.lenses.list()) list.push_back(lensSummaryJson(*lens));
+        replyJson(res, 200, {{"lenses", list}});
+    });
+
+    server.Post("/api/lenses", [&parts](const httplib::Request& req, httplib::Response& res) {
+        std::string name = queryText(req, "name").value_or("upload.dat"), text = req.body;
+        if (req.is_multipart_form_data()) {
+            if (!req.has_file("file")) throw HttpError(400, "the multipart upload needs a field named 'file'");
+            const auto file = req.get_file_value("file");
+            text = file.content;
+            if (!file.filename.empty()) name = file.filename;
+        }
+        if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw HttpError(400, "the lens table is empty");
+        parts.quota.checkRoomForWrite();
+        try {
+            const auto lens = parts.lenses.add(name, text, layoutParameter(req));
+            res.set_header("Location", "/api/lenses/" + lens->id);
+            replyJson(res, 201, lensDetailJson(*lens, LensSettings{}));
+        } catch (const LensTableError& e) {
+            replyJson(res, 400, {{"error", e.what()}, {"file", e.file()}, {"line", e.line()}, {"problem", e.problem()}});
+        } catch (const LensStoreFull& e) {
+            throw HttpError(409, e.what());
+        }
+    });
+
+    server.Get(R"(/api/lenses/([^/]+))", [&parts](const httplib::Request& req, httplib::Response& res) {
+        const auto lens = findLens(parts, req.matches[1]);
+        replyJson(res, 200, lensDetailJson(*lens, queryLensSettings(req)));
+    });
+
+    server.Get(R"(/api/lenses/([^/]+)/table)", [&parts](const httplib::Request& req, httplib::Response& res) {
+        const auto lens = findLens(parts, req.matches[1]);
+        if (!replyFile(res, lens->path, "text/plain; charset=utf-8"))
+            throw HttpError(404, "the table of lens '" + lens->id + "' is no longer on disk");
+    });
+
+    server.Delete(R"(/api/lenses/([^/]+))", [&parts](const httplib::Request& req, httplib::Response& res) {
+        const std::string id = findLens(parts, req.matches[1])->id;
+        switch (parts.lenses.remove(id)) {
+            case LensStore::Removal::Removed:
+                parts.diagrams.forget(id + "|");
+                replyJson(res, 200, {{"deleted", id}});
+                return;
+            case LensStore::Removal::ReadOnly:
+                throw HttpError(403, "lens '" + id + "' is bundled with lenslab and cannot be deleted");
+            case LensStore::Removal::NotFound:
+                throw HttpError(404, "no lens with id '" + id + "'");
+        }
+    });
+}
+
+}  // namespace lenslab

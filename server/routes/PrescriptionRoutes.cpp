@@ -1,0 +1,189 @@
+// The live prescription editor's routes. A prescription is edited as JSON rows (PrescriptionJson.h)
+// and never stored until it is uploaded (POST /api/lenses):
+//   GET  /api/lenses/{id}/prescription                 the stored lens's rows
+//   GET  /api/lenses/{id}/table.dat, .../prescription.zmx   the stored lens written out
+//   POST /api/prescriptions/preview                    rows in; lens JSON, diagram PNG, analysis out
+//   POST /api/prescriptions/table.dat, .../prescription.zmx  rows in; the file text out
+// A preview's work is bounded: its body (kMaxPreviewBody), its rows (kMaxLensSurfaces), a fixed
+// analysis (3 fields, F d C) and a fixed diagram size. A row's problem is 400 naming the row.
+#include <future>
+#include <limits>
+
+#include "AnalysisJson.h"
+#include "AnalysisPlots.h"
+#include "core/Base64.h"
+#include "core/HttpError.h"
+#include "core/HttpReply.h"
+#include "LensDiagram.h"
+#include "LensJson.h"
+#include "LensTableWriter.h"
+#include "PrescriptionJson.h"
+#include "routes/ServiceParts.h"
+#include "ZemaxWriter.h"
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::json;
+
+// A 256-surface prescription with every field written out is about 100 KiB of JSON.
+constexpr std::size_t kMaxPreviewBody = 256 * 1024;
+
+const char* const kEditedLensName = "edited lens";
+
+json parseBody(const httplib::Request& req) {
+    if (req.body.size() > kMaxPreviewBody)
+        throw HttpError(413, "a prescription body is at most " + std::to_string(kMaxPreviewBody / 1024) + " KiB");
+    try {
+        return json::parse(req.body);
+    } catch (const json::parse_error&) {
+        throw HttpError(400, "the body is not JSON");
+    }
+}
+
+// A problem with one row: 400 {"error", "row" (1-based, absent for the whole lens), "problem"}.
+void replyRowError(httplib::Response& res, const LensTableError& e) {
+    json body = {{"problem", e.problem()}};
+    if (e.line() > 0) {
+        body["row"] = e.line();
+        body["error"] = "row " + std::to_string(e.line()) + ": " + e.problem();
+    } else {
+        body["error"] = e.problem();
+    }
+    replyJson(res, 400, body);
+}
+
+std::optional<Setting> numberSetting(const json& body, const char* field, bool allowInfinity = false) {
+    if (!body.contains(field) || body.at(field).is_null()) return std::nullopt;
+    const json& v = body.at(field);
+    if (allowInfinity && v.is_string() && (v == "inf" || v == "infinity"))
+        return Setting{std::numeric_limits<double>::infinity(), std::string("field ") + field};
+    if (!v.is_number()) throw HttpError(400, std::string(field) + " must be a number" + (allowInfinity ? " or \"inf\"" : ""));
+    return Setting{v.get<double>(), std::string("field ") + field};
+}
+
+LensSettings bodyLensSettings(const json& body) {
+    LensSettings s;
+    s.fstop = numberSetting(body, "fstop");
+    s.focusDistance = numberSetting(body, "focus", true);
+    s.wavelength = numberSetting(body, "wavelength");
+    return s;
+}
+
+DiagramOptions previewDiagramOptions(const json& body, const LensSettings& lens) {
+    DiagramOptions o;
+    o.lens = lens;
+    o.width = 1000;
+    o.height = 500;
+    if (body.contains("mode")) {
+        if (!body.at("mode").is_string()) throw HttpError(400, "mode must be exact, thick or overlay");
+        try {
+            o.mode = parseDiagramMode(body.at("mode").get<std::string>());
+        } catch (const DiagramError& e) {
+            throw HttpError(400, e.what());
+        }
+    }
+    if (body.contains("colour")) {
+        if (!body.at("colour").is_boolean()) throw HttpError(400, "colour must be true or false");
+        o.colourFans = body.at("colour").get<bool>();
+    }
+    return o;
+}
+
+// The spot and MTF figures per field (the plots draw the points: the JSON keeps the statistics).
+json previewAnalysisJson(const LensDesignAnalysis& analysis) {
+    json summary = designAnalysisJson(analysis);
+    for (const char* unshown : {"ray_fans", "curves", "relative_illumination", "field_curvature"}) summary.erase(unshown);
+    for (json& field : summary["fields"]) {
+        field.erase("relative_illumination");  // interpolated from the two curve samples: too coarse to show
+        for (json& spot : field["spots"]) spot.erase("points");
+    }
+    json plots = json::object();
+    for (const NamedSvg& plot : designAnalysisPlots(analysis))
+        if (plot.name.rfind("spot-", 0) == 0 || plot.name.rfind("mtf-", 0) == 0) plots[plot.name] = plot.svg;
+    summary["plots_svg"] = plots;
+    return summary;
+}
+
+void preview(const httplib::Request& req, httplib::Response& res) {
+    const json body = parseBody(req);
+    LensSystem system;
+    try {
+        system = buildLensSystem(prescriptionFromJson(body, kEditedLensName));
+    } catch (const LensTableError& e) {
+        replyRowError(res, e);
+        return;
+    }
+    const LensSettings settings = bodyLensSettings(body);
+    const json lens = lensAnalysisJson(analyzeLens(system, settings));  // 422 here for settings it cannot take
+    // The diagram draws while the analysis runs: the two are about equal and independent.
+    auto diagram = std::async(std::launch::async, [&] { return drawLensDiagramPng(system, previewDiagramOptions(body, settings)); });
+    DesignAnalysisInputs inputs;
+    inputs.lens = settings;
+    inputs.lens.wavelength.reset();  // the analysis's own F, d, C
+    // The curves against field (relative illumination above all: 4/10 of the analysis at 16
+    // samples) are not shown by the editor: their two end points keep it within the time of an edit.
+    inputs.curveSamples = 2;
+    json analysis;
+    try {
+        analysis = previewAnalysisJson(analyzeLensDesign(system, inputs));
+    } catch (...) {
+        diagram.wait();
+        throw;
+    }
+    replyJson(res, 200, {{"lens", lens}, {"diagram_png_base64", base64Encode(diagram.get())}, {"analysis", analysis}});
+}
+
+using TableWriter = std::string (*)(const LensTable&);
+
+void replyTableText(httplib::Response& res, const LensTable& table, TableWriter write, const std::string& fileName) {
+    try {
+        res.set_content(write(withGapAfterRows(table)), "text/plain; charset=utf-8");
+        res.set_header("Content-Disposition", "attachment; filename=\"" + fileName + "\"");
+    } catch (const LensTableError& e) {
+        replyJson(res, 422, {{"error", e.what()}, {"row", e.line()}, {"problem", e.problem()}});
+    }
+}
+
+void exportEdited(const httplib::Request& req, httplib::Response& res, TableWriter write, const std::string& fileName) {
+    try {
+        replyTableText(res, prescriptionFromJson(parseBody(req), kEditedLensName), write, fileName);
+    } catch (const LensTableError& e) {
+        replyRowError(res, e);
+    }
+}
+
+LensTable storedTable(const StoredLens& lens) {
+    LensTable table = readLensTable(lens.path, lens.system.layout);
+    table.name = lens.name;
+    return table;
+}
+
+}  // namespace
+
+void addPrescriptionRoutes(httplib::Server& server, ServiceParts& parts) {
+    server.Get(R"(/api/lenses/([^/]+)/prescription)", [&parts](const httplib::Request& req, httplib::Response& res) {
+        const auto lens = findLens(parts, req.matches[1]);
+        json body = prescriptionJson(storedTable(*lens));
+        body["id"] = lens->id;
+        replyJson(res, 200, body);
+    });
+    server.Get(R"(/api/lenses/([^/]+)/table\.dat)", [&parts](const httplib::Request& req, httplib::Response& res) {
+        const auto lens = findLens(parts, req.matches[1]);
+        replyTableText(res, storedTable(*lens), writeLensTableText, lens->id + ".dat");
+    });
+    server.Get(R"(/api/lenses/([^/]+)/prescription\.zmx)", [&parts](const httplib::Request& req, httplib::Response& res) {
+        const auto lens = findLens(parts, req.matches[1]);
+        replyTableText(res, storedTable(*lens), writeZemaxText, lens->id + ".zmx");
+    });
+    server.Post("/api/prescriptions/preview", preview);
+    server.Post("/api/prescriptions/table.dat", [](const httplib::Request& req, httplib::Response& res) {
+        exportEdited(req, res, writeLensTableText, "edited-lens.dat");
+    });
+    server.Post("/api/prescriptions/prescription.zmx", [](const httplib::Request& req, httplib::Response& res) {
+        exportEdited(req, res, writeZemaxText, "edited-lens.zmx");
+    });
+}
+
+}  // namespace lenslab

@@ -1,0 +1,105 @@
+#include "service/Service.h"
+
+#include <filesystem>
+#include <iostream>
+
+#include "storage/AtomicFile.h"
+#include "jobs/RenderJobResolver.h"
+#include "jobs/RenderRetention.h"
+#include "storage/StorageError.h"
+#include "core/WallClock.h"
+
+namespace lenslab {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Prepares the data folder before anything opens files in it.
+std::string databasePath(const ServiceConfig& config) {
+    fs::create_directories(config.dataDir);
+    const int removed = removeStaleTemporaries(config.dataDir);
+    if (removed > 0) std::cerr << "lenslab serve: removed " << removed << " half-written files\n";
+    return (fs::path(config.dataDir) / "lenslab.db").string();
+}
+
+// The quota the operator gave, or the default lowered to what the disk has room for (said at start).
+std::uintmax_t dataQuota(const ServiceConfig& config) {
+    if (config.maxDataBytesGiven || config.maxDataBytes == 0) return config.maxDataBytes;
+    const std::uintmax_t quota = quotaWithinDisk(config.dataDir, config.maxDataBytes);
+    if (quota < config.maxDataBytes)
+        std::cerr << "lenslab serve: data folder quota " << quota / 1000000 << " MB (the disk's free space and what the "
+                  << "folder holds; less than the default " << config.maxDataBytes / 1000000 << " MB; --max-data-gb sets it)\n";
+    return quota;
+}
+
+}  // namespace
+
+Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> renderer)
+    : config_(config),
+      accessLog_(config.accessLogPath),
+      lock_(config.dataDir),
+      database_(databasePath(config)),
+      lenses_(config.lensesDir, (fs::path(config.dataDir) / "lenses").string(), database_, config.maxUploadedLenses),
+      scenes_(config.scenesDir),
+      diagrams_(config.diagramCacheBytes),
+      jobStore_(database_),
+      renderer_(std::move(renderer)),
+      jobs_(jobStore_, *renderer_, config.limits, (fs::path(config.dataDir) / "renders").string()),
+      quota_(config.dataDir, dataQuota(config), [this] { collectFinishedRenders(); }),
+      parts_{config_, lenses_, scenes_, renderChecks_, diagrams_, jobs_, report_, quota_, secondsSinceEpoch()},
+      http_(config_, accessLog_) {
+    recoverJobs();
+    jobs_.setAfterJob([this] { collectFinishedRenders(); });
+    addHealthRoutes(http_.routes(), parts_);
+    addLensRoutes(http_.routes(), parts_);
+    addAnalysisRoutes(http_.routes(), parts_);
+    addPrescriptionRoutes(http_.routes(), parts_);
+    addGlassRoutes(http_.routes(), parts_);
+    addDiagramRoutes(http_.routes(), parts_);
+    addRenderRoutes(http_.routes(), parts_);
+    addReportRoutes(http_.routes(), parts_);
+    addEventRoutes(http_.routes(), parts_);
+    addImageRoutes(http_.routes(), parts_);
+    addStaticRoutes(http_.routes(), parts_);
+}
+
+Service::~Service() { stop(); }
+
+void Service::recoverJobs() {
+    try {
+        const int interrupted = jobStore_.markInterrupted();
+        if (interrupted > 0) std::cerr << "lenslab serve: " << interrupted << " render(s) were interrupted; marked failed\n";
+        restoreQueuedJobs();
+        collectFinishedRenders();
+    } catch (const StorageError& e) {
+        // A full or read-only disk must not keep the service down: reads work, writes say why.
+        std::cerr << "lenslab serve: the data folder cannot be written (" << e.detail() << "); serving anyway: "
+                  << e.what() << "\n";
+    }
+}
+
+void Service::restoreQueuedJobs() {
+    for (JobRecord record : jobStore_.queued()) {
+        try {
+            const RenderRequest request = parseRenderRequest(record.request, config_.limits, "");
+            jobs_.restore(record, resolveRenderJob(record.id, request, lenses_, scenes_, renderChecks_));
+        } catch (const std::exception& e) {
+            record.state = JobState::Failed;
+            record.finished = secondsSinceEpoch();
+            record.error = std::string("could not be restarted: ") + e.what();
+            jobStore_.save(record);
+        }
+    }
+}
+
+void Service::collectFinishedRenders() { collectRenders(jobs_, jobStore_, config_.retention, secondsSinceEpoch()); }
+
+int Service::start() { return http_.start(config_.host, config_.port); }
+
+void Service::stop() {
+    http_.stop();
+    jobs_.shutdown();
+}
+
+}  // namespace lenslab
