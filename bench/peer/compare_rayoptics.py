@@ -99,11 +99,10 @@ def source_commit(module):
 
 
 def compare_in_worker(job):
-    path, binary, paraxial_flag = job
     refuse_network()
     import_rayoptics()
-    print(f'{os.path.basename(path)} ...', file=sys.stderr, flush=True)
-    return compare(path, binary, paraxial_flag)
+    print(f'{os.path.basename(job[0])} ...', file=sys.stderr, flush=True)
+    return compare(*job)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -234,6 +233,34 @@ def lenslab_first_order(j):
             'fstop': j['fstop']}
 
 
+def real_fstop(opm, stop_index, stop_radius, nm):
+    """lenslab's f-number (README: 1 / (2 sin theta'), theta' the angle at F' of the marginal ray
+    that fills the stop) with ray-optics' real trace: the meridional ray that crosses the stop at
+    its rim and passes through the paraxial focus F' (ray-optics' BFL), found by Newton on its
+    height and slope in front of the lens."""
+    sm = opm['seq_model']
+    fod = opm['analysis_results']['parax_data'].fod
+    z0 = fod.obj_dist - 1000.0 - 2 * abs(fod.enp_dist)
+    f_prime = fod.bfl
+
+    def miss(v):
+        d = np.array([0.0, v[1], 1.0]) / math.hypot(1.0, v[1])
+        ray, _, _ = ro.rt.trace(sm, np.array([0.0, v[0], z0]), d, nm, intersect_obj=False)
+        p, out = np.array(ray[-2][0]), np.array(ray[-2][1])
+        return np.array([ray[stop_index][0][1] - stop_radius, p[1] + (f_prime - p[2]) / out[2] * out[1]]), out
+
+    v = np.array([fod.enp_radius * stop_radius / abs(opm['analysis_results']['parax_data'].ax_ray[stop_index][0]), 0.0])
+    for _ in range(40):
+        f, out = miss(v)
+        if np.hypot(*f) < 1e-11 * stop_radius:
+            return 1 / (2 * abs(out[1]))
+        h = 1e-7 * max(stop_radius, 1.0)
+        jac = np.column_stack([(miss(v + dv)[0] - f) / h for dv in (np.array([h, 0.0]), np.array([0.0, h * 1e-2]))])
+        jac[:, 1] *= 1e2
+        v = v - np.linalg.solve(jac, f)
+    return float('nan')
+
+
 # ---------------------------------------------------------------------------------------------
 # ray-optics: real rays aimed at the stop
 
@@ -277,7 +304,7 @@ class Aimer:
         f = self.at_stop(a) - target
         if self.jac is None:
             self.jac = self.jacobian(a, f + target)
-        for _ in range(30):
+        for _ in range(12):
             miss = np.hypot(*f)
             if miss < 1e-10 * self.scale:
                 return a
@@ -323,12 +350,15 @@ def gauss_r2(n_r, n_az):
 
 def rms_spot(aimer, stop_radius, image_s, pattern):
     pts, w = pattern
-    hits, ws = [], []
+    hits, ws, failed = [], [], 0
     a = aimer.chief
-    for (px, py), wi in zip(pts, w):
+    for i, ((px, py), wi) in enumerate(zip(pts, w)):
         try:
             a = aimer.aim(np.array([px, py]) * stop_radius, guess=a)
         except (RuntimeError, ro.TraceError, np.linalg.LinAlgError):
+            failed, a = failed + 1, aimer.chief
+            if failed > 64 and failed > i / 2:   # most of this stop is out of the field's reach
+                return float('nan'), 0
             continue
         q = aimer.image_point(a, image_s)
         if q is not None:
@@ -352,20 +382,19 @@ def equal_area(n_r, n_az):
 def converged_rms(aimer, stop_radius, image_s):
     """(RMS, rays passed, sampling): Gauss-Legendre in r^2 while no ray is blocked; where the
     aperture is vignetted (a cut through the pupil, which Gaussian quadrature does not converge
-    on) equal-area annuli. n_r doubles (azimuths 2 n_r) until the RMS moves by < 0.5%; a sampling
-    name ending in '!' did not converge by n_r = 64."""
+    on) equal-area annuli. n_r doubles (azimuths 2 n_r) until the RMS moves by < 0.5%, up to 32."""
     rule, name, n = gauss_r2, 'gauss', 8
     prev, count = rms_spot(aimer, stop_radius, image_s, rule(n, 2 * n))
     if count < n * 2 * n:
         rule, name = equal_area, 'equal-area'
         prev, count = rms_spot(aimer, stop_radius, image_s, rule(n, 2 * n))
-    while n < 64:
+    while n < 32:
         n *= 2
         cur, count = rms_spot(aimer, stop_radius, image_s, rule(n, 2 * n))
         if abs(cur - prev) <= 0.005 * cur:
             return cur, count, f'{name} {n}x{2 * n}'
         prev = cur
-    return cur, count, f'{name} {n}x{2 * n}!'
+    return cur, count, f'{name} {n}x{2 * n}, not converged ({abs(cur - prev) / cur:.1%} from {n // 2}x{n})'
 
 
 def rayoptics_chief_miss(opm, stop_index, field_deg, nm):
@@ -403,7 +432,31 @@ def with_lenslab_indices(opm, surfaces):
     opm.update_model()
 
 
-def compare(path, binary, paraxial_flag):
+def abbe(n):
+    return (n[1] - 1) / (n[0] - n[2]) if n[0] != n[2] else float('inf')
+
+
+def glass_notes(opm, lenslab):
+    """The media whose indices differ by more than 1e-5 at a line: what each program takes, and
+    the closed-form check Vd = (nd - 1) / (nF - nC) against the Vd the file states (ray-optics'
+    reading of it, for a model glass)."""
+    sm, notes = opm['seq_model'], []
+    for k, s in enumerate(lenslab['d']['surfaces']):
+        m = sm.gaps[k + 1].medium
+        n_ll = [abs(lenslab[name]['surfaces'][k]['n']) for name, _ in LINES]
+        n_ro = [m.rindex(nm) for _, nm in LINES]
+        if max(abs(a - b) for a, b in zip(n_ll, n_ro)) <= 1e-5:
+            continue
+        stated = f', the file\'s Vd {m.v:.4g}' if hasattr(m, 'v') else ''
+        note = (f'{s["glass"] or "model"}{" " + s["catalog"] if s["catalog"] else ""}: lenslab nF nd nC '
+                f'{n_ll[0]:.6f} {n_ll[1]:.6f} {n_ll[2]:.6f} (Vd {abbe(n_ll):.4g}); ray-optics {type(m).__name__} '
+                f'{m.name()}: {n_ro[0]:.6f} {n_ro[1]:.6f} {n_ro[2]:.6f} (Vd {abbe(n_ro):.4g}){stated}')
+        if note not in notes:
+            notes.append(note)
+    return notes
+
+
+def compare(path, binary, paraxial_flag, with_spots=True):
     """A dict: 'refused' (who and why), or 'lines' (first order per line) and 'spots'."""
     out = {'file': path, 'notes': []}
     lenslab = {}
@@ -434,10 +487,13 @@ def compare(path, binary, paraxial_flag):
         j = lenslab[name]
         set_line(opm, nm)
         fill_stop(opm, stop, j['stop']['diameter'] / 2)
-        dn = max(abs(abs(s['n']) - abs(sm.rndx[k + 1][[w for _, w in LINES].index(nm)]
-                                         if hasattr(sm.rndx[k + 1], '__len__') else sm.rndx[k + 1]))
-                 for k, s in enumerate(surfaces))
-        out['lines'].append({'line': name, 'nm': nm, 'll': lenslab_first_order(j), 'ro': rayoptics_first_order(opm),
+        dn = max(abs(abs(s['n']) - sm.gaps[k + 1].medium.rindex(nm)) for k, s in enumerate(j['surfaces']))
+        first = rayoptics_first_order(opm)
+        try:
+            first['fstop'] = real_fstop(opm, stop, j['stop']['diameter'] / 2, nm)
+        except (ro.TraceError, np.linalg.LinAlgError):
+            first['fstop'] = float('nan')
+        out['lines'].append({'line': name, 'nm': nm, 'll': lenslab_first_order(j), 'ro': first,
                              'dn': dn, 'stop_d': j['stop']['diameter']})
     # Differences over the tolerance: ray-optics again with lenslab's indices, which tells a
     # difference in glass data from one in the optics.
@@ -451,7 +507,9 @@ def compare(path, binary, paraxial_flag):
             with_lenslab_indices(same, lenslab[row['line']]['surfaces'])
             fill_stop(same, stop, row['stop_d'] / 2)
             row['ro_ll_index'] = rayoptics_first_order(same)
-    out['spots'] = spots(path, binary, paraxial_flag, opm, stop, lenslab['d'])
+    out['glass_notes'] = glass_notes(opm, lenslab)
+    if with_spots:
+        out['spots'] = spots(path, binary, paraxial_flag, opm, stop, lenslab['d'])
     return out
 
 
@@ -510,12 +568,12 @@ def flag(rel, tol):
 
 def first_order_table(results):
     lines = ['| prescription | line | EFL | ΔEFL | BFL | ΔBFL | EnP pos | Δ | EnP D | Δ | ExP pos | Δ | ExP D | Δ | '
-             'lenslab f/ (real) | ray-optics f/ (parax.) | Δ f/ parax. | max Δn |',
-             '|' + '---|' * 18]
+             'lenslab f/ (real) | ray-optics f/ (real) | Δ | ray-optics f/ (parax.) | Δ (lenslab EFL/EPD) | max Δn |',
+             '|' + '---|' * 20]
     for r in results:
         name = os.path.relpath(r['file'], REPO) if r['file'].startswith(REPO) else os.path.basename(r['file'])
         if 'refused' in r:
-            lines.append(f'| {name} | | {r["refused"].replace("|", "/")} |' + ' |' * 15)
+            lines.append(f'| {name} | | {r["refused"].replace("|", "/")} |' + ' |' * 17)
             continue
         for row in r['lines']:
             ll, ro_ = row['ll'], row['ro']
@@ -523,14 +581,15 @@ def first_order_table(results):
             for k in ('bfl', 'enp_pos', 'enp_d', 'exp_pos', 'exp_d'):
                 scale = ll['efl'] if k.endswith('pos') or k == 'bfl' else None
                 cells += [fmt(ll[k], 7), flag(relative(ll[k], ro_[k], scale), FIRST_ORDER_TOLERANCE)]
-            cells += [fmt(ll['fstop'], 5), fmt(ro_['fno'], 5), flag(relative(ll['fno'], ro_['fno']), FIRST_ORDER_TOLERANCE),
+            cells += [fmt(ll['fstop'], 6), fmt(ro_['fstop'], 6), flag(relative(ll['fstop'], ro_['fstop']), FIRST_ORDER_TOLERANCE),
+                      fmt(ro_['fno'], 6), flag(relative(ll['fno'], ro_['fno']), FIRST_ORDER_TOLERANCE),
                       f'{row["dn"]:.1e}']
             lines.append('| ' + ' | '.join(cells) + ' |')
     return '\n'.join(lines)
 
 
 def spot_table(results):
-    lines = ['| prescription | field (deg) | lenslab analyze RMS (um) | ray-optics hex10, same plane (um) | Δ | '
+    lines = ['| prescription | field (deg): largest in lenslab (in the file) | lenslab analyze RMS (um) | ray-optics hex10, same plane (um) | Δ | '
              'ray-optics area-uniform, same plane (um) | ray-optics area-uniform, paraxial plane (um) | sampling (r x azimuth) | '
              'ray-optics chief ray at the stop (mm off centre / stop radius) |',
              '|' + '---|' * 9]
@@ -546,11 +605,13 @@ def spot_table(results):
             if 'error' in row:
                 lines.append(f'| {name} | {row["deg"]:.4g} | {row["ll"] * 1e3:.4g} | {row["error"]} |' + ' |' * 5)
                 continue
-            miss = ''
+            miss, field = '', f'{row["deg"]:.4g}'
+            if row['deg'] > 0:
+                field += f' (file: {r["file_field"]:.4g} {r["file_field_key"]})'
             if row['deg'] > 0 and 'ro_chief_miss' in s:
                 miss = f'{s["ro_chief_miss"]:.4g} / {s["stop_r"]:.4g}'
             lines.append('| ' + ' | '.join([
-                name, f'{row["deg"]:.4g}', f'{row["ll"] * 1e3:.4g} ({row["ll_passed"]} rays)', f'{row["hex_ll_plane"] * 1e3:.4g}',
+                name, field, f'{row["ll"] * 1e3:.4g} ({row["ll_passed"]} rays)', f'{row["hex_ll_plane"] * 1e3:.4g}',
                 flag(relative(row['ll'], row['hex_ll_plane']), SPOT_TOLERANCE), f'{row["gauss_ll_plane"] * 1e3:.4g}',
                 f'{row["gauss_parax"] * 1e3:.4g}', f'{row["gauss_n"]}, {row["gauss_count"]} pass', miss]) + ' |')
     return '\n'.join(lines)
@@ -580,23 +641,32 @@ def main():
     ap.add_argument('--lenslab', default=os.path.join(REPO, 'build', 'cli', 'lenslab'))
     ap.add_argument('--json', help='also write every number to this file')
     ap.add_argument('--jobs', type=int, default=1, help='prescriptions compared at once (processes)')
+    ap.add_argument('--no-spots', action='store_true', help='first order only (seconds instead of minutes a lens)')
     args = ap.parse_args()
     refuse_network()
     import_rayoptics()
     paraxial_flag = analyze_has_image_plane(args.lenslab)
-    jobs = [(os.path.abspath(p), os.path.abspath(args.lenslab), paraxial_flag) for p in args.files or default_files()]
+    jobs = [(os.path.abspath(p), os.path.abspath(args.lenslab), paraxial_flag, not args.no_spots)
+            for p in args.files or default_files()]
     import multiprocessing
+    results = []
     with multiprocessing.Pool(args.jobs) as pool:
-        results = pool.map(compare_in_worker, jobs, chunksize=1)
+        for r in pool.imap(compare_in_worker, jobs, chunksize=1):
+            results.append(r)
+            if args.json:   # kept up to date: a long run can be read while it goes on
+                with open(args.json, 'w') as f:
+                    json.dump(results, f, indent=1, default=float)
     print(f'Run {datetime.date.today()}: ray-optics {source_commit("rayoptics")}, opticalglass '
           f'{source_commit("opticalglass")}; lenslab analyze '
           + ('with --image-plane paraxial' if paraxial_flag else 'on its own image plane (no --image-plane yet)') + '.\n')
     print('### First order (Δ: (lenslab - ray-optics) / |ray-optics|; positions and BFL / EFL)\n')
     print(first_order_table(results))
-    print('\n### RMS spot radius, d line (Δ: lenslab against ray-optics with the same rays)\n')
-    print(spot_table(results))
+    if not args.no_spots:
+        print('\n### RMS spot radius, d line (Δ: lenslab against ray-optics with the same rays)\n')
+        print(spot_table(results))
+    print('\n### Notes\n')
     for r in results:
-        for n in r.get('notes', []):
+        for n in r.get('notes', []) + r.get('glass_notes', []):
             print(f'- {os.path.basename(r["file"])}: {n}')
         for row in r.get('lines', []):
             if 'ro_ll_index' in row:
@@ -604,9 +674,6 @@ def main():
                      for k in ('efl', 'bfl', 'enp_pos', 'enp_d', 'exp_pos', 'exp_d')}
                 print(f'- {os.path.basename(r["file"])} {row["line"]}: with lenslab\'s indices in ray-optics: '
                       + ', '.join(f'{k} {v:+.1e}' for k, v in d.items()))
-    if args.json:
-        with open(args.json, 'w') as f:
-            json.dump(results, f, indent=1, default=float)
 
 
 if __name__ == '__main__':
