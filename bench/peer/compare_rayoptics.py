@@ -418,12 +418,12 @@ def rms_spot(aimer, stop_radius, image_s, pattern):
     pts, w = pattern
     hits, ws, failed = [], [], 0
     a = aimer.chief
-    for i, ((px, py), wi) in enumerate(zip(pts, w)):
+    for (px, py), wi in zip(pts, w):
         try:
             a = aimer.aim(np.array([px, py]) * stop_radius, guess=a)
         except (RuntimeError, ro.TraceError, np.linalg.LinAlgError):
             failed, a = failed + 1, aimer.chief
-            if failed > 64 and failed > i / 2:   # most of this stop is out of the field's reach
+            if failed > 64 and not hits:   # no point of this stop is within the field's reach
                 return float('nan'), 0
             continue
         q = aimer.image_point(a, image_s)
@@ -548,8 +548,9 @@ def compare(path, binary, paraxial_flag, with_spots=True):
     if sm.stop_surface != stop:
         out['notes'].append(f'ray-optics had the stop at {sm.stop_surface}; set to lenslab\'s, surface {stop}')
         sm.stop_surface = stop
-    out['file_field'] = opm['optical_spec']['fov'].max_field()[0]
-    out['file_field_key'] = '/'.join(opm['optical_spec']['fov'].key)
+    if not path.endswith('.dat'):   # a table states no field
+        out['file_field'] = opm['optical_spec']['fov'].max_field()[0]
+        out['file_field_key'] = ' '.join(opm['optical_spec']['fov'].key)
     out['lines'] = []
     for name, nm in LINES:
         j = lenslab[name]
@@ -674,8 +675,8 @@ def spot_table(results):
                 lines.append(f'| {name} | {row["deg"]:.4g} | {row["ll"] * 1e3:.4g} | {row["error"]} |' + ' |' * 5)
                 continue
             miss, field = '', f'{row["deg"]:.4g}'
-            if row['deg'] > 0:
-                field += f' (file: {r["file_field"]:.4g} {r["file_field_key"]})'
+            if row['deg'] > 0 and 'file_field' in r:
+                field += f' (file: {r["file_field"]:.4g}, {r["file_field_key"]})'
             if row['deg'] > 0 and 'ro_chief_miss' in s:
                 miss = f'{s["ro_chief_miss"]:.4g} / {s["stop_r"]:.4g}'
             lines.append('| ' + ' | '.join([
