@@ -8,7 +8,9 @@ the RMS spot radius on axis and at lenslab's largest field. Prints a Markdown ta
 it, the notes the table refers to. A file lenslab refuses is listed with lenslab's message.
 
     PYTHONPATH=RAYOPTICS/src:OPTICALGLASS/src:ANYTREE/src:XLRD \\
-        /usr/bin/python3 bench/peer/compare_rayoptics.py [--lenslab build/cli/lenslab] [FILE...]
+        /usr/bin/python3 bench/peer/compare_rayoptics.py [--lenslab build/cli/lenslab] [--jobs N]
+        [--no-spots] [--json RUN.json] [FILE...]
+    /usr/bin/python3 bench/peer/compare_rayoptics.py --from-json RUN.json   (the tables again)
 
 Requirements (Debian 12): python3-numpy, -scipy, -pandas, -matplotlib, -openpyxl, -parsimonious,
 -transforms3d, -json-tricks, -deprecation, -requests, -packaging; ray-optics and opticalglass
@@ -416,16 +418,22 @@ def gauss_r2(n_r, n_az):
 
 def rms_spot(aimer, stop_radius, image_s, pattern):
     pts, w = pattern
-    hits, ws, failed = [], [], 0
+    hits, ws, failed, aimed = [], [], 0, 0
     a = aimer.chief
     for (px, py), wi in zip(pts, w):
+        target = np.array([px, py]) * stop_radius
         try:
-            a = aimer.aim(np.array([px, py]) * stop_radius, guess=a)
+            a = aimer.aim(target, guess=a)   # from the last ray aimed, a neighbour
         except (RuntimeError, ro.TraceError, np.linalg.LinAlgError):
-            failed, a = failed + 1, aimer.chief
-            if failed > 64 and not hits:   # no point of this stop is within the field's reach
-                return float('nan'), 0
-            continue
+            try:
+                aimer.jac = None   # the kept Jacobian may belong to a far part of the pupil
+                a = aimer.aim(target, guess=aimer.chief)
+            except (RuntimeError, ro.TraceError, np.linalg.LinAlgError):
+                failed += 1
+                if failed > 64 and not aimed:   # no point of this stop is within the field's reach
+                    return float('nan'), 0
+                continue
+        aimed += 1
         q = aimer.image_point(a, image_s)
         if q is not None:
             hits.append(q)
@@ -531,7 +539,7 @@ def compare(path, binary, paraxial_flag, with_spots=True):
     for name, nm in LINES:
         j, err = lenslab_json(binary, ['lens', path, '--wavelength', repr(nm)])
         if err is not None:
-            out['refused'] = 'lenslab: ' + err
+            out['refused'] = err.replace(os.path.dirname(path) + os.sep, '')
             return out
         lenslab[name] = j
     try:
@@ -711,12 +719,21 @@ def main():
     ap.add_argument('--json', help='also write every number to this file')
     ap.add_argument('--jobs', type=int, default=1, help='prescriptions compared at once (processes)')
     ap.add_argument('--no-spots', action='store_true', help='first order only (seconds instead of minutes a lens)')
+    ap.add_argument('--from-json', help='print the tables of a run saved with --json, running nothing')
     args = ap.parse_args()
+    if args.from_json:
+        with open(args.from_json) as f:
+            saved = json.load(f)
+        print_tables(saved['header'], saved['results'], spots=any('spots' in r for r in saved['results']))
+        return
     refuse_network()
     import_rayoptics()
     paraxial_flag = analyze_has_image_plane(args.lenslab)
     jobs = [(os.path.abspath(p), os.path.abspath(args.lenslab), paraxial_flag, not args.no_spots)
             for p in args.files or default_files()]
+    header = (f'Run {datetime.date.today()}: ray-optics {source_commit("rayoptics")}, opticalglass '
+              f'{source_commit("opticalglass")}; lenslab analyze '
+              + ('with --image-plane paraxial' if paraxial_flag else 'on its own image plane (no --image-plane yet)') + '.')
     import multiprocessing
     results = []
     with multiprocessing.Pool(args.jobs) as pool:
@@ -724,13 +741,15 @@ def main():
             results.append(r)
             if args.json:   # kept up to date: a long run can be read while it goes on
                 with open(args.json, 'w') as f:
-                    json.dump(results, f, indent=1, default=float)
-    print(f'Run {datetime.date.today()}: ray-optics {source_commit("rayoptics")}, opticalglass '
-          f'{source_commit("opticalglass")}; lenslab analyze '
-          + ('with --image-plane paraxial' if paraxial_flag else 'on its own image plane (no --image-plane yet)') + '.\n')
+                    json.dump({'header': header, 'results': results}, f, indent=1, default=float)
+    print_tables(header, results, spots=not args.no_spots)
+
+
+def print_tables(header, results, spots):
+    print(header + '\n')
     print('### First order (Δ: (lenslab - ray-optics) / |ray-optics|; positions and BFL / EFL)\n')
     print(first_order_table(results))
-    if not args.no_spots:
+    if spots:
         print('\n### RMS spot radius, d line (Δ: lenslab against ray-optics with the same rays)\n')
         print(spot_table(results))
     print('\n### Notes\n')
