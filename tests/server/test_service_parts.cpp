@@ -1,9 +1,11 @@
 // The service's parts in-process: request checking, identifiers, the result cache's sharing and
-// eviction, the heavy-work pool's admission, and the job queue's limits, cancellation and
-// persistence with a fake renderer.
+// eviction, the heavy-work pool's admission, event-stream slots, storage errors' statuses, the
+// remembered render checks, and the job queue's limits, cancellation and persistence with a fake
+// renderer.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <filesystem>
 #include <future>
@@ -15,11 +17,14 @@
 #include "FakeRenderer.h"
 #include "core/HttpError.h"
 #include "core/Identifiers.h"
+#include "guards/EventStreamSlots.h"
 #include "jobs/JobJson.h"
 #include "jobs/JobQueue.h"
 #include "jobs/JobStore.h"
 #include "storage/LensStore.h"
+#include "storage/StorageError.h"
 #include "jobs/RenderRequest.h"
+#include "jobs/RenderSettingsChecks.h"
 #include "jobs/WorkPool.h"
 #include "ServerProcess.h"
 
@@ -178,6 +183,59 @@ TEST(JobJsonTest, AnErrorIsServedAsAPublicMessage) {
     EXPECT_EQ(error.find("/srv"), std::string::npos) << error;
     EXPECT_NE(error.find("'upload-1.dat'"), std::string::npos) << error;
     EXPECT_LT(error.size(), 200u) << error;
+}
+
+// Event streams: a client's fourth stream is its last (docs/api.md: "at most 4 per client address"),
+// and the total is the total; a slot given back is free again.
+TEST(EventStreamSlotsTest, AClientGetsItsShareAndTheTotalHolds) {
+    auto slots = std::make_shared<EventStreamSlots>(6, 4);
+    std::vector<std::shared_ptr<void>> held;
+    for (int i = 0; i < 4; ++i) {
+        held.push_back(slots->take("10.0.0.1"));
+        EXPECT_TRUE(held.back()) << "stream " << i + 1;
+    }
+    EXPECT_FALSE(slots->take("10.0.0.1")) << "a fifth stream for one client";
+    held.push_back(slots->take("10.0.0.2"));
+    held.push_back(slots->take("10.0.0.3"));
+    EXPECT_TRUE(held[4] && held[5]);
+    EXPECT_FALSE(slots->take("10.0.0.4")) << "a seventh stream of six";
+    held.erase(held.begin());
+    EXPECT_TRUE(slots->take("10.0.0.1"));
+}
+
+// A full disk is 507 (ENOSPC above all: the usual errno), a read-only one or any other failure 503.
+TEST(StorageErrorTest, AFullDiskIs507AndOtherFailures503) {
+    for (int full : {ENOSPC, EDQUOT, EFBIG}) EXPECT_EQ(StorageError(storageErrorKind(full), "x").httpStatus(), 507) << full;
+    for (int other : {EROFS, EACCES, EPERM, EIO}) EXPECT_EQ(StorageError(storageErrorKind(other), "x").httpStatus(), 503) << other;
+}
+
+// A render's check is remembered per scene, lens and settings: a scene at f/2.1 is fine through
+// dgauss.50mm (f/2.02) and refused through telephoto.250mm (f/5.59), asked in either order.
+TEST(RenderSettingsChecksTest, TheRememberedOutcomeIsTheLenssOwn) {
+    const std::string source = LENSLAB_SOURCE_DIR;
+    const auto job = [&](const std::string& lens) {
+        RenderJobInput input;
+        input.request.scene = "depth-of-field";
+        input.scenePath = source + "/scenes/depth-of-field.pbrt";
+        input.lensPath = source + "/lenses/" + lens + ".dat";
+        input.lensLayout = TableLayout::GapAfter;
+        return input;
+    };
+    for (bool wideFirst : {true, false}) {
+        RenderSettingsChecks checks;
+        const auto expectRefused = [&] {
+            try {
+                checks.check(job("telephoto.250mm"));
+                ADD_FAILURE() << "f/2.1 accepted through a lens that opens to f/5.59";
+            } catch (const HttpError& e) {
+                EXPECT_EQ(e.status(), 422);
+            }
+        };
+        if (!wideFirst) expectRefused();
+        EXPECT_NO_THROW(checks.check(job("dgauss.50mm")));
+        expectRefused();
+        EXPECT_NO_THROW(checks.check(job("dgauss.50mm")));
+    }
 }
 
 namespace {
