@@ -70,7 +70,7 @@ struct ServiceConfig {
     std::size_t diagramCacheBytes = 64u << 20;
     std::size_t analysisCacheBytes = 64u << 20;  // analyses and previews as JSON
     int httpThreads = 32;
-    WorkLimits work;                             // requests waiting on it: at most half the HTTP threads
+    WorkLimits work;                             // requests waiting on it: at most a quarter of the HTTP threads
     std::string mpiHostfile;     // non-empty: renders run through mpirun over these hosts
     int mpiProcesses = 2;        // mpirun -np (rank 0 schedules, the others render)
 };

@@ -3,8 +3,9 @@
 // builds runs here, on a few threads of its own, not on the HTTP workers: 34 analyses of 4-7 s once
 // held all 32 workers, and /api/health waited 156 s (issue 32). A request that needs heavy work is
 // admitted first, then waits (its HTTP worker idle) for its result:
-// - at most `admitted` requests wait on heavy work at once (running and queued), half the HTTP
-//   workers by default, so the other half always answer health, lists and cached results;
+// - at most `admitted` requests wait on heavy work at once (running and queued), a quarter of the
+//   HTTP workers by default (event streams may hold another quarter), so that half of them always
+//   answer health, lists, downloads and cached results;
 // - at most `perClient` of them from one client address, so one client cannot take every place;
 // past either the answer is 429 with Retry-After, at once.
 #include <condition_variable>

@@ -27,7 +27,7 @@ ServiceConfig withAbsoluteFolders(ServiceConfig config) {
 WorkPoolLimits workPoolLimits(const ServiceConfig& config) {
     WorkPoolLimits limits;
     limits.threads = config.work.threads > 0 ? config.work.threads : std::max(1u, std::thread::hardware_concurrency());
-    limits.admitted = std::max(1, config.httpThreads / 2);
+    limits.admitted = std::max(1, config.httpThreads / 4);
     limits.perClient = config.work.perClient;
     return limits;
 }
