@@ -94,9 +94,9 @@ LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::s
         entry.facts = lensFactsFromJson(facts->data);
     } else {
         entry.facts.id = id;
-        entry.facts.path = path;
         entry.facts.error = "the lens data could not be stored (see the problems list)";
     }
+    entry.facts.path = path;
     if (entry.facts.error.empty()) entry.jsonFile = jsonFile;
 
     for (const char* mode : {"exact", "thick", "overlay"}) {

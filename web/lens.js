@@ -33,7 +33,7 @@ export async function loadLenses(selectId) {
     button.type = "button";
     button.dataset.id = lens.id;
     // Bundled lenses go by their id; an upload by the name it was uploaded under (its id is random).
-    button.append(lens.bundled ? lens.id : lens.name);
+    button.append(displayName(lens));
     const detail = document.createElement("small");
     detail.textContent = `EFL ${fixed(lens.efl, 1)} mm, f/${fixed(lens.fstop_min, 2)}` + (lens.bundled ? "" : ` · uploaded (${lens.id})`);
     button.append(detail);
@@ -158,6 +158,15 @@ function cycleMode() {
 
 export function selectedLens() { return state.lensId; }
 
+// What people call a lens: a bundled table's id; an upload's own file name without its extension
+// (its id is a random one).
+function displayName(lens) { return lens.bundled ? lens.id : lens.name.replace(/\.(dat|zmx|seq|txt)$/i, ""); }
+
+export function selectedLensName() {
+  const lens = state.lenses.find((l) => l.id === state.lensId);
+  return lens ? displayName(lens) : state.lensId;
+}
+
 async function selectLens(id) {
   clearMessage();
   state.lensId = id;
@@ -166,7 +175,8 @@ async function selectLens(id) {
   if (!summary) return;
   state.fstopMin = summary.fstop_min;
   state.fstopMax = summary.fstop_max;  // the service's range: the lens's widest to f/64
-  $("lens-title").textContent = summary.id;
+  $("lens-title").textContent = displayName(summary);
+  $("lens-title").dataset.id = id;
   $("lens-description").textContent = summary.description || summary.name;
   $("delete-lens").hidden = summary.bundled;
   trySetFstop(state.fstopMin);

@@ -5,15 +5,18 @@
 //   POST /api/prescriptions/preview                    rows in; lens JSON, diagram PNG, analysis out
 //   POST /api/prescriptions/table.dat, .../prescription.zmx  rows in; the file text out
 // A preview's work is bounded: its body (kMaxPreviewBody), its rows (kMaxLensSurfaces), a fixed
-// analysis (3 fields, F d C) and a fixed diagram size. A row's problem is 400 naming the row.
+// analysis (3 fields, F d C) and a fixed diagram size; it runs in the heavy-work pool, and its answer
+// is cached by the body. A row's problem is 400 naming the row.
 #include <future>
 #include <limits>
 
 #include "AnalysisJson.h"
 #include "AnalysisPlots.h"
 #include "core/Base64.h"
+#include "core/ContentDigest.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
+#include "core/JsonBody.h"
 #include "LensDiagram.h"
 #include "LensJson.h"
 #include "LensTableWriter.h"
@@ -35,11 +38,7 @@ const char* const kEditedLensName = "edited lens";
 json parseBody(const httplib::Request& req) {
     if (req.body.size() > kMaxPreviewBody)
         throw HttpError(413, "a prescription body is at most " + std::to_string(kMaxPreviewBody / 1024) + " KiB");
-    try {
-        return json::parse(req.body);
-    } catch (const json::parse_error&) {
-        throw HttpError(400, "the body is not JSON");
-    }
+    return parseJsonBody(req, "the body");
 }
 
 // A problem with one row: 400 {"error", "row" (1-based, absent for the whole lens), "problem"}.
@@ -106,19 +105,13 @@ json previewAnalysisJson(const LensDesignAnalysis& analysis) {
     return summary;
 }
 
-void preview(const httplib::Request& req, httplib::Response& res) {
-    const json body = parseBody(req);
-    LensSystem system;
-    try {
-        system = buildLensSystem(prescriptionFromJson(body, kEditedLensName));
-    } catch (const LensTableError& e) {
-        replyRowError(res, e);
-        return;
-    }
-    const LensSettings settings = bodyLensSettings(body);
+// The preview's answer: the lens checked, analysed and drawn.
+std::string previewJson(const LensTable& table, const DiagramOptions& drawing) {
+    const LensSystem system = buildLensSystem(table);
+    const LensSettings& settings = drawing.lens;
     const json lens = lensAnalysisJson(analyzeLens(system, settings));  // 422 here for settings it cannot take
     // The diagram draws while the analysis runs: the two are about equal and independent.
-    auto diagram = std::async(std::launch::async, [&] { return drawLensDiagramPng(system, previewDiagramOptions(body, settings)); });
+    auto diagram = std::async(std::launch::async, [&] { return drawLensDiagramPng(system, drawing); });
     DesignAnalysisInputs inputs;
     inputs.lens = settings;
     inputs.lens.wavelength.reset();  // the analysis's own F, d, C
@@ -132,7 +125,23 @@ void preview(const httplib::Request& req, httplib::Response& res) {
         diagram.wait();
         throw;
     }
-    replyJson(res, 200, {{"lens", lens}, {"diagram_png_base64", base64Encode(diagram.get())}, {"analysis", analysis}});
+    return json{{"lens", lens}, {"diagram_png_base64", base64Encode(diagram.get())}, {"analysis", analysis}}.dump(
+        -1, ' ', false, json::error_handler_t::replace);
+}
+
+void preview(ServiceParts& parts, const httplib::Request& req, httplib::Response& res) {
+    const json body = parseBody(req);
+    try {
+        // The body's checks before a place in the pool is taken.
+        const LensTable table = prescriptionFromJson(body, kEditedLensName);
+        const DiagramOptions drawing = previewDiagramOptions(body, bodyLensSettings(body));
+        const auto answer = parts.work.cachedOrComputed(parts.analyses, "preview|" + contentDigest(req.body), clientOf(req),
+                                                        [&] { return textBytes(previewJson(table, drawing)); });
+        res.status = 200;
+        res.set_content(reinterpret_cast<const char*>(answer->data()), answer->size(), "application/json");
+    } catch (const LensTableError& e) {
+        replyRowError(res, e);
+    }
 }
 
 using TableWriter = std::string (*)(const LensTable&);
@@ -177,7 +186,8 @@ void addPrescriptionRoutes(httplib::Server& server, ServiceParts& parts) {
         const auto lens = findLens(parts, req.matches[1]);
         replyTableText(res, storedTable(*lens), writeZemaxText, lens->id + ".zmx");
     });
-    server.Post("/api/prescriptions/preview", preview);
+    server.Post("/api/prescriptions/preview",
+                [&parts](const httplib::Request& req, httplib::Response& res) { preview(parts, req, res); });
     server.Post("/api/prescriptions/table.dat", [](const httplib::Request& req, httplib::Response& res) {
         exportEdited(req, res, writeLensTableText, "edited-lens.dat");
     });

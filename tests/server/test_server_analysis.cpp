@@ -41,3 +41,28 @@ TEST(ServerAnalysis, ServesTheAnalysisAndRefusesBadListsNamingThem) {
     }
     EXPECT_EQ(get(c, "/api/lenses/no-such-lens/analysis").status, 404);
 }
+
+// The image plane and the reference point change the answer, so a cached answer for one must not
+// be served for another: the paraxial plane sits where the paraxial trace puts it, the film plane
+// elsewhere, and the chief-ray reference moves the spot's points off the centroid.
+TEST(ServerAnalysis, ImagePlaneAndReferenceAreHeldApartByTheCache) {
+    TempDir data;
+    ServerProcess server(LENSLAB_BINARY, data.path() + "/data");
+    auto c = server.client();
+    const std::string base = "/api/lenses/dgauss.50mm/analysis?fstop=2.8&wavelengths=d&fields=0,1";
+    const Reply film = get(c, base + "&image_plane=film");
+    const Reply paraxial = get(c, base + "&image_plane=paraxial");
+    const Reply filmAgain = get(c, base + "&image_plane=film");
+    ASSERT_EQ(film.status, 200) << film.raw.substr(0, 400);
+    ASSERT_EQ(paraxial.status, 200) << paraxial.raw.substr(0, 400);
+    EXPECT_EQ(film.body["image_plane"], "film");
+    EXPECT_EQ(paraxial.body["image_plane"], "paraxial");
+    EXPECT_NE(film.body["image_z"].get<double>(), paraxial.body["image_z"].get<double>());
+    EXPECT_EQ(film.raw, filmAgain.raw);
+
+    const Reply chief = get(c, base + "&reference=chief");
+    ASSERT_EQ(chief.status, 200) << chief.raw.substr(0, 400);
+    EXPECT_EQ(chief.body["reference"], "chief");
+    const auto rms = [](const Reply& r) { return r.body["fields"][1]["spots"][0]["rms_radius_mm"].get<double>(); };
+    EXPECT_GT(rms(chief), rms(film));  // about the chief ray is never smaller than about the centroid
+}
