@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 #include <sstream>
 
@@ -144,7 +143,7 @@ Plot illuminationPlot(const LensFacts& f) {
     p.y.min = 0;
     p.y.max = 1;
     PlotSeries light{"illumination (cos\u2074 included)", {}, {}}, area{"passing area (vignetting)", {}, {}};
-    area.dashed = true;
+    area.dash = LineDash::Dashed;
     for (const auto& s : f.illumination) {
         light.x.push_back(s.filmRadius);
         light.y.push_back(s.relativeIllumination);
@@ -191,39 +190,18 @@ void colourFringes(std::ostringstream& out, const LensFacts& f, const ColourFrin
         << formatFixed(c.rgb.renderSeconds, 2) << " s RGB.</p>\n</section>\n";
 }
 
-// What one of designAnalysisPlots' files shows, from its name ("spot-field-2", "distortion", ...).
-std::string designCaption(const std::string& file, const DesignPlots& d) {
-    const std::string name = std::filesystem::path(file).stem().string();
-    const auto field = [&](const std::string& prefix) -> std::string {
-        const std::size_t i = std::stoul(name.substr(prefix.size())) - 1;
-        return i < d.fieldsDegrees.size() ? formatFixed(d.fieldsDegrees[i], 1) + "\u00b0" : "?";
-    };
-    if (name.rfind("spot-field-", 0) == 0)
-        return "Spot diagram at " + field("spot-field-") + " (F, d, C): ray hits on the image plane around the field's reference point.";
-    if (name.rfind("mtf-field-", 0) == 0)
-        return "MTF at " + field("mtf-field-") + ": sagittal and tangential, from the pupil (diffraction) and the spot (geometric), "
-               "with the diffraction limit.";
-    if (name.rfind("fans-field-", 0) == 0)
-        return "Transverse ray aberration at " + field("fans-field-") + ", tangential and sagittal, against pupil coordinate.";
-    if (name == "field-curvature") return "Field curvature: sagittal and tangential focus against field, from the image plane.";
-    if (name == "distortion") return "Distortion in percent against field.";
-    if (name == "relative-illumination") return "Relative illumination against image height on the film, 1 on the axis.";
-    if (name == "chromatic-focal-shift") return "Chromatic focal shift: the paraxial focus against wavelength, from the d line's.";
-    return name;
-}
-
 // lenslab analyze's plots for the lens, each an SVG file opened full size by a click.
 void designSection(std::ostringstream& out, const LensFacts& f, const DesignPlots& d) {
     if (d.plots.empty() && d.problem.empty()) return;  // not asked for
-    out << "<section class=\"design\">\n<h4>The lens designer's analysis at f/" << formatFNumber(d.fstop) << "</h4>\n";
-    if (!d.settings.empty()) out << "<p class=\"settings\">" << escapeMarkup(d.settings) << "</p>\n";
+    out << "<section class=\"analysis\" data-lens=\"" << escapeMarkup(f.id) << "\">\n<h4>The lens designer's analysis at f/"
+        << formatFNumber(d.fstop) << "</h4>\n";
     if (!d.problem.empty()) {
         out << "<p class=\"problem\">" << escapeMarkup(d.problem) << "</p>\n</section>\n";
         return;
     }
-    out << "<div class=\"plots design-plots\">\n";
-    for (const std::string& plot : d.plots) {
-        const std::string href = escapeMarkup(plot), caption = designCaption(plot, d);
+    out << d.settingsHtml << "<div class=\"analysis-tables\">\n" << d.tablesHtml << "</div>\n<div class=\"plots design-plots\">\n";
+    for (std::size_t i = 0; i < d.plots.size(); ++i) {
+        const std::string href = escapeMarkup(d.plots[i]), caption = i < d.captions.size() ? d.captions[i] : "";
         out << figure("<a href=\"" + href + "\"><img src=\"" + href + "\" alt=\"" + escapeMarkup(f.id + ": " + caption) +
                           "\" loading=\"lazy\"></a>",
                       escapeMarkup(caption));
