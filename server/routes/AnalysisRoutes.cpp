@@ -1,10 +1,11 @@
 // GET /api/lenses/{id}/analysis: the lens designer's analysis (the `lenslab analyze --json` object)
 // at fstop and focus, for wavelengths, fields, image plane and reference given as the command line
-// takes them. The work is
+// takes them; with views=html also what the page shows of it (AnalysisViews.h). The work is
 // bounded by the inputs' check (at most 16 fields and 16 wavelengths); a malformed or out-of-range
 // list is 400 naming its parameter, settings the lens cannot take are optics' 422 as elsewhere.
 #include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
+#include "AnalysisViews.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
 #include "prescription/OpticsError.h"
@@ -45,7 +46,11 @@ DesignAnalysisInputs analysisInputs(const httplib::Request& req) {
 void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Get(R"(/api/lenses/([^/]+)/analysis)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
-        nlohmann::json body = designAnalysisJson(analyzeLensDesign(lens->system, analysisInputs(req)));
+        const auto views = queryText(req, "views");
+        if (views && *views != "html") throw HttpError(400, "query parameter views: html or absent");
+        const LensDesignAnalysis analysis = analyzeLensDesign(lens->system, analysisInputs(req));
+        nlohmann::json body = designAnalysisJson(analysis);
+        if (views) body["views"] = analysisViewsJson(analysis);
         body["id"] = lens->id;
         replyJson(res, 200, body);
     });

@@ -5,12 +5,14 @@
 //   POST /api/prescriptions/preview                    rows in; lens JSON, diagram PNG, analysis out
 //   POST /api/prescriptions/table.dat, .../prescription.zmx  rows in; the file text out
 // A preview's work is bounded: its body (kMaxPreviewBody), its rows (kMaxLensSurfaces), a fixed
-// analysis (3 fields, F d C) and a fixed diagram size. A row's problem is 400 naming the row.
+// analysis (3 fields, F d C; image_plane, reference and max_frequency as the analysis route takes them)
+// and a fixed diagram size. A row's problem is 400 naming the row.
 #include <future>
 #include <limits>
 
+#include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
-#include "AnalysisPlots.h"
+#include "AnalysisViews.h"
 #include "core/Base64.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
@@ -91,7 +93,8 @@ DiagramOptions previewDiagramOptions(const json& body, const LensSettings& lens)
     return o;
 }
 
-// The spot and MTF figures per field (the plots draw the points: the JSON keeps the statistics).
+// The numbers and the page's views without the curves against field (the plots draw the points
+// and fans: the JSON keeps the statistics).
 json previewAnalysisJson(const LensDesignAnalysis& analysis) {
     json summary = designAnalysisJson(analysis);
     for (const char* unshown : {"ray_fans", "curves", "relative_illumination", "field_curvature"}) summary.erase(unshown);
@@ -99,11 +102,31 @@ json previewAnalysisJson(const LensDesignAnalysis& analysis) {
         field.erase("relative_illumination");  // interpolated from the two curve samples: too coarse to show
         for (json& spot : field["spots"]) spot.erase("points");
     }
-    json plots = json::object();
-    for (const NamedSvg& plot : designAnalysisPlots(analysis))
-        if (plot.name.rfind("spot-", 0) == 0 || plot.name.rfind("mtf-", 0) == 0) plots[plot.name] = plot.svg;
-    summary["plots_svg"] = plots;
+    summary["views"] = analysisViewsJson(analysis, false);
     return summary;
+}
+
+// The analysis at the lens settings with the body's own choices, named as the API's query parameters.
+DesignAnalysisInputs previewAnalysisInputs(const json& body, const LensSettings& settings) {
+    DesignAnalysisInputs inputs;
+    inputs.lens = settings;
+    // The curves against field (relative illumination above all: 4/10 of the analysis at 16
+    // samples) are not shown by the editor: their two end points keep it within the time of an edit.
+    inputs.curveSamples = 2;
+    const auto text = [&](const char* field) -> std::optional<std::string> {
+        if (!body.contains(field) || body.at(field).is_null()) return std::nullopt;
+        if (!body.at(field).is_string()) throw HttpError(400, std::string(field) + " must be a string");
+        return body.at(field).get<std::string>();
+    };
+    try {
+        if (const auto plane = text("image_plane")) inputs.imagePlane = parseImagePlaneInput(*plane, "field image_plane");
+        if (const auto reference = text("reference")) inputs.reference = parseSpotReferenceInput(*reference, "field reference");
+    } catch (const InputListError& e) {
+        throw HttpError(400, e.what());
+    }
+    inputs.maxFrequencySource = "field max_frequency";
+    if (const auto max = numberSetting(body, "max_frequency")) inputs.maxFrequency = max->value;
+    return inputs;
 }
 
 void preview(const httplib::Request& req, httplib::Response& res) {
@@ -116,15 +139,10 @@ void preview(const httplib::Request& req, httplib::Response& res) {
         return;
     }
     const LensSettings settings = bodyLensSettings(body);
+    const DesignAnalysisInputs inputs = previewAnalysisInputs(body, settings);
     const json lens = lensAnalysisJson(analyzeLens(system, settings));  // 422 here for settings it cannot take
     // The diagram draws while the analysis runs: the two are about equal and independent.
     auto diagram = std::async(std::launch::async, [&] { return drawLensDiagramPng(system, previewDiagramOptions(body, settings)); });
-    DesignAnalysisInputs inputs;
-    inputs.lens = settings;
-    inputs.lens.wavelength.reset();  // the analysis's own F, d, C
-    // The curves against field (relative illumination above all: 4/10 of the analysis at 16
-    // samples) are not shown by the editor: their two end points keep it within the time of an edit.
-    inputs.curveSamples = 2;
     json analysis;
     try {
         analysis = previewAnalysisJson(analyzeLensDesign(system, inputs));
