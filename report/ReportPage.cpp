@@ -1,5 +1,6 @@
 #include "ReportPage.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -108,8 +109,9 @@ void lensTable(std::ostringstream& out, const LensFacts& f) {
     std::string stops;
     for (const auto& s : a["full_stops"]) stops += (stops.empty() ? "f/" : ", f/") + formatNumber(s.get<double>(), 3);
     out << "<tr><th scope=\"row\">Full stops</th><td colspan=\"3\">" << stops << "</td></tr>\n";
-    out << "<tr><th scope=\"row\">Image circle radius</th><td>" << formatFixed(f.imageCircleRadius, 2)
-        << "</td><td>mm</td><td>largest film radius any ray reaches</td></tr>\n";
+    out << "<tr><th scope=\"row\">Image circle radius</th><td>"
+        << (f.imageCircleRadius > 0 ? formatFixed(f.imageCircleRadius, 2) : "none")
+        << "</td><td>mm</td><td>largest film radius any ray reaches (none: rays reach past 2 EFL + 50 mm, or none the centre)</td></tr>\n";
     out << "</tbody>\n</table>\n";
 }
 
@@ -190,6 +192,12 @@ void colourFringes(std::ostringstream& out, const LensFacts& f, const ColourFrin
         << formatFixed(c.rgb.renderSeconds, 2) << " s RGB.</p>\n</section>\n";
 }
 
+bool drawsCurvesAgainstField(const DesignPlots& d) {
+    return std::any_of(d.plots.begin(), d.plots.end(), [](const std::string& file) {
+        return file.size() >= 15 && file.compare(file.size() - 15, 15, "/distortion.svg") == 0;
+    });
+}
+
 // lenslab analyze's plots for the lens, each an SVG file opened full size by a click.
 void designSection(std::ostringstream& out, const LensFacts& f, const DesignPlots& d) {
     if (d.plots.empty() && d.problem.empty()) return;  // not asked for
@@ -230,9 +238,13 @@ void lensArticle(std::ostringstream& out, const LensEntry& lens) {
     if (!lens.problem.empty()) out << "<p class=\"problem\">" << escapeMarkup(lens.problem) << "</p>\n";
     out << "</div>\n</div>\n<div class=\"plots\">\n";
     out << figure(svgPlot(thickErrorPlot(f)), "Rays parallel to the axis across the entrance pupil, where each crosses the F\u2032 plane.");
-    out << figure(svgPlot(illuminationPlot(f)),
-                  "Irradiance from a uniform scene on the film at the exact focus, by exact tracing; 1 at the centre.");
-    out << figure(svgPlot(distortionPlot(f)), "Chief ray height on the F\u2032 plane against f tan \u03b8; negative is barrel.");
+    // The designer's analysis below draws relative illumination and distortion against field: the
+    // panel draws its own only where that analysis draws none (no largest field, or not asked for).
+    if (!drawsCurvesAgainstField(lens.design)) {
+        out << figure(svgPlot(illuminationPlot(f)),
+                      "Irradiance from a uniform scene on the film at the exact focus, by exact tracing; 1 at the centre.");
+        out << figure(svgPlot(distortionPlot(f)), "Chief ray height on the F\u2032 plane against f tan \u03b8; negative is barrel.");
+    }
     out << "</div>\n";
     designSection(out, f, lens.design);
     if (lens.colourFringes) colourFringes(out, f, *lens.colourFringes);
