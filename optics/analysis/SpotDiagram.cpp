@@ -51,7 +51,13 @@ double rim(const RadialRay& radial, double lo, double hi, bool loPasses) {
 }
 
 // The stretches [u0, u1] of a line whose rays pass: a scan, then each change of state bisected.
-std::vector<std::pair<double, double>> passingStretches(const RadialRay& radial, int scan) {
+// Where the passing part of the stop is convex (no obscuration cuts a hole in it) and the line starts
+// inside it, it is one stretch from the start: only its far end needs finding.
+std::vector<std::pair<double, double>> passingStretches(const RadialRay& radial, int scan, bool convex) {
+    if (convex && radial.passing(0)) {
+        if (radial.passing(radial.uRim)) return {{0, radial.uRim}};
+        return {{0, rim(radial, 0, radial.uRim, true)}};
+    }
     std::vector<std::pair<double, double>> stretches;
     bool previous = radial.passing(0).has_value();
     double start = 0, previousU = 0;
@@ -88,12 +94,13 @@ PolarFrame passingFrame(const LensSystem& lens, const FieldAim& aim) {
     constexpr int kGrid = 11;
     std::vector<Point2> passing;
     int total = 0;
+    AimGuess guess;  // each grid point aimed from the last one's solution
     for (int j = 0; j < kGrid; ++j)
         for (int i = 0; i < kGrid; ++i) {
             const Point2 p{-1 + 2.0 * (i + 0.5) / kGrid, -1 + 2.0 * (j + 0.5) / kGrid};
             if (p.x * p.x + p.y * p.y > 1) continue;
             ++total;
-            const std::optional<Ray> in = aimedRay(lens, aim, p.x, p.y);
+            const std::optional<Ray> in = aimedRay(lens, aim, p.x, p.y, &guess);
             if (in && traceRay(lens, *in, TraceDirection::SceneToFilm).ok()) passing.push_back(p);
         }
     PolarFrame frame;
@@ -123,7 +130,7 @@ struct LineRays {
 };
 
 LineRays traceLine(const LensSystem& lens, const FieldAim& aim, double z, const PolarFrame& frame,
-                   const std::vector<std::pair<double, double>>& nodes, Point2 direction) {
+                   const std::vector<std::pair<double, double>>& nodes, Point2 direction, bool convex) {
     LineRays line;
     const Point2 c = frame.centre, v = frame.apply(direction);
     // The line's length to the stop's rim: |c + t v| = 1.
@@ -132,7 +139,7 @@ LineRays traceLine(const LensSystem& lens, const FieldAim& aim, double z, const 
     const RadialRay radial{lens, aim, c, v, t * t};
     // The scan finds stretches as narrow as 1 / scan of the line's length squared.
     const int scan = std::max(16, 2 * int(nodes.size()));
-    for (const auto& [u0, u1] : passingStretches(radial, scan))
+    for (const auto& [u0, u1] : passingStretches(radial, scan, convex))
         for (const auto& [x, w] : nodes) {
             ++line.launched;
             const std::optional<Ray> out = radial.passing(u0 + (u1 - u0) * x);
@@ -171,16 +178,18 @@ ImageRays settledImageRays(const LensSystem& lens, const FieldAim& aim, double z
                            double tolerance, int maxAzimuths) {
     const PolarFrame frame = passingFrame(lens, aim);
     const auto nodes = gaussLegendreUnit(start.rings);
+    // Clear apertures are round: what passes them all is convex unless an obscuration cuts a hole.
+    const bool convex = std::none_of(lens.surfaces.begin(), lens.surfaces.end(), [](const Surface& s) { return s.obscurationRadius > 0; });
     std::vector<LineRays> lines;
     for (int k = 0; k < start.azimuths; ++k)
-        lines.push_back(traceLine(lens, aim, z, frame, nodes, azimuthDirection(k, start.azimuths)));
+        lines.push_back(traceLine(lens, aim, z, frame, nodes, azimuthDirection(k, start.azimuths), convex));
     ImageRays rays = assemble(lines, lens.wavelength, z, start);
     // Each doubling keeps the lines it has (azimuth k of A is azimuth 2k of 2A) and adds those between.
     while (rays.sampling.doubled().azimuths <= maxAzimuths) {
         const PupilQuadrature finer = rays.sampling.doubled();
         std::vector<LineRays> next;
         for (int k = 0; k < finer.azimuths; ++k)
-            next.push_back(k % 2 == 0 ? std::move(lines[k / 2]) : traceLine(lens, aim, z, frame, nodes, azimuthDirection(k, finer.azimuths)));
+            next.push_back(k % 2 == 0 ? std::move(lines[k / 2]) : traceLine(lens, aim, z, frame, nodes, azimuthDirection(k, finer.azimuths), convex));
         lines = std::move(next);
         ImageRays fine = assemble(lines, lens.wavelength, z, finer);
         const double before = rmsAboutCentroid(rays), after = rmsAboutCentroid(fine);
