@@ -4,10 +4,10 @@
 // catadioptric shared/realworld/prescriptions/HoO-V2C18Ex27.zmx for docs/, the file itself never
 // committed).
 // usage: node analysis-screenshot.mjs LENSLAB_BINARY OUT_DIR [LENS_FILE]
-import { mkdtempSync, rmSync } from "node:fs";
+import { mkdtempSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { basename, extname, join } from "node:path";
-import { launchBrowser, startServer, stopServer } from "./serve.mjs";
+import { closeAll, openPage } from "./serve.mjs";
 
 const [binary, outDir, upload] = process.argv.slice(2);
 if (!binary || !outDir) {
@@ -26,13 +26,9 @@ async function analysisShown(page, before) {
 const shownCount = (page) => page.$eval("#analysis", (s) => Number(s.dataset.shown || 0));
 
 async function main() {
-  const { server, base } = await startServer(binary, work);
-  const context = await launchBrowser({ width: 1280, height: 1000 });
+  const { server, context, page } = await openPage(binary, work, { width: 1280, height: 1000 });
   try {
-    const page = context.pages()[0] || await context.newPage();
     page.setDefaultTimeout(120000);
-    await page.goto(base);
-    await page.waitForSelector("body[data-ready]");
     let before = await shownCount(page);
     await page.click('#lens-list button[data-id="us4666259-ex1-reflex-500mm"]');
     await analysisShown(page, before);
@@ -51,9 +47,7 @@ async function main() {
     await page.evaluate(() => document.querySelector('#analysis-plots .analysis-row[data-field="3"]').scrollIntoView());
     await page.screenshot({ path: join(outDir, "web-analysis-phone.png") });
   } finally {
-    await context.close();
-    await stopServer(server);
-    rmSync(work, { recursive: true, force: true });
+    await closeAll(context, server, work);
   }
 }
 

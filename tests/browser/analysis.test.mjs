@@ -13,7 +13,7 @@ import { mkdirSync, mkdtempSync, readdirSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { pathToFileURL } from "node:url";
-import { closeAll, launchBrowser, startServer } from "./serve.mjs";
+import { closeAll, openPage } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -235,14 +235,8 @@ async function checkControls(page, base, id, fstop) {
 }
 
 async function main() {
-  const { server, base } = await startServer(binary, work);
-  const context = await launchBrowser({ width: 1280, height: 1000 });
-  const page = context.pages()[0] || await context.newPage();
+  const { server, base, context, page } = await openPage(binary, work, { width: 1280, height: 1000 });
   try {
-    page.setDefaultTimeout(60000);
-    page.on("pageerror", (e) => console.log("# page error:", e.message));
-    await page.goto(base);
-    await page.waitForSelector("body[data-ready]");
     const lenses = (await (await page.request.get(`${base}api/lenses`)).json()).lenses.filter((l) => l.bundled);
     const files = new Map(readdirSync(join(sourceDir, "lenses")).filter((f) => /\.(dat|zmx)$/.test(f))
       .map((f) => [f.replace(/\.(dat|zmx)$/, ""), join(sourceDir, "lenses", f)]));

@@ -9,7 +9,7 @@
 import { mkdtempSync, readFileSync } from "node:fs";
 import { cpus, loadavg, tmpdir } from "node:os";
 import { join } from "node:path";
-import { launchBrowser, startServer, closeAll } from "./serve.mjs";
+import { closeAll, openPage } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -75,16 +75,10 @@ async function timing(page) {
 }
 
 async function main() {
-  const { server, base } = await startServer(binary, work);
-  const context = await launchBrowser({ width: 1280, height: 1000 });
-  const page = context.pages()[0] || await context.newPage();
+  const { server, base, context, page } = await openPage(binary, work, { width: 1280, height: 1000 });
   try {
-    page.setDefaultTimeout(60000);
-    page.on("pageerror", (e) => console.log("# page error:", e.message));
-    const previewBodies = [];
+    const previewBodies = [];  // what the page sends for previews, counted from here
     page.on("request", (r) => { if (r.url().endsWith("/api/prescriptions/preview")) previewBodies.push(r.postData()); });
-    await page.goto(base);
-    await page.waitForSelector("body[data-ready]");
     if (process.env.EDITOR_TIMING_ONLY) { await timing(page); return; }
     await lensSelected(page, "dgauss.50mm");
     const storedEfl = await firstOrderEfl(page);
