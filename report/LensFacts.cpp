@@ -43,7 +43,11 @@ LensFacts measureLens(const std::string& id, const std::string& path, const Lens
         f.analysis = lensAnalysisJson(a);
         f.thickError = thickErrorAcrossPupil(a, request.quick ? 12 : 41);
         f.filmZ = a.focus.imageZExact;
-        f.imageCircleRadius = imageCircleRadius(a.lens, f.filmZ, 2 * std::fabs(a.firstOrder.efl) + 50);
+        // Rays that still reach the film at the search's limit (a doublet with its stop at the glass
+        // passes them at any angle) bound no image circle: none, as when no ray reaches the centre.
+        const double limit = 2 * std::fabs(a.firstOrder.efl) + 50;
+        const double circle = imageCircleRadius(a.lens, f.filmZ, limit);
+        f.imageCircleRadius = circle < limit ? circle : 0;
         if (f.imageCircleRadius > 0)
             f.illumination = relativeIllumination(a.lens, f.filmZ, f.imageCircleRadius,
                                                   request.quick ? RelativeIlluminationOptions{12, 48}

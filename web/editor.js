@@ -1,6 +1,6 @@
 // The live prescription editor: the selected lens's surfaces as an editable table. Every accepted
 // edit asks POST /api/prescriptions/preview for the edited lens (nothing is stored) and shows its
-// first-order and colour data, diagram, spot diagrams and MTF in place of the stored lens's. One
+// first-order and colour data, diagram and analysis (analysis.js) in place of the stored lens's. One
 // preview is in flight at a time; edits made meanwhile are sent together when it answers, and an
 // answer overtaken by a newer edit is dropped. A cell whose text is not acceptable is marked with
 // the reason and the lens is not sent until it is corrected.
@@ -8,6 +8,7 @@ import { $, api, authorizedFetch, postJson, showMessage } from "./api.js";
 import { COLUMNS, needsZemax, newRow, setGlassCatalog } from "./prescription-cells.js";
 import { UndoHistory } from "./undo-history.js";
 import { attachEditor, lensPreviewSettings, loadLenses, selectedLens, selectedLensName, showDiagramPng, showLensData } from "./lens.js";
+import { showAnalysis } from "./analysis.js";
 
 const state = {
   lensId: null,
@@ -241,7 +242,7 @@ async function sendPreview() {
 async function showPreview(answer) {
   await showDiagramPng("data:image/png;base64," + answer.diagram_png_base64, "edited lens");
   showLensData(answer.lens);
-  showAnalysis(answer.analysis);
+  showAnalysis(answer.analysis, hasEdits() ? "edited lens" : state.lensId);
   const ms = performance.now() - state.editedAt;
   state.editedAt = 0;
   state.shown++;
@@ -258,31 +259,6 @@ function showPreviewError(e) {
   const note = row && $("editor-table").querySelector(`tr[data-row="${row - 1}"] .row-note`);
   if (note) note.textContent = e.body.problem;
   say(`Not shown: ${e.message}`, true);
-}
-
-function showAnalysis(analysis) {
-  const body = $("editor-spots").tBodies[0];
-  body.replaceChildren();
-  const um = (mm) => (mm === null ? "–" : (mm * 1000).toFixed(2));
-  for (const field of analysis.fields) {
-    const tr = body.insertRow();
-    const spots = field.spots;
-    const d = spots.find((s) => Math.abs(s.wavelength_nm - 587.5618) < 0.01) || spots[0];
-    for (const v of [`${field.field_deg.toFixed(2)}°`, um(d.rms_radius_mm), um(d.geo_radius_mm),
-                     spots.map((s) => um(s.rms_radius_mm)).join(" / ")])
-      tr.insertCell().textContent = v;
-  }
-  const plots = $("editor-plots");
-  // Parsed as HTML, as the report page inlines its own plots; parsing does
-  // not run scripts, and the service wrote every byte.
-  const parser = new DOMParser();
-  const figures = Object.entries(analysis.plots_svg).map(([name, svg]) => {
-    const figure = document.createElement("figure");
-    figure.dataset.plot = name;
-    figure.append(document.importNode(parser.parseFromString(svg, "text/html").querySelector("svg"), true));
-    return figure;
-  });
-  plots.replaceChildren(...figures);
 }
 
 // ---- saving, downloading, rendering -----------------------------------------------------------------

@@ -2,6 +2,7 @@
 // driven like the course's lens viewer (↑/↓ f-number by 0.1, Shift+↑/↓ a full stop, m the diagram
 // mode, ←/→ the focus). Out-of-range f-numbers are refused with the lens's range, never clamped.
 import { $, api, authorizedFetch, clearMessage, fixed, showMessage } from "./api.js";
+import { analysisChoices, setUpAnalysis, showStoredAnalysis } from "./analysis.js";
 
 const state = {
   lenses: [],
@@ -190,6 +191,13 @@ function scheduleUpdate() {
   state.updateTimer = setTimeout(updateLensView, 150);
 }
 
+// A choice of the analysis panel changed: the analysis again, of the lens shown.
+function updateAnalysis() {
+  if (!state.lensId || wavelengthParameter() === null) return;
+  if (editor.hasEdits()) editor.requestPreview();
+  else showStoredAnalysis(state.lensId, analysisLensQuery());
+}
+
 // The wavelength box: empty is the lens's own primary wavelength; out-of-range values are marked and
 // nothing is asked for until they are corrected (null).
 function wavelengthParameter() {
@@ -205,9 +213,14 @@ function wavelengthParameter() {
 const lensQuery = () => `fstop=${fstopParameter()}&focus=${currentFocus()}${wavelengthParameter()}`;
 const colourParameter = () => ($("colour-fans").checked ? "&colour=1" : "");
 
+// The analysis's lens settings: no f-number at the widest, so that it is the widest aperture's
+// exactly (as `lenslab analyze` without --fstop).
+const analysisLensQuery = () =>
+  (state.fstop > state.fstopMin + 1e-9 ? `fstop=${fstopParameter()}&` : "") + `focus=${currentFocus()}${wavelengthParameter()}`;
+
 // The settings above for the edited lens: no f-number at the widest, which an edit may move.
 export function lensPreviewSettings() {
-  const settings = { focus: currentFocus(), mode: currentMode(), colour: $("colour-fans").checked };
+  const settings = { focus: currentFocus(), mode: currentMode(), colour: $("colour-fans").checked, ...analysisChoices() };
   if (state.fstop > state.fstopMin + 1e-9) settings.fstop = fstopParameter();
   const nm = $("wavelength").value.trim();
   if (nm !== "") settings.wavelength = Number(nm);
@@ -221,6 +234,7 @@ async function updateLensView() {
   const request = ++state.dataRequest;
   $("diagram-status").textContent = "Drawing the diagram…";
   loadDiagram(`/api/lenses/${id}/diagram.png?mode=${currentMode()}&${lensQuery()}${colourParameter()}&size=1000x500`, request);
+  showStoredAnalysis(state.lensId, analysisLensQuery());
   try {
     const lens = await api(`/api/lenses/${id}?${lensQuery()}`);
     if (request !== state.dataRequest) return;
@@ -396,5 +410,6 @@ export function setUpLensPanel() {
   $("wavelength").addEventListener("input", scheduleUpdate);
   $("lens-controls").addEventListener("submit", (e) => e.preventDefault());
   $("delete-lens").addEventListener("click", deleteLens);
+  setUpAnalysis(updateAnalysis);
   document.addEventListener("keydown", onKey);
 }

@@ -1,11 +1,12 @@
 // GET /api/lenses/{id}/analysis: the lens designer's analysis (the `lenslab analyze --json` object)
 // at fstop and focus, for wavelengths, fields, image plane and reference given as the command line
-// takes them. The inputs are checked first (at most 16 fields and 16 wavelengths; a malformed or
-// out-of-range list is 400 naming its parameter); the analysis runs in the heavy-work pool and is
-// cached by the lens's content and the inputs; settings the lens cannot take are optics' 422 as
-// elsewhere.
+// takes them; with views=html also what the page shows of it (AnalysisViews.h). The inputs are
+// checked first (at most 16 fields and 16 wavelengths; a malformed or out-of-range list is 400
+// naming its parameter); the analysis runs in the heavy-work pool and is cached by the lens's
+// content and the inputs; settings the lens cannot take are optics' 422 as elsewhere.
 #include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
+#include "AnalysisViews.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
 #include "prescription/OpticsError.h"
@@ -57,14 +58,18 @@ std::string inputsKey(const DesignAnalysisInputs& in) {
 void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Get(R"(/api/lenses/([^/]+)/analysis)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
+        const auto views = queryText(req, "views");
+        if (views && *views != "html") throw HttpError(400, "query parameter views: html or absent");
         const DesignAnalysisInputs inputs = analysisInputs(req);
         // Cached without the lens's id and name: two uploads of one table share it.
-        const auto analysis = parts.work.cachedOrComputed(
-            parts.analyses, "analysis|" + lens->digest + "|" + inputsKey(inputs), clientOf(req), [&] {
-                json body = designAnalysisJson(analyzeLensDesign(lens->system, inputs));
-                body.erase("name");
-                return textBytes(body.dump(-1, ' ', false, json::error_handler_t::replace));
-            });
+        const std::string key = "analysis|" + lens->digest + "|" + inputsKey(inputs) + (views ? "|views" : "");
+        const auto analysis = parts.work.cachedOrComputed(parts.analyses, key, clientOf(req), [&] {
+            const LensDesignAnalysis a = analyzeLensDesign(lens->system, inputs);
+            json body = designAnalysisJson(a);
+            if (views) body["views"] = analysisViewsJson(a);
+            body.erase("name");
+            return textBytes(body.dump(-1, ' ', false, json::error_handler_t::replace));
+        });
         const std::string head = json{{"id", lens->id}, {"name", lens->name}}.dump(-1, ' ', false, json::error_handler_t::replace);
         res.status = 200;
         res.set_content(head.substr(0, head.size() - 1) + "," + bytesText(*analysis).substr(1), "application/json");
