@@ -20,6 +20,7 @@ void refuseWhatATableCannotHold(const LensTable& table, const LensTableRow& row)
     if (row.obscurationDiameter > 0) refuse("a central obscuration");
     if (row.stop && (row.radius != 0 || !isAir(row))) refuse("a stop on a curved or glass surface");
     if (row.glass.find_first_of(" \t#") != std::string::npos) refuse("the glass name '" + row.glass + "' with spaces");
+    if (row.coating.find_first_of(" \t#") != std::string::npos) refuse("the coating '" + row.coating + "' with spaces");
 }
 
 // Column 3 of a glass row must be its nd: a .zmx catalog glass may leave it to the catalog (0).
@@ -37,13 +38,14 @@ double tableIndex(const LensTable& table, const LensTableRow& row) {
 std::string writeLensTableText(const LensTable& table) {
     std::string out;
     for (const std::string& comment : table.comments) out += "# " + comment + "\n";
-    out += std::string("# radius  gap (") + layoutName(table.layout) + ")  N  diameter  glass or Vd\n";
+    out += std::string("# radius  gap (") + layoutName(table.layout) + ")  N  diameter  glass or Vd  coat=coating\n";
     for (const LensTableRow& row : table.rows) {
         refuseWhatATableCannotHold(table, row);
         out += exactNumberText(row.radius) + " " + exactNumberText(row.gap) + " " + exactNumberText(tableIndex(table, row)) +
                " " + exactNumberText(row.diameter);
         if (!row.glass.empty()) out += " " + row.glass;
         else if (row.abbe > 0) out += " " + exactNumberText(row.abbe);
+        if (!row.coating.empty()) out += " coat=" + row.coating;
         out += "\n";
     }
     return out;
