@@ -1,9 +1,11 @@
 // GET /api/lenses/{id}/analysis: the lens designer's analysis (the `lenslab analyze --json` object)
-// at fstop and focus, for wavelengths and fields given as the command line takes them. The work is
+// at fstop and focus, for wavelengths and fields given as the command line takes them; and
+// GET /api/lenses/{id}/ghosts: its ghost analysis (`lenslab analyze --ghosts --json`) at fstop and focus. The work is
 // bounded by the inputs' check (at most 16 fields and 16 wavelengths); a malformed or out-of-range
 // list is 400 naming its parameter, settings the lens cannot take are optics' 422 as elsewhere.
 #include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
+#include "GhostFormats.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
 #include "prescription/OpticsError.h"
@@ -43,6 +45,14 @@ void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Get(R"(/api/lenses/([^/]+)/analysis)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
         nlohmann::json body = designAnalysisJson(analyzeLensDesign(lens->system, analysisInputs(req)));
+        body["id"] = lens->id;
+        replyJson(res, 200, body);
+    });
+    server.Get(R"(/api/lenses/([^/]+)/ghosts)", [&parts](const httplib::Request& req, httplib::Response& res) {
+        const auto lens = findLens(parts, req.matches[1]);
+        LensSettings settings = queryLensSettings(req);
+        settings.wavelength = Setting{kWavelengthD, "the d line"};
+        nlohmann::json body = ghostAnalysisJson(analyzeGhosts(analyzeLens(lens->system, settings)));
         body["id"] = lens->id;
         replyJson(res, 200, body);
     });
