@@ -1,5 +1,5 @@
 // GET /api/lenses/{id}/analysis on the real `lenslab serve`: the analysis JSON with its keys, and
-// 400 naming the parameter for lists that are malformed or too long.
+// 400 naming the parameter for lists that are malformed or too long; GET /api/lenses/{id}/ghosts.
 #include <gtest/gtest.h>
 
 #include "ServerProcess.h"
@@ -40,24 +40,19 @@ TEST(ServerAnalysis, ServesTheAnalysisAndRefusesBadListsNamingThem) {
         EXPECT_NE(bad.body.value("error", std::string()).find(parameter), std::string::npos) << query << " " << bad.raw;
     }
     EXPECT_EQ(get(c, "/api/lenses/no-such-lens/analysis").status, 404);
-}
 
-// GET /api/lenses/{id}/ghosts: every two-reflection path of dgauss.50mm (10 reflecting surfaces)
-// at the settings asked, brightest first; the lens settings' errors are optics' as elsewhere.
-TEST(ServerAnalysis, ServesTheGhostAnalysis) {
-    TempDir data;
-    ServerProcess server(LENSLAB_BINARY, data.path() + "/data");
-    auto c = server.client();
-    const Reply ok = get(c, "/api/lenses/dgauss.50mm/ghosts?fstop=4&focus=inf");
-    ASSERT_EQ(ok.status, 200) << ok.raw.substr(0, 400);
-    EXPECT_EQ(ok.body["id"], "dgauss.50mm");
-    EXPECT_EQ(ok.body["reflecting_surfaces"], 10);
-    ASSERT_EQ(ok.body["ghosts"].size(), 45u);
-    const json& first = ok.body["ghosts"][0];
+    // The ghost analysis: every two-reflection path of dgauss.50mm (10 reflecting surfaces) at the
+    // settings asked, brightest first; the lens settings' errors are optics' as elsewhere.
+    const Reply ghosts = get(c, "/api/lenses/dgauss.50mm/ghosts?fstop=4&focus=inf");
+    ASSERT_EQ(ghosts.status, 200) << ghosts.raw.substr(0, 400);
+    EXPECT_EQ(ghosts.body["id"], "dgauss.50mm");
+    EXPECT_EQ(ghosts.body["reflecting_surfaces"], 10);
+    ASSERT_EQ(ghosts.body["ghosts"].size(), 45u);
+    const json& first = ghosts.body["ghosts"][0];
     for (const char* key : {"surfaces", "reflectance", "focus_z", "focus_from_film_mm", "blur_diameter_mm", "field_scale",
                             "energy", "relative_intensity", "focused"})
         EXPECT_TRUE(first.contains(key)) << key;
-    EXPECT_GE(first["relative_intensity"].get<double>(), ok.body["ghosts"][44]["relative_intensity"].get<double>());
+    EXPECT_GE(first["relative_intensity"].get<double>(), ghosts.body["ghosts"][44]["relative_intensity"].get<double>());
     EXPECT_EQ(get(c, "/api/lenses/dgauss.50mm/ghosts?fstop=0.5").status, 422);
     EXPECT_EQ(get(c, "/api/lenses/no-such-lens/ghosts").status, 404);
 }
