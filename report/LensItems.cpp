@@ -4,6 +4,9 @@
 
 #include "AnalysisJson.h"
 #include "AnalysisPlots.h"
+#include "GhostFormats.h"
+#include "GhostPlot.h"
+#include "analysis/GhostAnalysis.h"
 #include "firstorder/Focus.h"
 #include "analysis/LensDesignAnalysis.h"
 #include "LensDiagram.h"
@@ -57,6 +60,10 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
             m.files.push_back(folder + plot.name + ".svg");
             writeSiteFile(runner.site(), m.files.back(), plot.svg + "\n");
         }
+        const GhostAnalysis ghosts = analyzeGhosts(a.lens);
+        m.data["ghosts"] = ghostAnalysisJson(ghosts);
+        m.files.push_back(folder + "ghosts.svg");
+        writeSiteFile(runner.site(), m.files.back(), ghostPlotSvg(ghosts, "ghosts-" + id) + "\n");
         return m;
     });
     if (!item) {
@@ -67,6 +74,7 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
     design.plots.assign(item->files.begin() + 1, item->files.end());
     design.fstop = item->data.value("fstop", 0.0);
     design.fieldsDegrees = item->data.value("fields_deg", std::vector<double>{});
+    design.ghosts = item->data.value("ghosts", json::object());
     return design;
 }
 

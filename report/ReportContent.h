@@ -41,6 +41,7 @@ struct DesignPlots {
     double fstop = 0;
     std::vector<double> fieldsDegrees;  // the spot, MTF and fan plots' fields, in order
     std::string problem;                // why they are missing
+    nlohmann::json ghosts;              // the ghost analysis (ghostAnalysisJson), its plot the last of `plots`
 };
 
 struct LensEntry {
