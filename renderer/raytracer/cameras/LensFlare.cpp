@@ -442,9 +442,29 @@ void rasterizeMesh(const FlareMesh& m, const FlareFrame& f, const LayerBand& lay
         }
 }
 
+// The stretch of a row of the stop's plane (at height v) inside a circle: [lo, hi], empty when lo > hi.
+void narrowToCircle(double cx, double cy, double radius, double v, double& lo, double& hi) {
+    const double h2 = radius * radius - (v - cy) * (v - cy);
+    if (h2 < 0) {
+        hi = -INFINITY;
+        return;
+    }
+    const double h = std::sqrt(h2);
+    lo = std::max(lo, cx - h);
+    hi = std::min(hi, cx + h);
+}
+
+// The patch row by row: each row's pixels inside the stop's disc and every clear aperture are one
+// stretch (an intersection of discs), found in closed form; only the shape and the obscurations are
+// looked up per pixel.
 void rasterizePatch(const FlarePatch& p, const FlareFrame& f, const LayerBand& layer) {
     const double reach = std::fabs(p.scale);
     const ApertureShape& shape = f.camera.params().aperture;
+    const auto inHole = [&](double u, double v) {
+        return std::any_of(p.clips.begin(), p.clips.end(), [&](const ApertureCircle& c) {
+            return c.obscuration > 0 && (u - c.x) * (u - c.x) + (v - c.y) * (v - c.y) < c.obscuration * c.obscuration;
+        });
+    };
     const auto clipped = [&](double u, double v) {
         return !std::all_of(p.clips.begin(), p.clips.end(), [&](const ApertureCircle& c) { return c.passes(u, v); });
     };
@@ -455,14 +475,22 @@ void rasterizePatch(const FlarePatch& p, const FlareFrame& f, const LayerBand& l
     // A pixel's film point back to the stop: the patch's scale, and the film's own flip of x.
     const int yBegin = std::max(layer.y0, int(std::ceil(p.centreY - reach - 0.5)));
     const int yEnd = std::min(layer.y1 - 1, int(std::floor(p.centreY + reach - 0.5)));
-    const int xBegin = std::max(0, int(std::ceil(p.centreX - reach - 0.5)));
-    const int xEnd = std::min(f.width - 1, int(std::floor(p.centreX + reach - 0.5)));
-    for (int y = yBegin; y <= yEnd; ++y)
+    for (int y = yBegin; y <= yEnd; ++y) {
+        const double v = (y + 0.5 - p.centreY) / p.scale;
+        double lo = -INFINITY, hi = INFINITY;
+        narrowToCircle(0, 0, 1, v, lo, hi);
+        for (const ApertureCircle& c : p.clips) narrowToCircle(c.x, c.y, c.radius, v, lo, hi);
+        if (!(lo <= hi)) continue;
+        // u = -(x + 0.5 - centreX) / scale, so x + 0.5 = centreX - u scale.
+        const double xa = p.centreX - lo * p.scale - 0.5, xb = p.centreX - hi * p.scale - 0.5;
+        const int xBegin = std::max(0, int(std::ceil(std::min(xa, xb))));
+        const int xEnd = std::min(f.width - 1, int(std::floor(std::max(xa, xb))));
         for (int x = xBegin; x <= xEnd; ++x) {
-            const double u = -(x + 0.5 - p.centreX) / p.scale, v = (y + 0.5 - p.centreY) / p.scale;
+            const double u = -(x + 0.5 - p.centreX) / p.scale;
             const double w = shape.weight(u, v);
-            if (w > 0 && !clipped(u, v)) layer.add(x, y, float(w) * p.irradiance);
+            if (w > 0 && !inHole(u, v)) layer.add(x, y, float(w) * p.irradiance);
         }
+    }
 }
 
 }  // namespace

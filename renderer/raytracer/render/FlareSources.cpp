@@ -59,8 +59,11 @@ Candidate patchCandidate(const Patch& patch, double solidAngle, const char* what
 Vec3f patchDirection(const Patch& p) { return normalize(Vec3f{float(p.x), float(p.y), float(p.z)}); }
 
 // Patches within kFlareCompactRadians of a brighter one join it: a small area light, or the sun of
-// an environment map, is one source; a large one gives a source per region of that size.
+// an environment map, is one source; a large one gives a source per region of that size. A cluster's
+// radiance is at most its brightest patch's, its first: a patch under kFlareBrightRadiance only
+// joins a cluster, never starts one (one that would be dropped), so a dim sky costs no clustering.
 void addClusters(const Patches& patches, const char* what, std::vector<Candidate>& out) {
+    constexpr double kPatchSolidAngle = kFlarePatchRadians * kFlarePatchRadians;
     std::vector<const Patch*> order;
     for (const auto& [cell, patch] : patches) order.push_back(&patch);
     std::stable_sort(order.begin(), order.end(), [](const Patch* a, const Patch* b) { return a->weight > b->weight; });
@@ -71,6 +74,7 @@ void addClusters(const Patches& patches, const char* what, std::vector<Candidate
         std::size_t k = 0;
         while (k < clusters.size() && std::acos(std::min(1.0f, dot(d, patchDirection(clusters[k])))) >= kFlareCompactRadians) ++k;
         if (k == clusters.size()) {
+            if (p->weight < kFlareBrightRadiance * kPatchSolidAngle) continue;
             clusters.emplace_back();
             counts.push_back(0);
         }
@@ -81,7 +85,7 @@ void addClusters(const Patches& patches, const char* what, std::vector<Candidate
         ++counts[k];
     }
     for (std::size_t k = 0; k < clusters.size(); ++k)
-        out.push_back(patchCandidate(clusters[k], counts[k] * kFlarePatchRadians * kFlarePatchRadians, what));
+        out.push_back(patchCandidate(clusters[k], counts[k] * kPatchSolidAngle, what));
 }
 
 std::vector<Candidate> candidates(const SceneGeometry& geometry, Vec3f p) {
