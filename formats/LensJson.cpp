@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "trace/ThinFilm.h"
+
 namespace lenslab {
 
 namespace {
@@ -14,7 +16,8 @@ nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
     using nlohmann::json;
     const FirstOrder& fo = a.firstOrder;
     json surfaces = json::array();
-    for (const Surface& s : a.lens.surfaces) {
+    for (std::size_t i = 0; i < a.lens.surfaces.size(); ++i) {
+        const Surface& s = a.lens.surfaces[i];
         const Medium& m = s.mediumAfter;
         json surface = {{"z", s.z},
                         {"radius", s.radius},
@@ -28,7 +31,10 @@ nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
                         {"vd", isDispersive(m) ? json(abbeNumber(m)) : json(nullptr)},
                         {"conic", s.conic},
                         {"aspheric", s.aspheric},
-                        {"mirror", s.mirror}};
+                        {"mirror", s.mirror},
+                        {"coating", s.coating.text},
+                        {"coating_default", s.coating.isDefault},
+                        {"reflectance", surfaceResponse(a.lens, int(i), true, 1, a.lens.wavelength).reflectance}};
         if (s.obscurationRadius > 0) surface["obscuration_diameter"] = 2 * s.obscurationRadius;
         surfaces.push_back(surface);
     }

@@ -88,6 +88,7 @@ std::string lensAnalysisText(const LensAnalysis& a) {
         if (s.conic != 0) notes += "  conic " + formatNumber(s.conic);
         if (s.isAspheric()) notes += "  asphere";
         if (s.obscurationRadius > 0) notes += "  obscuration " + formatNumber(2 * s.obscurationRadius) + " mm";
+        if (!s.coating.bare()) notes += "  coat " + s.coating.text + (s.coating.isDefault ? " (default)" : "");
         std::snprintf(b, sizeof b, "  %3zu  %12.4f  %13.4f  %7.4f  %14.4f", i + 1, s.z, s.radius, s.indexAfter,
                       2 * s.apertureRadius);
         out += b + notes + "\n";

@@ -94,6 +94,24 @@ void checkSagDefined(const LensTable& table, const LensTableRow& r, const Surfac
     throw LensTableError(table.name, r.line, msg.str());
 }
 
+// The row's coating, or the default for a real lens: MgF2 on surfaces between air and glass.
+Coating coatingOf(const LensTable& table, const LensTableRow& r, const LensSystem& lens, int i) {
+    const Surface& s = lens.surfaces[i];
+    if (!r.coating.empty()) {
+        if (s.mirror) throw LensTableError(table.name, r.line, "coating '" + r.coating + "' on a mirror: only refracting surfaces take an anti-reflection coating");
+        try {
+            return parseCoating(r.coating);
+        } catch (const CoatingError& e) {
+            throw LensTableError(table.name, r.line, e.what());
+        }
+    }
+    const bool airBefore = lens.indexBefore(i) == 1.0, airAfter = s.indexAfter == 1.0;
+    if (s.mirror || airBefore == airAfter) return Coating{};
+    Coating c = parseCoating(kDefaultCoatingText);
+    c.isDefault = true;
+    return c;
+}
+
 }  // namespace
 
 bool Surface::isAspheric() const {
@@ -190,6 +208,7 @@ LensSystem buildLensSystem(const LensTable& table) {
                              table.format == "zmx" ? "no aperture stop: no surface is marked STOP"
                                                    : "no aperture stop: one row must have radius 0 and N 0");
     lens = atWavelength(lens, lens.wavelength);
+    for (int i = 0; i < n; ++i) lens.surfaces[i].coating = coatingOf(table, rows[i], lens, i);
     if (lens.surfaces.back().indexAfter != 1.0)
         throw LensTableError(table.name, rows.back().line,
                              "the last surface must leave the ray in air (N 0 or 1) before the film");

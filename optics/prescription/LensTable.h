@@ -50,6 +50,9 @@ struct LensTableRow {
     AsphericCoefficients aspheric{};   // even-asphere terms, all 0 for a conic or sphere
     bool mirror = false;               // reflects instead of refracting
     double obscurationDiameter = 0;    // central obscuration (mm); rays inside it are blocked
+    // The coating as written (prescription/Coating.h); empty: the file says nothing, and
+    // buildLensSystem applies the default (a real lens's air-glass surfaces are coated).
+    std::string coating;
     bool isStop() const { return stop; }
 };
 

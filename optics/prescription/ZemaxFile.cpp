@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "prescription/Coating.h"
 #include "prescription/TextEncoding.h"
 #include "prescription/Wavelength.h"
 
@@ -50,6 +51,7 @@ struct RawSurface {
     double apertureRadius = 0;     // CLAP/FLAP maximum radius; 0: none
     double obscurationRadius = 0;  // OBSC, or CLAP's minimum radius
     int stopLine = 0;
+    std::string coating;           // COAT, as written
 };
 
 struct Wavelength { double micrometres; double weight; int line; };
@@ -213,6 +215,19 @@ void readGlas(Reader& r, const Line& l) {
     if (s.nd != 0 && s.nd < 1) r.fail(l.number, "GLAS " + name + ": nd " + l.fields[3] + " is below 1");
 }
 
+// COAT name: lenslab's coating text (prescription/Coating.h), which covers the names of single
+// materials Zemax uses (MGF2); coatings defined only in a COATING.DAT file are refused by name.
+void readCoat(Reader& r, const Line& l) {
+    RawSurface& s = r.surface(l);
+    s.coating = trimmed(l.rest);
+    if (s.coating.empty()) return;  // a blank coating column
+    try {
+        parseCoating(s.coating);
+    } catch (const CoatingError& e) {
+        r.fail(l.number, std::string(e.what()) + "; lenslab does not read Zemax's COATING.DAT");
+    }
+}
+
 void readDiam(Reader& r, const Line& l) { r.surface(l).semiDiameter = r.number(l, 0); }
 void readMema(Reader& r, const Line& l) { r.surface(l).mechanicalSemiDiameter = r.number(l, 0); }
 
@@ -279,7 +294,7 @@ const std::unordered_map<std::string, Handler>& handlers() {
         {"FLAP", readCircularAperture}, {"OBSC", readObsc}, {"DECX", readDecenterOrTilt},
         {"DECY", readDecenterOrTilt}, {"TILT", readDecenterOrTilt}, {"SCBD", readScbd},
         {"OBDC", readObdc}, {"GRIN", refuseGrin}, {"SQAP", refuseNonCircularAperture},
-        {"ELAP", refuseNonCircularAperture},
+        {"ELAP", refuseNonCircularAperture}, {"COAT", readCoat},
     };
     return table;
 }
@@ -346,6 +361,7 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const Len
     setMedium(row, s, before);
     row.conic = s.conic;
     row.aspheric = asphericTerms(r, s);
+    row.coating = s.coating;
     // The clear aperture is DIAM (Zemax's semi-diameter); a circular aperture overrides it, and the
     // mechanical semi-diameter stands in where DIAM is 0.
     const double semi = s.apertureRadius > 0 ? s.apertureRadius
