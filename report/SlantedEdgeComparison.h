@@ -52,8 +52,9 @@ struct EdgeComparison {
     double maxDifference = 0;         // |measured - predicted| up to half the pixel Nyquist
 };
 
-// Throws SettingError, OpticsError or SceneError (bad lens or settings), std::invalid_argument
-// (no edge in the crop), std::runtime_error when the edge found is not the chart's (the scene and
+// Throws SettingError, OpticsError or SceneError (bad lens or settings), std::out_of_range when the
+// edge's image leaves the film, std::invalid_argument (no edge in the crop), std::runtime_error when
+// the analysis traces no ray at the edge's field or the edge found is not the chart's (the scene and
 // the layout above disagree).
 EdgeComparison compareSlantedEdge(const EdgeCase& c);
 

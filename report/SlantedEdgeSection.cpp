@@ -4,8 +4,6 @@
 
 #include "MarkupText.h"
 #include "SiteFiles.h"
-#include "SlantedEdgeComparison.h"
-#include "SvgPlot.h"
 #include "prescription/NumberText.h"
 
 namespace lenslab {
@@ -34,36 +32,15 @@ const std::vector<SectionLens>& sectionLenses() {
     return lenses;
 }
 
-const char* directionName(MtfDirection d) { return d == MtfDirection::Sagittal ? "sagittal" : "tangential"; }
-
 std::string edgeName(const SectionLens& lens, const EdgeChoice& e) {
-    return std::string(lens.id) + "-" + std::to_string(e.chartStep) + "-" + directionName(e.direction);
-}
-
-Plot edgePlot(const EdgeComparison& e, const std::string& lensId, const std::string& id) {
-    Plot p;
-    p.id = id;
-    p.title = lensId + ", " + formatFixed(e.fieldDegrees, 1) + "\u00b0 " + directionName(e.direction) + ", f/" + formatFNumber(e.fstop);
-    p.x.label = "spatial frequency (lp/mm); pixel Nyquist " + formatNumber(0.5 / e.pixelMm);
-    p.y.label = "modulation";
-    p.x.min = 0;
-    p.x.max = 0.5 / e.pixelMm;
-    p.y.min = 0;
-    p.y.max = 1;
-    p.series.push_back({"render: e-SFR", e.frequencies, e.measured, SeriesStyle::Markers});
-    p.series.push_back({"analysis \u00d7 pixel", e.frequencies, e.predicted});
-    p.series.push_back({"analysis (geometric, film)", e.frequencies, e.lens, SeriesStyle::Line, true});
-    p.series.push_back({"pixel (square)", e.frequencies, e.pixel, SeriesStyle::Line, true});
-    const double half = 0.25 / e.pixelMm;
-    p.series.push_back({"half Nyquist", {half, half}, {0, 1}, SeriesStyle::Line, true});
-    return p;
+    return std::string(lens.id) + "-" + std::to_string(e.chartStep) + "-" + edgeDirectionName(e.direction);
 }
 
 EdgePlot edgeItem(ItemRunner& runner, const SceneSource& chart, const LensEntry& lens, const SectionLens& choice,
                   const EdgeChoice& edge, const EdgeCase& settings) {
     EdgePlot out;
     out.lensId = lens.facts.id;
-    out.direction = directionName(edge.direction);
+    out.direction = edgeDirectionName(edge.direction);
     const std::string name = edgeName(choice, edge);
     const std::string file = "assets/slanted-edge/" + name + ".svg";
     InputsHash h = itemInputs("slanted-edge");
@@ -78,7 +55,7 @@ EdgePlot edgeItem(ItemRunner& runner, const SceneSource& chart, const LensEntry&
         c.chartStep = edge.chartStep;
         c.direction = edge.direction;
         const EdgeComparison e = compareSlantedEdge(c);
-        writeSiteFile(runner.site(), file, svgPlot(edgePlot(e, lens.facts.id, "edge-" + name)));
+        writeSiteFile(runner.site(), file, svgPlot(slantedEdgePlot(e, lens.facts.id, "edge-" + name)));
         ManifestItem m;
         m.files = {file};
         m.data = {{"field_deg", e.fieldDegrees}, {"fstop", e.fstop}, {"max_difference", e.maxDifference}};
@@ -96,6 +73,27 @@ EdgePlot edgeItem(ItemRunner& runner, const SceneSource& chart, const LensEntry&
 }
 
 }  // namespace
+
+const char* edgeDirectionName(MtfDirection d) { return d == MtfDirection::Sagittal ? "sagittal" : "tangential"; }
+
+Plot slantedEdgePlot(const EdgeComparison& e, const std::string& lensId, const std::string& id) {
+    Plot p;
+    p.id = id;
+    p.title = lensId + ", " + formatFixed(e.fieldDegrees, 1) + "\u00b0 " + edgeDirectionName(e.direction) + ", f/" + formatFNumber(e.fstop);
+    p.x.label = "spatial frequency (lp/mm); pixel Nyquist " + formatNumber(0.5 / e.pixelMm);
+    p.y.label = "modulation";
+    p.x.min = 0;
+    p.x.max = 0.5 / e.pixelMm;
+    p.y.min = 0;
+    p.y.max = 1;
+    p.series.push_back({"render: e-SFR", e.frequencies, e.measured, SeriesStyle::Markers});
+    p.series.push_back({"analysis \u00d7 pixel", e.frequencies, e.predicted});
+    p.series.push_back({"analysis (geometric, film)", e.frequencies, e.lens, SeriesStyle::Line, true});
+    p.series.push_back({"pixel (square)", e.frequencies, e.pixel, SeriesStyle::Line, true});
+    const double half = 0.25 / e.pixelMm;
+    p.series.push_back({"half Nyquist", {half, half}, {0, 1}, SeriesStyle::Line, true});
+    return p;
+}
 
 int slantedEdgeItemCount(const std::vector<std::string>& lensIds) {
     int count = 0;

@@ -10,8 +10,17 @@
 #include "ItemRunner.h"
 #include "ReportContent.h"
 #include "SceneFiles.h"
+#include "SlantedEdgeComparison.h"
+#include "SvgPlot.h"
 
 namespace lenslab {
+
+// "tangential" | "sagittal"
+const char* edgeDirectionName(MtfDirection d);
+
+// One comparison's plot: the render's e-SFR as markers over the analysis times the pixel, with the
+// two factors and half the pixel Nyquist dashed; lp/mm from 0 to the pixel Nyquist.
+Plot slantedEdgePlot(const EdgeComparison& e, const std::string& lensId, const std::string& id);
 
 // Items this section makes for the report's lenses (for the progress count).
 int slantedEdgeItemCount(const std::vector<std::string>& lensIds);
