@@ -94,12 +94,13 @@ PolarFrame passingFrame(const LensSystem& lens, const FieldAim& aim) {
     constexpr int kGrid = 11;
     std::vector<Point2> passing;
     int total = 0;
+    AimGuess guess;  // each grid point aimed from the last one's solution
     for (int j = 0; j < kGrid; ++j)
         for (int i = 0; i < kGrid; ++i) {
             const Point2 p{-1 + 2.0 * (i + 0.5) / kGrid, -1 + 2.0 * (j + 0.5) / kGrid};
             if (p.x * p.x + p.y * p.y > 1) continue;
             ++total;
-            const std::optional<Ray> in = aimedRay(lens, aim, p.x, p.y);
+            const std::optional<Ray> in = aimedRay(lens, aim, p.x, p.y, &guess);
             if (in && traceRay(lens, *in, TraceDirection::SceneToFilm).ok()) passing.push_back(p);
         }
     PolarFrame frame;
