@@ -88,10 +88,10 @@ Plot slantedEdgePlot(const EdgeComparison& e, const std::string& lensId, const s
     p.y.max = 1;
     p.series.push_back({"render: e-SFR", e.frequencies, e.measured, SeriesStyle::Markers});
     p.series.push_back({"analysis \u00d7 pixel", e.frequencies, e.predicted});
-    p.series.push_back({"analysis (geometric, film)", e.frequencies, e.lens, SeriesStyle::Line, true});
-    p.series.push_back({"pixel (square)", e.frequencies, e.pixel, SeriesStyle::Line, true});
+    p.series.push_back({"analysis (geometric, film)", e.frequencies, e.lens, SeriesStyle::Line, LineDash::Dashed});
+    p.series.push_back({"pixel (square)", e.frequencies, e.pixel, SeriesStyle::Line, LineDash::Dashed});
     const double half = 0.25 / e.pixelMm;
-    p.series.push_back({"half Nyquist", {half, half}, {0, 1}, SeriesStyle::Line, true});
+    p.series.push_back({"half Nyquist", {half, half}, {0, 1}, SeriesStyle::Line, LineDash::Dashed});
     return p;
 }
 
