@@ -1,8 +1,8 @@
 #pragma once
 // Tight bounds of the exit pupil as seen from each film radius, for aiming camera rays.
 //
-// From a film point, the rays that pass the whole lens cross a plane behind the lens (the aiming
-// plane, at the rear vertex) inside a region: the stop's image cut by the rims of the other
+// From a film point, the rays that pass the whole lens cross a plane (the aiming plane: the rear
+// vertex's, or the front vertex's behind a cover glass, ExitPupilBounds.cpp) inside a region: the stop's image cut by the rims of the other
 // elements (the "cat's eye" of vignetting). A box around that region wastes a quarter of the rays
 // on a double Gauss; here each region is a star-shaped polygon around its centroid, measured at a
 // set of film radii with the exact trace, interpolated linearly between them and widened by a
@@ -44,7 +44,7 @@ public:
 
 struct ExitPupilBounds {
     double filmZ = 0;          // film plane
-    double aimZ = 0;           // aiming plane (rear vertex)
+    double aimZ = 0;           // aiming plane (the rear vertex's, or the front one's behind a cover glass)
     // Film radii measured: (firstRadius + i) * radiusStep for i < radiusCount(). A crop window
     // needs a ring of them; the same step keeps its regions identical to the whole frame's.
     double radiusStep = 0;
