@@ -137,6 +137,7 @@ RenderSettings renderSettings(const ArgParser& p) {
         if (v != "on" && v != "off") throw UsageError("render: --spectral must be on or off, got '" + v + "'");
         s.camera.spectral = v == "on";
     }
+    if (auto v = p.integer("--wavelengths-per-sample")) s.wavelengthsPerSample = int(*v);
     return s;
 }
 
@@ -174,8 +175,9 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.option("--seed", "N", "random seed (default 0)");
     p.option("--exposure", "E", "PNG exposure scale (default 1)");
     p.option("--lens", "FILE", "realistic camera: lens table or .zmx prescription instead of the scene's specfile");
-    p.option("--spectral", "on|off", "a wavelength per sample through the lens's dispersion, the film through the CIE "
+    p.option("--spectral", "on|off", "wavelengths per sample through the lens's dispersion, the film through the CIE "
              "matching functions (default: on when the lens disperses and no --wavelength is given)");
+    p.option("--wavelengths-per-sample", "N", "spectral: wavelengths each camera sample carries, 1 to 8 (default 3)");
     declareLensFlags(p);
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
     p.option("--layout", "L", "realistic camera: the --lens table's layout, gap-before | gap-after (default: detect)");
