@@ -177,7 +177,7 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.option("--lens", "FILE", "realistic camera: lens table or .zmx prescription instead of the scene's specfile");
     p.option("--spectral", "on|off", "wavelengths per sample through the lens's dispersion, the film through the CIE "
              "matching functions (default: on when the lens disperses and no --wavelength is given)");
-    p.option("--wavelengths-per-sample", "N", "spectral: wavelengths each camera sample carries, 1 to 8 (default 3)");
+    p.option("--wavelengths-per-sample", "N", "spectral: wavelengths each camera sample carries, 1 to 8 (default 3, 1 with the box filter)");
     declareLensFlags(p);
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
     p.option("--layout", "L", "realistic camera: the --lens table's layout, gap-before | gap-after (default: detect)");

@@ -108,6 +108,21 @@ TEST(SpectralCamera, SeveralWavelengthsPerSampleGiveTheOneWavelengthPicture) {
     EXPECT_LT(measured, 1.3 * expected);
 }
 
+// Unless told, a spectral frame takes three wavelengths a sample with a smooth filter and one with
+// the box (whose hard borders make the others' moves noisier than they save: bench/README.md).
+TEST(SpectralCamera, WavelengthsPerSampleFollowTheFilterUnlessTold) {
+    test::TempDir dir;
+    const std::string box = cards("dgauss-glass.dat"), boxFilter = "PixelFilter \"box\"";
+    const std::string gaussian = std::string(box).replace(box.find(boxFilter), boxFilter.size(), "PixelFilter \"gaussian\"");
+    const auto film = [&](const std::string& name, const std::string& scene, int perSample) {
+        return renderWith(dir.write(name, scene), 16, 12, 1, true, 1, std::nullopt, perSample).metadata.at("film");
+    };
+    EXPECT_EQ(film("box.pbrt", box, 0).rfind("spectral: wavelengths per sample 1 ", 0), 0u);
+    EXPECT_EQ(film("gaussian.pbrt", gaussian, 0).rfind("spectral: wavelengths per sample 3 ", 0), 0u);
+    EXPECT_EQ(film("box4.pbrt", box, 4).rfind("spectral: wavelengths per sample 4 ", 0), 0u);
+    EXPECT_THROW(film("box9.pbrt", box, 9), SceneError);
+}
+
 TEST(SpectralCamera, GreyCardStaysNeutralThroughADispersiveLens) {
     test::TempDir dir;
     const std::string scene = dir.write(

@@ -26,8 +26,9 @@ constexpr int kCameraBatchRays = 256;  // camera rays made together (a run of pi
 const RenderSettings& checked(const RenderSettings& s) {
     if (s.tileSize < 1 || s.tileSize > 4096) throw SceneError("tile size must lie in [1, 4096] pixels");
     if (s.threads < 0 || s.threads > 1024) throw SceneError("thread count must lie in [0, 1024]");
-    if (s.wavelengthsPerSample < 1 || s.wavelengthsPerSample > kMaxWavelengthsPerSample)
-        throw SceneError("wavelengths per sample must lie in [1, " + std::to_string(kMaxWavelengthsPerSample) + "]");
+    if (s.wavelengthsPerSample < 0 || s.wavelengthsPerSample > kMaxWavelengthsPerSample)
+        throw SceneError("wavelengths per sample must lie in [1, " + std::to_string(kMaxWavelengthsPerSample) +
+                         "] (0: the film's choice)");
     return s;
 }
 
@@ -109,7 +110,8 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     });
     integrator_ = makeIntegrator(*geometry_, scene_.integrator, scene_.camera.medium.get());
     spectral_ = settings.camera.spectral.value_or(camera_->spectral());
-    wavelengths_ = spectral_ ? settings.wavelengthsPerSample : 0;
+    const int byFilter = scene_.filter.type == FilterType::Box ? 1 : 3;
+    wavelengths_ = spectral_ ? (settings.wavelengthsPerSample > 0 ? settings.wavelengthsPerSample : byFilter) : 0;
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
@@ -241,8 +243,8 @@ std::map<std::string, std::string> PreparedFrame::metadata() const {
     m["integrator"] = std::string(kIntegrators[int(scene_.integrator.type)]) + " maxdepth " +
                       std::to_string(scene_.integrator.maxDepth);
     m["units"] = "world metres, lens millimetres";
-    m["film"] = spectral_ ? "spectral: " + std::to_string(wavelengths_) +
-                                " wavelengths per sample (hero-wavelength MIS through the lens), RGB radiance to "
+    m["film"] = spectral_ ? "spectral: wavelengths per sample " + std::to_string(wavelengths_) +
+                                " (hero-wavelength MIS through the lens), RGB radiance to "
                                 "spectrum by Smits (1999), CIE 1931 matching functions (Wyman, Sloan & Shirley 2013 "
                                 "fit), linear Rec. 709"
                           : "RGB, linear Rec. 709";
