@@ -4,6 +4,7 @@
 
 #include "firstorder/Aperture.h"
 #include "firstorder/Chromatic.h"
+#include "firstorder/FieldOfView.h"
 #include "firstorder/FirstOrder.h"
 #include "firstorder/Focus.h"
 #include "settings/LensSettings.h"
@@ -22,7 +23,8 @@ struct LensAnalysis {
     Pupils pupils;            // at this stop opening
     ThickLens thick;
     FocusResult focus;
-    Chromatic chromatic;      // F, d and C at this focus
+    FieldOfView field;        // the lens's largest field, at its primary wavelength
+    Chromatic chromatic;      // F, d and C at this focus; lateral colour at the largest field
 };
 
 // The one check of lens settings: the wavelength within 360-830 nm, the aperture within [the lens's widest, f/64] (or a stop diameter
