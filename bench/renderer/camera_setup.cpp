@@ -1,7 +1,7 @@
 // What a frame's setup costs through each lens, as CPU seconds measured in one run: the shared
 // world (scenes/shared-dgauss.pbrt) at 160 x 160 through dgauss.50mm and through the Sony 55 mm
-// (.zmx, five aspheres, a cover glass 1 mm before the film, dispersive: its bounds hold 360 to
-// 830 nm), one thread, the lenses interleaved round by round so that load from other processes
+// (.zmx, five aspheres, a cover glass 1 mm before the film, dispersive: its bounds are measured per
+// band of wavelengths from 360 to 830 nm), one thread, the lenses interleaved round by round so that load from other processes
 // falls on both alike, best of the rounds. The setup is PreparedFrame's (scene parse, camera:
 // focus, exit-pupil bounds, wavelength tables; Embree); the scene's share is the perspective row.
 //   camera_setup [rounds=3]
