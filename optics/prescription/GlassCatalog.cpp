@@ -204,6 +204,7 @@ GlassLookup findGlass(const std::string& name, const std::vector<std::string>& p
     lookup.searched.resize(kMakers.size());
     for (std::size_t m = 0; m < kMakers.size(); ++m) lookup.searched[position[m]] = kMakers[m].name;
 
+    if (name.size() > kMaxGlassNameLength) return lookup;
     const std::string key = nameKey(name);
     std::optional<std::size_t> best;
     std::tuple<std::size_t, int, std::size_t, std::string_view> bestRank;

@@ -51,6 +51,10 @@ Medium mediumOf(const LensTable& table, const LensTableRow& r) {
     if (!r.glass.empty()) {
         const GlassLookup found = findGlass(r.glass, table.catalogs);
         if (!found.glass) {
+            if (r.glass.size() > kMaxGlassNameLength)
+                throw LensTableError(table.name, r.line, "a glass name of " + std::to_string(r.glass.size()) +
+                                                             " characters: catalog names have at most " +
+                                                             std::to_string(kMaxGlassNameLength));
             std::string msg = "unknown glass '" + r.glass + "' (searched " + joined(found.searched) + ")";
             if (!found.suggestions.empty()) msg += "; nearest: " + joined(found.suggestions);
             msg += "; give its nd and Vd instead to use a model glass";
