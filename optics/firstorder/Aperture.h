@@ -16,9 +16,13 @@ struct ApertureRange {
     double fstopMin = 0;                // the widest the lens allows (table stop or an element clips)
     double fstopMax = kNarrowestFstop;  // or fstopMin, for a lens slower than that at its widest
     double stopDiameterMax = 0;   // the stop opening at fstopMin, mm
+    // The cones pass the stop alone: the other apertures block the axis (an off-axis section of a
+    // design used at its off-axis fields), so the stop sets the f-number.
+    bool stopOnly = false;
 };
 
-// Finds the widest cone from F' that passes every surface with the stop at its table diameter.
+// Finds the widest cone from F' that passes every surface with the stop at its table diameter (or,
+// when no cone passes, the stop alone).
 ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo);
 
 // The stop diameter (mm) for a requested f-number: the marginal ray leaving F' at theta =
