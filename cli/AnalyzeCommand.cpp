@@ -28,6 +28,8 @@ DesignAnalysisInputs analysisFlags(const ArgParser& p) {
             in.fields = fields.values;
             in.fieldsInDegrees = fields.degrees;
         }
+        if (p.has("--image-plane")) in.imagePlane = parseImagePlaneInput(p.get("--image-plane"), "--image-plane");
+        if (p.has("--reference")) in.reference = parseSpotReferenceInput(p.get("--reference"), "--reference");
     } catch (const InputListError& e) {
         throw UsageError(std::string("analyze: ") + e.what());
     }
@@ -36,14 +38,20 @@ DesignAnalysisInputs analysisFlags(const ArgParser& p) {
 }
 
 void printSummary(const LensDesignAnalysis& a) {
-    std::cout << a.lens.lens.name << " at f/" << formatFNumber(a.lens.fstop) << ", image plane z "
-              << formatFixed(a.imageZ, 4) << " mm, largest field " << formatFixed(a.largestFieldDegrees, 2) << " deg\n";
-    std::cout << "field (deg)  wavelength (nm)  RMS spot (um)  geo spot (um)  RMS wavefront (waves)\n";
-    for (const FieldAnalysis& f : a.fields)
+    std::cout << a.lens.lens.name << ": " << analysisSettingsText(a) << "\n";
+    std::cout << "image planes: paraxial z " << formatFixed(a.planes.paraxialZ, 4) << ", film " << formatFixed(a.planes.filmZ, 4)
+              << ", best " << formatFixed(a.planes.bestZ, 4) << " mm\n";
+    std::cout << "field (deg)  wavelength (nm)  RMS spot (um)  geo spot (um)  transmitted  RMS wavefront (waves)\n";
+    for (const FieldAnalysis& f : a.fields) {
         for (std::size_t j = 0; j < f.spots.size(); ++j)
             std::cout << formatFixed(f.fieldDegrees, 2) << "  " << formatFixed(f.spots[j].wavelength, 1) << "  "
-                      << formatFixed(f.spots[j].rmsRadius * 1000, 2) << "  " << formatFixed(f.spots[j].geometricRadius * 1000, 2)
-                      << "  " << formatFixed(f.rmsWavefrontWaves[j], 3) << "\n";
+                      << formatFixed(f.spots[j].statistics.rmsRadius * 1000, 2) << "  "
+                      << formatFixed(f.spots[j].statistics.geometricRadius * 1000, 2) << "  "
+                      << formatFixed(f.spots[j].transmission, 3) << "  " << formatFixed(f.rmsWavefrontWaves[j], 3) << "\n";
+        std::cout << formatFixed(f.fieldDegrees, 2) << "  polychromatic  " << formatFixed(f.polychromatic.rmsRadius * 1000, 2)
+                  << "  " << formatFixed(f.polychromatic.geometricRadius * 1000, 2) << (f.traced ? "" : "  (no ray reaches the image)")
+                  << "\n";
+    }
     std::cout << "field (deg)  distortion (%)  relative illumination\n";
     for (const FieldAnalysis& f : a.fields)
         std::cout << formatFixed(f.fieldDegrees, 2) << "  " << formatFixed(f.distortionPercent, 3) << "  "
@@ -68,16 +76,18 @@ void writeOutputFolder(const LensDesignAnalysis& a, const std::string& folder) {
 
 int runAnalyzeCommand(const std::vector<std::string>& args) {
     ArgParser p("analyze",
-                "LENS [--fstop N] [--focus MM|inf] [--wavelengths F,d,C|NM,...] [--fields 0,0.7,1|DEGdeg,...] [--json] [-o DIR]",
-                "The lens designer's analysis on the film plane focused at the d line: spot diagrams, ray fans,\n"
-                "geometric and diffraction MTF per field; field curvature, distortion, relative illumination and\n"
-                "chromatic focal shift. Fields are fractions of the largest field whose chief ray passes, or degrees\n"
-                "with 'deg'. -o writes analysis.json and SVG plots into DIR.");
+                "LENS [--fstop N] [--focus MM|inf] [--wavelengths F,d,C|NM,...] [--fields 0,0.7,1|DEGdeg,...] [--image-plane P] [--reference R] [--json] [-o DIR]",
+                "The lens designer's analysis: spot diagrams, ray fans, geometric and diffraction MTF per field;\n"
+                "field curvature, distortion, relative illumination and chromatic focal shift. Each number's\n"
+                "definition is in docs/analysis.md and in the JSON. Fields are fractions of the largest field (the\n"
+                "lens's own: see 'lenslab lens'), or degrees with 'deg'. -o writes analysis.json and SVG plots into DIR.");
     p.positional("LENS", "lens table (.dat) or Zemax file (.zmx)");
     declareLensFlags(p);
     p.option("--wavelengths", "LIST", "F, d, C or nm, comma-separated (default F,d,C; at most 16)");
     p.option("--fields", "LIST", "fractions of the largest field, or degrees with 'deg' (default 0,0.7,1; at most 16)");
-    p.option("--max-frequency", "LPMM", "the MTF's largest frequency (default: the diffraction cutoff 1/(lambda N))");
+    p.option("--max-frequency", "LPMM", "the MTF's largest frequency (default 200, or the diffraction cutoff 1/(lambda N) when lower)");
+    p.option("--image-plane", "PLANE", "paraxial, film (default: where the camera focuses) or best (least RMS over the fields)");
+    p.option("--reference", "POINT", "spot radii about the centroid (default) or the chief ray");
     p.flag("--json", "print the analysis as one JSON object");
     p.option("-o", "DIR", "write analysis.json and the plots (SVG) into DIR");
     if (!p.parse(args)) {

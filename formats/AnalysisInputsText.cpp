@@ -63,4 +63,14 @@ FieldList parseFieldList(const std::string& text, const std::string& source) {
     return fields;
 }
 
+ImagePlane parseImagePlaneInput(const std::string& text, const std::string& source) {
+    if (const std::optional<ImagePlane> plane = parseImagePlane(text)) return *plane;
+    throw InputListError(source + ": the image plane is paraxial, film or best");
+}
+
+SpotReference parseSpotReferenceInput(const std::string& text, const std::string& source) {
+    if (const std::optional<SpotReference> reference = parseSpotReference(text)) return *reference;
+    throw InputListError(source + ": the reference point is centroid or chief");
+}
+
 }  // namespace lenslab

@@ -1,10 +1,13 @@
 #pragma once
 // The analysis inputs as people type them, the same on the command line and in query parameters:
 // wavelengths "F,d,C" or "486.1,587.6" (Fraunhofer letters or nm), fields "0,0.7,1" (fractions of
-// the largest field) or "0,10,20deg" (degrees: a trailing "deg" on the list or any value).
+// the largest field) or "0,10,20deg" (degrees: a trailing "deg" on the list or any value), the image
+// plane and the spots' reference point by name.
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "analysis/LensDesignAnalysis.h"
 
 namespace lenslab {
 
@@ -21,5 +24,9 @@ struct FieldList {
     bool degrees = false;
 };
 FieldList parseFieldList(const std::string& text, const std::string& source);
+
+// "paraxial", "film" or "best"; "centroid" or "chief".
+ImagePlane parseImagePlaneInput(const std::string& text, const std::string& source);
+SpotReference parseSpotReferenceInput(const std::string& text, const std::string& source);
 
 }  // namespace lenslab

@@ -1,5 +1,6 @@
 #include "AnalysisJson.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lenslab {
@@ -18,13 +19,22 @@ json numbers(const std::vector<double>& values) {
 
 json point(Point2 p) { return json::array({p.x, p.y}); }
 
+json statisticsJson(const SpotStatistics& s) {
+    return {{"rms_radius_mm", s.rmsRadius}, {"geo_radius_mm", s.geometricRadius}, {"centroid_mm", point(s.centroid)}};
+}
+
 json spotJson(const SpotDiagram& s) {
     json points = json::array();
     const std::size_t step = (s.points.size() + kMaxJsonSpotPoints - 1) / kMaxJsonSpotPoints;
     for (std::size_t k = 0; k < s.points.size(); k += std::max<std::size_t>(step, 1)) points.push_back(point(s.points[k]));
-    return {{"wavelength_nm", s.wavelength},  {"rms_radius_mm", s.rmsRadius}, {"geo_radius_mm", s.geometricRadius},
-            {"centroid_mm", point(s.centroid)}, {"rays_launched", s.raysLaunched}, {"rays_passed", s.points.size()},
-            {"points", points}};
+    json out = statisticsJson(s.statistics);
+    out.update({{"wavelength_nm", s.wavelength},
+                {"transmission", s.transmission},
+                {"rays_launched", s.raysLaunched},
+                {"rays_passed", s.points.size()},
+                {"pupil_sampling", {{"rings", s.sampling.rings}, {"azimuths", s.sampling.azimuths}, {"change_on_doubling", s.samplingChange}}},
+                {"points", points}});
+    return out;
 }
 
 json fanJson(const RayFan& f) {
@@ -36,8 +46,12 @@ json fieldJson(const FieldAnalysis& f, const LensDesignAnalysis& a) {
     json spots = json::array();
     for (const SpotDiagram& s : f.spots) spots.push_back(spotJson(s));
     return {{"field_deg", f.fieldDegrees},
-            {"chief_ray_image_mm", point(f.reference)},
+            {"traced", f.traced},
+            {"image_height_mm", std::hypot(f.chiefImage.x, f.chiefImage.y)},
+            {"chief_ray_image_mm", point(f.chiefImage)},
+            {"reference_mm", point(f.reference)},
             {"spots", spots},
+            {"polychromatic", statisticsJson(f.polychromatic)},
             {"rms_wavefront_waves", numbers(f.rmsWavefrontWaves)},
             {"distortion_percent", number(f.distortionPercent)},
             {"relative_illumination", number(f.relativeIllumination)},
@@ -56,6 +70,23 @@ json focalShiftJson(const std::vector<FocalShiftSample>& samples) {
         out["shift_mm"].push_back(s.shift);
     }
     return out;
+}
+
+// What each number means, in words, beside the numbers (docs/analysis.md has the long form).
+json definitionsJson(const LensDesignAnalysis& a) {
+    const bool chief = a.reference == SpotReference::ChiefRay;
+    const char* plane = a.imagePlane == ImagePlane::Paraxial ? "the paraxial image of the plane of focus at the primary wavelength"
+                        : a.imagePlane == ImagePlane::Film   ? "the film as the camera focuses it (least RMS spot on axis at the primary wavelength)"
+                                                             : "least RMS spot over the analysed fields and wavelengths, weighted";
+    return {{"image_plane", plane},
+            {"reference", chief ? "every spot's radii about the primary wavelength's chief ray"
+                                : "each wavelength's radii about its own centroid; the polychromatic spot's about the weighted centroid"},
+            {"pupil_sampling", "area-uniform: Gauss-Legendre rings in r^2 times equally spaced azimuths over the stop (real rays "
+                               "aimed), doubled until the RMS radius moves by at most 0.1%; blocked rays take their area with them"},
+            {"field", "the angle of a distant object's chief ray to the axis in object space"},
+            {"wavelength_weights", "relative weights of the wavelengths in every polychromatic number"},
+            {"mtf", "geometric: the spot's weighted rays; diffraction: the FFT of the pupil function; both polychromatic, "
+                    "sagittal along x, tangential along y"}};
 }
 
 }  // namespace
@@ -97,13 +128,20 @@ json designAnalysisJson(const LensDesignAnalysis& a) {
     return {
         {"name", a.lens.lens.name},
         {"units", "mm, nm, degrees, lp/mm"},
-        {"convention", "lens space: +z toward the scene; image points relative to the d chief ray on the image plane; "
-                       "focus shifts positive toward the lens"},
+        {"convention", "lens space: +z toward the scene; spot points relative to each field's reference point and fan "
+                       "points to its primary chief ray on the image plane; focus shifts positive toward the lens"},
+        {"definitions", definitionsJson(a)},
         {"fstop", a.lens.fstop},
         {"focus_distance", a.lens.focus.infinity ? json(nullptr) : json(a.lens.focus.objectZ - a.lens.lens.frontZ())},
+        {"image_plane", imagePlaneName(a.imagePlane)},
         {"image_z", a.imageZ},
+        {"image_planes", {{"paraxial_z", a.planes.paraxialZ}, {"film_z", a.planes.filmZ}, {"best_z", a.planes.bestZ}}},
+        {"reference", spotReferenceName(a.reference)},
+        {"primary_wavelength_nm", a.primaryWavelength},
         {"efl", a.lens.firstOrder.efl},
-        {"largest_field_deg", a.largestFieldDegrees},
+        {"largest_field_deg", a.largestFieldDegrees ? json(*a.largestFieldDegrees) : json(nullptr)},
+        {"largest_field_source", a.largestFieldSource},
+        {"obscuration", a.obscuration},
         {"wavelengths_nm", a.wavelengths},
         {"weights", a.weights},
         {"fields", fields},

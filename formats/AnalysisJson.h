@@ -1,7 +1,8 @@
 #pragma once
 // The lens designer's analysis as JSON: the shape `lenslab analyze --json` prints, `-o` writes as
 // analysis.json and GET /api/lenses/{id}/analysis serves. Millimetres, nm, degrees, lp/mm; lens
-// space (image points relative to the d line's chief ray on the image plane). NaN becomes null.
+// space (spot and fan points relative to each field's reference point on the image plane). NaN becomes
+// null. Every number's definition (image plane, reference, pupil sampling) travels with it.
 #include <nlohmann/json.hpp>
 
 #include "analysis/LensDesignAnalysis.h"

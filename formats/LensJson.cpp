@@ -150,8 +150,10 @@ nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
           {"object_z", finiteOrNull(a.focus.objectZ)},
           {"image_z", a.focus.imageZExact},
           {"image_z_thick", a.focus.imageZThick},
-          {"image_z_difference", a.focus.difference},
-          {"rms_spot_radius", a.focus.rmsSpotRadius}}},
+          {"image_z_difference", a.focus.difference}}},
+        {"field_of_view",
+         {{"largest_field_deg", a.field.largestDegrees ? json(*a.field.largestDegrees) : json(nullptr)},
+          {"source", a.field.source}}},
         {"chromatic",
          {{"efl_F", c.eflF},
           {"efl_d", c.eflD},
@@ -160,9 +162,9 @@ nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
           {"image_z_d", c.imageZD},
           {"image_z_C", c.imageZC},
           {"longitudinal_colour_mm", c.longitudinalColour},
-          {"lateral_colour_mm", c.lateralColour},
-          {"lateral_colour_field_deg", c.lateralColourFieldDegrees},
-          {"lateral_colour_image_height", c.lateralColourImageHeight}}},
+          {"lateral_colour_mm", c.lateral ? json(c.lateral->mm) : json(nullptr)},
+          {"lateral_colour_field_deg", c.lateral ? json(c.lateral->fieldDegrees) : json(nullptr)},
+          {"lateral_colour_image_height", c.lateral ? json(c.lateral->imageHeight) : json(nullptr)}}},
     });
     return out;
 }

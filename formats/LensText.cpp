@@ -95,9 +95,8 @@ std::string lensAnalysisText(const LensAnalysis& a) {
     if (a.focus.infinity) out += "  object                              infinity\n";
     else line(out, "object distance", a.focus.objectZ - a.lens.frontZ(), "from the front vertex");
     line(out, "film z, thick lens", a.focus.imageZThick);
-    line(out, "film z, exact (best RMS)", a.focus.imageZExact);
+    line(out, "film z, exact", a.focus.imageZExact, "least RMS spot on axis");
     line(out, "exact - thick", a.focus.difference);
-    line(out, "RMS spot radius at best", a.focus.rmsSpotRadius);
     const Chromatic& c = a.chromatic;
     out += "\nColour (F 486.13, d 587.56, C 656.27 nm)\n";
     line(out, "EFL at F", c.eflF);
@@ -107,8 +106,19 @@ std::string lensAnalysisText(const LensAnalysis& a) {
     line(out, "image z at d", c.imageZD);
     line(out, "image z at C", c.imageZC);
     line(out, "longitudinal colour", c.longitudinalColour, "image z C - F");
-    std::snprintf(b, sizeof b, "F - C chief ray at %.2f deg", c.lateralColourFieldDegrees);
-    line(out, "lateral colour", c.lateralColour, b);
+    if (c.lateral) {
+        std::snprintf(b, sizeof b, "F - C chief ray at %.2f deg", c.lateral->fieldDegrees);
+        line(out, "lateral colour", c.lateral->mm, b);
+    } else {
+        std::snprintf(b, sizeof b, "  %-28s none: no largest field\n", "lateral colour");
+        out += b;
+    }
+    out += "\nField of view\n";
+    if (a.field.largestDegrees)
+        std::snprintf(b, sizeof b, "  %-28s %12.4f deg  %s\n", "largest field", *a.field.largestDegrees, a.field.source.c_str());
+    else
+        std::snprintf(b, sizeof b, "  %-28s %s\n", "largest field", a.field.source.c_str());
+    out += b;
     out += "\n" + surfaceTable(a.lens);
     return out;
 }

@@ -45,7 +45,7 @@ Plot spotPlot(const FieldAnalysis& f, const std::string& id) {
     p.height = 380;
     double extent = 0;
     for (const SpotDiagram& s : f.spots) {
-        PlotSeries series = makeSeries(nm(s.wavelength) + ", RMS " + formatNumber(s.rmsRadius * kUm, 3) + " \u00b5m",
+        PlotSeries series = makeSeries(nm(s.wavelength) + ", RMS " + formatNumber(s.statistics.rmsRadius * kUm, 3) + " \u00b5m",
                                        SeriesStyle::Markers);
         series.markerRadius = 1.2;
         for (const Point2& q : s.points) {
@@ -55,7 +55,7 @@ Plot spotPlot(const FieldAnalysis& f, const std::string& id) {
         }
         p.series.push_back(series);
     }
-    // Square and centred on the d chief ray, so the spot's shape is not stretched.
+    // Square and centred on the field's reference point, so the spot's shape is not stretched.
     extent = extent > 0 ? extent * 1.05 : 1;
     p.x.min = p.y.min = -extent;
     p.x.max = p.y.max = extent;
@@ -151,11 +151,24 @@ std::vector<NamedSvg> designAnalysisPlots(const LensDesignAnalysis& a) {
         plots.push_back({"mtf-" + suffix, svgPlot(mtfPlot(a, a.fields[i], "mtf-" + suffix))});
         plots.push_back({"fans-" + suffix, svgPlot(fanPlot(a.fields[i], "fans-" + suffix))});
     }
-    plots.push_back({"field-curvature", svgPlot(fieldCurvaturePlot(a))});
-    plots.push_back({"distortion", svgPlot(distortionPlot(a))});
-    plots.push_back({"relative-illumination", svgPlot(illuminationPlot(a))});
+    if (a.largestFieldDegrees) {  // the curves run from the axis to the largest field
+        plots.push_back({"field-curvature", svgPlot(fieldCurvaturePlot(a))});
+        plots.push_back({"distortion", svgPlot(distortionPlot(a))});
+        plots.push_back({"relative-illumination", svgPlot(illuminationPlot(a))});
+    }
     plots.push_back({"chromatic-focal-shift", svgPlot(focalShiftPlot(a))});
     return plots;
+}
+
+std::string analysisSettingsText(const LensDesignAnalysis& a) {
+    const std::string focus = a.lens.focus.infinity ? "infinity" : formatNumber(a.lens.focus.objectZ - a.lens.lens.frontZ(), 5) + " mm";
+    return std::string("f/") + formatFNumber(a.lens.fstop) + ", focused at " + focus + "; image plane: " +
+           imagePlaneName(a.imagePlane) + " (z " + formatFixed(a.imageZ, 4) + " mm); spot radii about " +
+           (a.reference == SpotReference::ChiefRay ? "the chief ray" : "the centroid") + "; primary wavelength " +
+           formatFixed(a.primaryWavelength, 2) + " nm; largest field " +
+           (a.largestFieldDegrees ? formatFixed(*a.largestFieldDegrees, 2) + "\u00b0 (" + a.largestFieldSource + ")"
+                                  : a.largestFieldSource) +
+           " (docs/analysis.md defines each number).";
 }
 
 }  // namespace lenslab

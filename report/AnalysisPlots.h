@@ -15,4 +15,8 @@ struct NamedSvg {
 
 std::vector<NamedSvg> designAnalysisPlots(const LensDesignAnalysis& analysis);
 
+// The settings every analysis view names beside its numbers: f-number, focus, image plane,
+// reference point, primary wavelength and the largest field with its source.
+std::string analysisSettingsText(const LensDesignAnalysis& analysis);
+
 }  // namespace lenslab

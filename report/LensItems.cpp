@@ -49,7 +49,7 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
         inputs.lens = settings;
         const LensDesignAnalysis a = analyzeLensDesign(loadLensSystem(path), inputs);
         ManifestItem m;
-        m.data = {{"fstop", a.lens.fstop}, {"fields_deg", json::array()}};
+        m.data = {{"fstop", a.lens.fstop}, {"fields_deg", json::array()}, {"settings", analysisSettingsText(a)}};
         for (const FieldAnalysis& f : a.fields) m.data["fields_deg"].push_back(f.fieldDegrees);
         m.files.push_back(folder + "analysis.json");
         writeSiteFile(runner.site(), m.files.back(), designAnalysisJson(a).dump(1) + "\n");
@@ -67,6 +67,7 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
     design.plots.assign(item->files.begin() + 1, item->files.end());
     design.fstop = item->data.value("fstop", 0.0);
     design.fieldsDegrees = item->data.value("fields_deg", std::vector<double>{});
+    design.settings = item->data.value("settings", std::string());
     return design;
 }
 

@@ -40,6 +40,7 @@ struct DesignPlots {
     std::string jsonFile;
     double fstop = 0;
     std::vector<double> fieldsDegrees;  // the spot, MTF and fan plots' fields, in order
+    std::string settings;               // the image plane, reference, focus and largest field, in words
     std::string problem;                // why they are missing
 };
 

@@ -62,13 +62,12 @@ const Row kRows[] = {
     {"Film plane, exact focus", "focus.image_z", 4, "mm", "z, least RMS spot"},
     {"Film plane, thick lens", "focus.image_z_thick", 4, "mm", "z, lens formula"},
     {"Exact minus thick", "focus.image_z_difference", 4, "mm", ""},
-    {"RMS spot radius", "focus.rms_spot_radius", 4, "mm", "at the exact focus"},
     {"Wavelength", "wavelength_nm", 2, "nm", "of the figures above"},
     {"EFL at F (486.13 nm)", "chromatic.efl_F", 4, "mm", ""},
     {"EFL at C (656.27 nm)", "chromatic.efl_C", 4, "mm", ""},
     {"Longitudinal colour", "chromatic.longitudinal_colour_mm", 4, "mm", "image z at C minus at F"},
     {"Lateral colour", "chromatic.lateral_colour_mm", 4, "mm", "F minus C chief-ray height at the largest field"},
-    {"Largest field", "chromatic.lateral_colour_field_deg", 2, "deg", "where the lateral colour is measured"},
+    {"Largest field", "field_of_view.largest_field_deg", 2, "deg", "the analysis's full field; the lateral colour's field"},
 };
 
 std::string rate(double perSecond) {
@@ -101,8 +100,11 @@ void lensTable(std::ostringstream& out, const LensFacts& f) {
         const bool infiniteFocus = std::string(r.key) == "focus.distance" && a["focus"].value("infinity", false);
         out << "<tr><th scope=\"row\">" << r.quantity << "</th>";
         if (infiniteFocus) out << "<td>infinity</td>";
+        else if (std::isnan(v)) out << "<td data-key=\"" << r.key << "\">none</td>";
         else out << "<td data-key=\"" << r.key << "\">" << formatFixed(v, r.decimals) << "</td>";
-        out << "<td>" << r.unit << "</td><td>" << r.meaning << "</td></tr>\n";
+        const bool fieldRow = std::string(r.key) == "field_of_view.largest_field_deg";
+        out << "<td>" << r.unit << "</td><td>" << (fieldRow ? escapeMarkup(a["field_of_view"].value("source", "")) : r.meaning)
+            << "</td></tr>\n";
     }
     std::string stops;
     for (const auto& s : a["full_stops"]) stops += (stops.empty() ? "f/" : ", f/") + formatNumber(s.get<double>(), 3);
@@ -197,13 +199,13 @@ std::string designCaption(const std::string& file, const DesignPlots& d) {
         return i < d.fieldsDegrees.size() ? formatFixed(d.fieldsDegrees[i], 1) + "\u00b0" : "?";
     };
     if (name.rfind("spot-field-", 0) == 0)
-        return "Spot diagram at " + field("spot-field-") + " (F, d, C): ray hits on the film plane around the d chief ray.";
+        return "Spot diagram at " + field("spot-field-") + " (F, d, C): ray hits on the image plane around the field's reference point.";
     if (name.rfind("mtf-field-", 0) == 0)
         return "MTF at " + field("mtf-field-") + ": sagittal and tangential, from the pupil (diffraction) and the spot (geometric), "
                "with the diffraction limit.";
     if (name.rfind("fans-field-", 0) == 0)
         return "Transverse ray aberration at " + field("fans-field-") + ", tangential and sagittal, against pupil coordinate.";
-    if (name == "field-curvature") return "Field curvature: sagittal and tangential focus against field, from the film plane.";
+    if (name == "field-curvature") return "Field curvature: sagittal and tangential focus against field, from the image plane.";
     if (name == "distortion") return "Distortion in percent against field.";
     if (name == "relative-illumination") return "Relative illumination against image height on the film, 1 on the axis.";
     if (name == "chromatic-focal-shift") return "Chromatic focal shift: the paraxial focus against wavelength, from the d line's.";
@@ -214,6 +216,7 @@ std::string designCaption(const std::string& file, const DesignPlots& d) {
 void designSection(std::ostringstream& out, const LensFacts& f, const DesignPlots& d) {
     if (d.plots.empty() && d.problem.empty()) return;  // not asked for
     out << "<section class=\"design\">\n<h4>The lens designer's analysis at f/" << formatFNumber(d.fstop) << "</h4>\n";
+    if (!d.settings.empty()) out << "<p class=\"settings\">" << escapeMarkup(d.settings) << "</p>\n";
     if (!d.problem.empty()) {
         out << "<p class=\"problem\">" << escapeMarkup(d.problem) << "</p>\n</section>\n";
         return;

@@ -312,7 +312,12 @@ function showColour(lens) {
     ["EFL at F, d, C", `${fixed(c.efl_F)}, ${fixed(c.efl_d)}, ${fixed(c.efl_C)}`],
     ["Image z at F, d, C", `${fixed(c.image_z_F)}, ${fixed(c.image_z_d)}, ${fixed(c.image_z_C)}`],
     ["Longitudinal colour (C − F)", fixed(c.longitudinal_colour_mm, 4)],
-    [`Lateral colour (F − C) at ${fixed(c.lateral_colour_field_deg, 1)}°`, fixed(c.lateral_colour_mm, 4)],
+    c.lateral_colour_mm === null
+      ? ["Lateral colour (F − C)", "none: the lens defines no largest field"]
+      : [`Lateral colour (F − C) at ${fixed(c.lateral_colour_field_deg, 1)}°`, fixed(c.lateral_colour_mm, 4)],
+    ["Largest field", lens.field_of_view.largest_field_deg === null
+      ? lens.field_of_view.source
+      : `${fixed(lens.field_of_view.largest_field_deg, 2)}° (${lens.field_of_view.source})`],
   ];
   fillRows("lens-colour", rows);
 }

@@ -109,7 +109,7 @@ void LoadAndAnalyseZemax(benchmark::State& state) {
     for (auto _ : state) {
         const LensSystem lens = buildLensSystem(parseLensTable(text, "thirty.zmx"));
         const LensAnalysis a = analyzeLens(lens, std::nullopt, std::numeric_limits<double>::infinity());
-        benchmark::DoNotOptimize(a.chromatic.lateralColour);
+        benchmark::DoNotOptimize(a.chromatic.lateral);
     }
     state.SetLabel(std::to_string(buildLensSystem(parseLensTable(text, "thirty.zmx")).surfaces.size()) +
                    " surfaces, catalog glasses, chromatic block included");

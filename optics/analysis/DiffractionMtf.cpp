@@ -1,5 +1,6 @@
 #include "analysis/DiffractionMtf.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -75,12 +76,25 @@ Complex TransferFunction::at(double frequency) const {
     return (1 - t) * values[i] + t * values[i + 1];
 }
 
-double diffractionLimitedMtf(double frequency, double cutoff) {
+double diffractionLimitedMtf(double frequency, double cutoff, double obscuration) {
     constexpr double kPi = 3.14159265358979323846;
-    const double s = frequency / cutoff;
-    if (!(s < 1)) return 0;
-    const double phi = std::acos(std::max(0.0, s));
-    return 2 / kPi * (phi - std::cos(phi) * std::sin(phi));
+    const double v = frequency / cutoff, e = obscuration;
+    if (!(v < 1)) return 0;
+    auto lens = [](double s) { return std::acos(s) - s * std::sqrt(1 - s * s); };  // 2 circles' overlap, pi/2 at 0
+    const double a = 2 / kPi * lens(std::max(0.0, v));
+    if (!(e > 0)) return a;
+    // O'Neill 1956: the annulus's autocorrelation, the outer circle's (a) and the inner's (b) less
+    // twice the overlap of outer and inner (c), over the annulus's area 1 - e^2.
+    const double b = v < e ? 2 * e * e / kPi * lens(v / e) : 0.0;
+    double c = 0;
+    if (v <= (1 - e) / 2) {
+        c = -2 * e * e;
+    } else if (v < (1 + e) / 2) {
+        const double phi = std::acos(std::clamp((1 + e * e - 4 * v * v) / (2 * e), -1.0, 1.0));
+        c = 2 * e / kPi * std::sin(phi) + (1 + e * e) / kPi * phi -
+            2 * (1 - e * e) / kPi * std::atan((1 + e) / (1 - e) * std::tan(phi / 2)) - 2 * e * e;
+    }
+    return std::max(0.0, (a + b + c) / (1 - e * e));
 }
 
 }  // namespace lenslab

@@ -41,7 +41,9 @@ struct OpticalTransfer {
 
 OpticalTransfer opticalTransfer(const PointSpreadFunction& psf);
 
-// (2/pi)(phi - cos phi sin phi), phi = acos(nu / cutoff); 0 from the cutoff on.
-double diffractionLimitedMtf(double frequency, double cutoff);
+// The aberration-free MTF of a circular pupil, (2/pi)(phi - cos phi sin phi) with phi = acos(nu /
+// cutoff), 0 from the cutoff on; with a central obscuration of `obscuration` times the pupil's radius
+// (a reflex lens's secondary mirror), the annular pupil's (O'Neill 1956).
+double diffractionLimitedMtf(double frequency, double cutoff, double obscuration = 0);
 
 }  // namespace lenslab

@@ -13,8 +13,9 @@ std::vector<double> geometricMtf(const std::vector<SpotDiagram>& spots, const st
         std::complex<double> sum = 0;
         double total = 0;
         for (std::size_t j = 0; j < spots.size(); ++j) {
-            const double w = weights[j] / spots[j].raysLaunched;
-            for (const Point2& p : spots[j].points) {
+            for (std::size_t k = 0; k < spots[j].points.size(); ++k) {
+                const Point2& p = spots[j].points[k];
+                const double w = weights[j] * spots[j].weights[k];
                 const double u = direction == MtfDirection::Sagittal ? p.x : p.y;
                 sum += w * std::polar(1.0, kTwoPi * nu * u);
                 total += w;

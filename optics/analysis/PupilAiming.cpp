@@ -92,21 +92,30 @@ std::optional<FieldAim> aimField(const LensSystem& lens, const ObjectField& fiel
     return aim;
 }
 
-std::optional<Ray> aimedRay(const LensSystem& lens, const FieldAim& aim, double px, double py) {
+std::optional<Ray> aimedRay(const LensSystem& lens, const FieldAim& aim, double px, double py, AimGuess* guess) {
     // Aimed a hair inside the asked point, so that a ray asked for the stop's rim is not clipped by
     // the rounding of the aim.
     constexpr double kInside = 1 - 1e-9;
     const double tx = px * aim.stopRadius * kInside, ty = py * aim.stopRadius * kInside;
     double J[2][2];
-    std::copy(&aim.inverseJacobian[0][0], &aim.inverseJacobian[0][0] + 4, &J[0][0]);
-    double u = aim.chiefAimX + J[0][0] * tx + J[0][1] * ty;
-    double v = aim.chiefAimY + J[1][0] * tx + J[1][1] * ty;
+    double u = aim.chiefAimX, v = aim.chiefAimY, sx = 0, sy = 0;  // the start and its stop point
+    if (guess && guess->valid) {
+        std::copy(&guess->inverseJacobian[0][0], &guess->inverseJacobian[0][0] + 4, &J[0][0]);
+        u = guess->aimX, v = guess->aimY, sx = guess->stopX, sy = guess->stopY;
+    } else {
+        std::copy(&aim.inverseJacobian[0][0], &aim.inverseJacobian[0][0] + 4, &J[0][0]);
+    }
+    u += J[0][0] * (tx - sx) + J[0][1] * (ty - sy);
+    v += J[1][0] * (tx - sx) + J[1][1] * (ty - sy);
     std::optional<StopPoint> s = stopPoint(lens, rayThrough(aim, u, v));
-    // Broyden's method from the chief ray's Jacobian: one trace per step, the inverse Jacobian updated
+    // Broyden's method from the start's Jacobian: one trace per step, the inverse Jacobian updated
     // by each step's secant.
     for (int it = 0; it < 40 && s; ++it) {
         const double rx = tx - s->x, ry = ty - s->y;
-        if (std::hypot(rx, ry) <= 1e-10 * aim.stopRadius) return rayThrough(aim, u, v);
+        if (std::hypot(rx, ry) <= 1e-10 * aim.stopRadius) {
+            if (guess) *guess = {true, u, v, s->x, s->y, {{J[0][0], J[0][1]}, {J[1][0], J[1][1]}}};
+            return rayThrough(aim, u, v);
+        }
         const double du = J[0][0] * rx + J[0][1] * ry, dv = J[1][0] * rx + J[1][1] * ry;
         const std::optional<StopPoint> next = stopPoint(lens, rayThrough(aim, u + du, v + dv));
         if (!next) return std::nullopt;

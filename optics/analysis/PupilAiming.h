@@ -35,10 +35,21 @@ struct FieldAim {
 // nullopt when no ray of that field reaches the stop's centre.
 std::optional<FieldAim> aimField(const LensSystem& lens, const ObjectField& field);
 
+// A solved aim to start the next one from: rays aimed one after another along a path across the
+// stop (a radius, say) converge in a step or two from their neighbour's solution, where the chief
+// ray's linearisation may not reach the far side of a strongly aberrated pupil at all.
+struct AimGuess {
+    bool valid = false;
+    double aimX = 0, aimY = 0;          // on the aim plane
+    double stopX = 0, stopY = 0;        // where that ray crosses the stop, mm
+    double inverseJacobian[2][2] = {};  // d(aim point) / d(stop point) there
+};
+
 // The incoming ray through the stop point (px, py) * stopRadius, apertures ignored on the way to
 // the stop (trace it to learn whether it passes). nullopt when the aim does not converge: no ray of
-// this field reaches that point of the stop.
-std::optional<Ray> aimedRay(const LensSystem& lens, const FieldAim& aim, double px, double py);
+// this field reaches that point of the stop. With a guess, starts from it and leaves the solution
+// in it.
+std::optional<Ray> aimedRay(const LensSystem& lens, const FieldAim& aim, double px, double py, AimGuess* guess = nullptr);
 
 // Where a ray leaving the lens meets the plane z = const (its x, y); nullopt when it runs parallel.
 std::optional<Vec3> pointOnPlane(const Ray& ray, double z);

@@ -1,5 +1,7 @@
 #include "analysis/RelativeIllumination.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -43,7 +45,7 @@ private:
     RayBatch batch_;
 };
 
-constexpr int kCoarse = 64;
+constexpr int kCoarse = 32;
 
 // The bounding box of the passing points seen from film radius r, one coarse cell wider on every
 // side; empty (x1 <= x0) when nothing passes. The search square grows while passing points touch
@@ -117,13 +119,15 @@ std::vector<IlluminationSample> relativeIllumination(const LensSystem& lens, dou
         centre = passingFlux(farProbe, 0.0, options.grid);
     }
     if (!(centre.weighted > 0)) throw OpticsError("relative illumination: no ray from the film centre passes the lens");
-    FilmPointProbe& probe = *probeUsed;
-    std::vector<IlluminationSample> samples;
-    for (int k = 0; k < options.filmRadii; ++k) {
+    // The film radii are independent: traced side by side, each with a probe of its own.
+    const int aimSurface = probeUsed == &nearProbe ? int(lens.surfaces.size()) - 1 : 0;
+    std::vector<IlluminationSample> samples(options.filmRadii);
+    tbb::parallel_for(0, options.filmRadii, [&](int k) {
         const double r = maxFilmRadius * k / (options.filmRadii - 1);
+        FilmPointProbe probe(lens, filmZ, aimSurface);
         const Flux f = k == 0 ? centre : passingFlux(probe, r, options.grid);
-        samples.push_back({r, f.area / centre.area, f.weighted / centre.weighted});
-    }
+        samples[k] = {r, f.area / centre.area, f.weighted / centre.weighted};
+    });
     return samples;
 }
 

@@ -12,7 +12,8 @@ namespace {
 constexpr double kTwoPi = 6.28318530717958647692;
 
 // Optical paths of the field's rays from a common wavefront in object space (the object point, or
-// for a distant object the plane through the origin across the incoming light) to the sphere.
+// for a distant object the plane through the origin across the incoming light) to the sphere. Rays
+// are asked for in scan order, each aimed from the last one's solution (a neighbour's).
 class OpticalPaths {
 public:
     OpticalPaths(const LensSystem& lens, const FieldAim& aim, Vec3 centre, double radius)
@@ -20,7 +21,7 @@ public:
 
     // The path of the ray through pupil point (px, py), with the ray leaving the lens; nullopt when blocked.
     std::optional<double> toSphere(double px, double py, bool ignoreApertures = false) {
-        const std::optional<Ray> in = aimedRay(lens_, aim_, px, py);
+        const std::optional<Ray> in = aimedRay(lens_, aim_, px, py, &guess_);
         if (!in) return std::nullopt;
         path_.clear();
         TraceOptions options;
@@ -46,6 +47,7 @@ private:
     Vec3 centre_;
     double radius_;
     std::vector<Vec3> path_;
+    AimGuess guess_;
 };
 
 }  // namespace

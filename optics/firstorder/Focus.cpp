@@ -19,7 +19,7 @@ std::string fmt(double v) { return formatNumber(v) + " mm"; }
 void refineExact(const LensSystem& lens, const Pupils& pupils, FocusResult& r) {
     constexpr int kRings = 64;
     const double rp = 0.5 * pupils.entrance.diameter * 0.999;
-    double sumAM = 0, sumMM = 0, sumAA = 0;
+    double sumAM = 0, sumMM = 0;
     int used = 0;
     for (int k = 0; k < kRings; ++k) {
         const double rho = rp * std::sqrt((k + 0.5) / kRings);
@@ -36,13 +36,11 @@ void refineExact(const LensSystem& lens, const Pupils& pupils, FocusResult& r) {
         const double a = t.ray.origin.y - t.ray.origin.z * m;
         sumAM += a * m;
         sumMM += m * m;
-        sumAA += a * a;
         ++used;
     }
     if (used == 0 || sumMM == 0)
         throw OpticsError("no exact ray from the object at " + fmt(r.objectZ) + " passes the lens");
     r.imageZExact = -sumAM / sumMM;
-    r.rmsSpotRadius = std::sqrt(std::max(0.0, (sumAA - sumAM * sumAM / sumMM) / used));
     r.raysUsed = used;
 }
 

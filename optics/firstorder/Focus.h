@@ -16,7 +16,6 @@ struct FocusResult {
     double imageZThick = 0;     // film z by the thick-lens formula
     double imageZExact = 0;     // film z where exact rays through the pupil converge best (least RMS spot)
     double difference = 0;      // imageZExact - imageZThick
-    double rmsSpotRadius = 0;   // at imageZExact, mm
     int raysUsed = 0;           // exact rays that passed the lens
 };
 

@@ -71,7 +71,9 @@ LensAnalysis analyzeLens(const LensSystem& lensAsBuilt, const LensSettings& s) {
         const double distance = s.focusDistance ? s.focusDistance->value : std::numeric_limits<double>::infinity();
         a.focus = blame(s.focusDistance, [&] { return focusAt(a.lens, a.firstOrder, a.pupils, distance); });
     }
-    a.chromatic = computeChromatic(a.lens, a.focus.infinity ? std::numeric_limits<double>::infinity() : a.focus.objectZ);
+    a.field = lensFieldOfView(lensAsBuilt);
+    a.chromatic = computeChromatic(a.lens, a.focus.infinity ? std::numeric_limits<double>::infinity() : a.focus.objectZ,
+                                   a.field.largestDegrees);
     return a;
 }
 

@@ -5,6 +5,7 @@
 
 #include "firstorder/Aperture.h"
 #include "firstorder/Chromatic.h"
+#include "firstorder/FieldOfView.h"
 #include "firstorder/FirstOrder.h"
 #include "firstorder/Focus.h"
 #include "settings/LensSettings.h"
@@ -23,7 +24,8 @@ struct LensAnalysis {
     Pupils pupils;            // at this stop opening
     ThickLens thick;
     FocusResult focus;
-    Chromatic chromatic;      // F, d and C at this focus
+    FieldOfView field;        // the lens's largest field, at its primary wavelength
+    Chromatic chromatic;      // F, d and C at this focus; lateral colour at the largest field
     // describeLens only: the lens is afocal (nothing above `lens` is set), or its first order is
     // known but no aperture and focus could be found (the reason; firstOrder set, nothing after it).
     bool afocal = false;

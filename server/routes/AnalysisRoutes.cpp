@@ -1,5 +1,6 @@
 // GET /api/lenses/{id}/analysis: the lens designer's analysis (the `lenslab analyze --json` object)
-// at fstop and focus, for wavelengths and fields given as the command line takes them. The work is
+// at fstop and focus, for wavelengths, fields, image plane and reference given as the command line
+// takes them. The work is
 // bounded by the inputs' check (at most 16 fields and 16 wavelengths); a malformed or out-of-range
 // list is 400 naming its parameter, settings the lens cannot take are optics' 422 as elsewhere.
 #include "AnalysisInputsText.h"
@@ -28,6 +29,8 @@ DesignAnalysisInputs analysisInputs(const httplib::Request& req) {
             in.fieldsInDegrees = fields.degrees;
         }
         if (const auto max = queryNumber(req, "max_frequency", 0, 1e5)) in.maxFrequency = *max;
+        if (const auto text = queryText(req, "image_plane")) in.imagePlane = parseImagePlaneInput(*text, "query parameter image_plane");
+        if (const auto text = queryText(req, "reference")) in.reference = parseSpotReferenceInput(*text, "query parameter reference");
         checkDesignAnalysisInputs(in);
     } catch (const InputListError& e) {
         throw HttpError(400, e.what());
