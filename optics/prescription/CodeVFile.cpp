@@ -733,7 +733,11 @@ LensTable parseCodeV(const std::string& bytes, const std::string& name) {
         const auto h = handlers().find(handlerName(c.name));
         if (h == handlers().end())
             r.fail(c.line, "command " + c.name.substr(0, 40) + " is not read by lenslab (docs/prescriptions.md lists the Code V commands it reads)");
-        h->second(r, c);
+        // The handlers tell commands apart by the name they are filed under (YAN from XAN, DAR from
+        // BEN): a spelled-out command (CIRCLE, YANGLE) goes to its handler as that name.
+        Command named = c;
+        named.name = h->first;
+        h->second(r, named);
     }
     if (commands.empty()) r.fail(1, "empty file: no Code V commands");
     return assemble(r, lastLine);

@@ -135,6 +135,21 @@ TEST(CodeV, CurvatureModeAndUnitsAndContinuations) {
     EXPECT_EQ(t.rows[1].line, 6);
 }
 
+// Commands spelled out past their three letters are the three-letter command (Code V reads
+// TITLE, STOP, CIRCLE so): the field and aperture letters come from that name, not the spelling.
+TEST(CodeV, SpelledOutCommandsAreTheirThreeLetterCommand) {
+    const std::string text = "title 'long names'\nso 0 1e10\ns 40 5 1.6,40\nstop\ncircle 6\ns -60 30\n"
+                             "yangle 0 7\nepd 10; wl 550\n";
+    const LensTable t = parseCodeV(text, "long.seq");
+    EXPECT_TRUE(t.rows[0].stop);
+    EXPECT_FALSE(t.rows[0].clearShape);  // a circle about the vertex is the diameter
+    EXPECT_FALSE(t.rows[0].automaticDiameter);
+    EXPECT_DOUBLE_EQ(t.rows[0].diameter, 12);
+    EXPECT_EQ(t.fields.type, FieldType::ObjectAngle);
+    ASSERT_EQ(t.fields.points.size(), 2u);
+    EXPECT_DOUBLE_EQ(t.fields.points[1].y, 7);
+}
+
 TEST(CodeV, RadiusAndCurvatureModesAgree) {
     const LensTable radii = parseCodeV(achromat(), "a.seq");
     std::string curvatures = achromat("", "RDM N;LEN");
