@@ -5,11 +5,11 @@
 #include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
 #include "AnalysisPlots.h"
+#include "AnalysisTables.h"
 #include "ArgParser.h"
 #include "Commands.h"
 #include "analysis/LensDesignAnalysis.h"
 #include "LensFlags.h"
-#include "prescription/NumberText.h"
 
 namespace lenslab {
 
@@ -38,27 +38,7 @@ DesignAnalysisInputs analysisFlags(const ArgParser& p) {
 }
 
 void printSummary(const LensDesignAnalysis& a) {
-    std::cout << a.lens.lens.name << ": " << analysisSettingsText(a) << "\n";
-    std::cout << "image planes: paraxial z " << formatFixed(a.planes.paraxialZ, 4) << ", film " << formatFixed(a.planes.filmZ, 4)
-              << ", best " << formatFixed(a.planes.bestZ, 4) << " mm\n";
-    std::cout << "field (deg)  wavelength (nm)  RMS spot (um)  geo spot (um)  transmitted  RMS wavefront (waves)\n";
-    for (const FieldAnalysis& f : a.fields) {
-        for (std::size_t j = 0; j < f.spots.size(); ++j)
-            std::cout << formatFixed(f.fieldDegrees, 2) << "  " << formatFixed(f.spots[j].wavelength, 1) << "  "
-                      << formatFixed(f.spots[j].statistics.rmsRadius * 1000, 2) << "  "
-                      << formatFixed(f.spots[j].statistics.geometricRadius * 1000, 2) << "  "
-                      << formatFixed(f.spots[j].transmission, 3) << "  " << formatFixed(f.rmsWavefrontWaves[j], 3) << "\n";
-        std::cout << formatFixed(f.fieldDegrees, 2) << "  polychromatic  " << formatFixed(f.polychromatic.rmsRadius * 1000, 2)
-                  << "  " << formatFixed(f.polychromatic.geometricRadius * 1000, 2) << (f.traced ? "" : "  (no ray reaches the image)")
-                  << "\n";
-    }
-    std::cout << "field (deg)  distortion (%)  relative illumination\n";
-    for (const FieldAnalysis& f : a.fields)
-        std::cout << formatFixed(f.fieldDegrees, 2) << "  " << formatFixed(f.distortionPercent, 3) << "  "
-                  << formatFixed(f.relativeIllumination, 3) << "\n";
-    std::cout << "wavelength (nm)  chromatic focal shift (mm, + toward the lens)\n";
-    for (const FocalShiftSample& s : a.focalShift)
-        std::cout << formatFixed(s.wavelength, 1) << "  " << formatFixed(s.shift, 5) << "\n";
+    std::cout << a.lens.lens.name << ": " << analysisSettingsText(a) << "\n" << analysisTablesText(a);
 }
 
 void writeOutputFolder(const LensDesignAnalysis& a, const std::string& folder) {

@@ -28,15 +28,16 @@ int runDiagramCommand(const std::vector<std::string>& args) {
     ArgParser p("diagram",
                 "FILE -o OUT.png [--mode exact|thick|overlay] [--colour] [--fstop N] [--focus MM|inf] [--wavelength NM]\n"
                 "        [--field MM] [--rays N] [--size WxH] [--backend osmesa|egl|auto]",
-                "Draws the lens cross-section (front to the left) with ray fans traced from the film on the axis\n"
-                "and at a field height, the stop at the chosen f-number, F, F', P, P', the pupils and the film,\n"
-                "offscreen with OpenGL, and writes a PNG.");
+                "Draws the lens cross-section (front to the left) with ray fans traced forward from the object\n"
+                "side on the axis and at one field, folded by any mirrors (their holes and obscurations drawn),\n"
+                "the stop at the chosen f-number, F, F', P, P', the pupils and the film, offscreen with OpenGL,\n"
+                "and writes a PNG. A mirror lens gets no thick-lens rays (the picture says so).");
     p.positional("FILE", "lens table (.dat) or Zemax prescription (.zmx)");
     p.option("-o", "OUT.png", "the PNG to write");
     p.option("--mode", "M", "exact (real rays), thick (thick-lens rays) or overlay (both); default exact");
     p.flag("--colour", "exact fans at the F, d and C lines in blue, yellow and red (the colour spread)");
     declareLensFlags(p);
-    p.option("--field", "MM", "film height of the off-axis fan in mm; 0 for the axial fan only (default: automatic)");
+    p.option("--field", "MM", "film height of the off-axis fan's chief ray in mm; 0 for the axial fan only (default: 70% of the largest field)");
     p.option("--rays", "N", "rays per fan (default 9)");
     p.option("--size", "WxH", "picture size in pixels (default 1200x600)");
     p.option("--backend", "B", "osmesa (default), egl, or auto (EGL, else OSMesa)");

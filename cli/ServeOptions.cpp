@@ -70,6 +70,10 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     p.option("--keep-alive-requests", "N", "requests per connection before it is closed (default 100)");
     p.option("--max-connections", "N", "connections waiting for a request at most; the longest waiting are dropped (default 512)");
     p.option("--http-threads", "N", "requests answered at once (default 32)");
+    p.option("--work-threads", "N", "heavy work (analyses, previews, diagrams, uploads, reports) running at once "
+             "(default 0: one per core)");
+    p.option("--work-per-client", "N", "requests of one client address waiting on heavy work at most; more get 429 "
+             "(default 4)");
     p.option("--keep-days", "D", "finished renders are deleted after D days (default 30; 0: no age limit)");
     p.option("--keep-gb", "GB", "finished renders' files kept at most, oldest deleted first (default 2; 0: no limit)");
     p.option("--max-data-gb", "GB", "data folder at most: past it uploads and renders are refused with 507 "
@@ -111,6 +115,8 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     c.http.requestsPerConnection = boundedInteger(p, "--keep-alive-requests", c.http.requestsPerConnection, 1, 100000);
     c.http.maxConnections = boundedInteger(p, "--max-connections", c.http.maxConnections, 4, 100000);
     c.httpThreads = boundedInteger(p, "--http-threads", c.httpThreads, 2, 256);
+    c.work.threads = boundedInteger(p, "--work-threads", c.work.threads, 0, 256);
+    c.work.perClient = boundedInteger(p, "--work-per-client", c.work.perClient, 1, 256);
     c.retention.keepDays = boundedNumber(p, "--keep-days", c.retention.keepDays, 0, 36500);
     c.retention.keepBytes = static_cast<std::uintmax_t>(
         boundedNumber(p, "--keep-gb", static_cast<double>(c.retention.keepBytes) / (1 << 30), 0, 1e6) * (1 << 30));

@@ -3,15 +3,30 @@
 // so a written lens parses to exactly the rows it was written from ("50", not "50.000000000000000").
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 namespace lenslab {
 
 inline std::string exactNumberText(double v) {
     char b[40];
-    for (int digits = 15; digits <= 17; ++digits) {
+    for (int digits = 15; digits <= std::numeric_limits<double>::max_digits10; ++digits) {
         std::snprintf(b, sizeof b, "%.*g", digits, v);
         if (std::strtod(b, nullptr) == v) break;
+    }
+    return b;
+}
+
+// 1 / r as text from which the reciprocal, taken in long double as lenslab's .zmx reader takes it,
+// rounds back to r: a radius written as a curvature (CURV) reads back exactly. A double curvature
+// cannot do that for every radius (1 / (1 / r) is one ulp off for some); long double's extra bits
+// can, given its max_digits10 digits. The shortest such text is written.
+inline std::string exactReciprocalText(double r) {
+    const long double c = 1.0L / r;
+    char b[48];
+    for (int digits = 15; digits <= std::numeric_limits<long double>::max_digits10; ++digits) {
+        std::snprintf(b, sizeof b, "%.*Lg", digits, c);
+        if (static_cast<double>(1.0L / std::strtold(b, nullptr)) == r) break;
     }
     return b;
 }

@@ -1,7 +1,11 @@
 #include "LensTableWriter.h"
 
+#include <cstdlib>
+
 #include "ExactNumberText.h"
+#include "LineText.h"
 #include "prescription/GlassCatalog.h"
+#include "prescription/NumberText.h"
 
 namespace lenslab {
 
@@ -9,17 +13,59 @@ namespace {
 
 bool isAir(const LensTableRow& row) { return row.glass.empty() && row.abbe == 0 && (row.index == 0 || row.index == 1); }
 
+// The comment naming the columns. Read back it is one more comment, so a table written again
+// leaves out the header lines it already holds: a lens saved over and over keeps one.
+std::string columnHeader(TableLayout layout) {
+    return std::string("radius  gap (") + layoutName(layout) + ")  N  diameter  glass or Vd";
+}
+
+bool isColumnHeader(const std::string& comment) {
+    return comment == columnHeader(TableLayout::GapBefore) || comment == columnHeader(TableLayout::GapAfter);
+}
+
+[[noreturn]] void refuse(const LensTable& table, int line, const std::string& what) {
+    throw LensTableError(table.name, line, what + ": a lens table (.dat) cannot hold it; write a .zmx instead");
+}
+
+bool isNumber(const std::string& text) {
+    char* end = nullptr;
+    std::strtod(text.c_str(), &end);
+    return end != text.c_str() && *end == '\0';
+}
+
+// The glass a row's name finds as the table reads it back (no catalog order) must be the one it
+// finds now.
+void refuseCatalogOrderThatMatters(const LensTable& table, const LensTableRow& row) {
+    if (table.catalogs.empty()) return;
+    const GlassLookup preferred = findGlass(row.glass, table.catalogs), plain = findGlass(row.glass, {});
+    if (preferred.glass && plain.glass &&
+        (preferred.glass->catalog != plain.glass->catalog || preferred.glass->name != plain.glass->name))
+        refuse(table, row.line, "the catalog order (GCAT) that makes '" + row.glass + "' " + preferred.glass->catalog +
+                                    " " + preferred.glass->name +
+                                    " rather than " + plain.glass->catalog + " " + plain.glass->name);
+}
+
 void refuseWhatATableCannotHold(const LensTable& table, const LensTableRow& row) {
-    const auto refuse = [&](const std::string& what) {
-        throw LensTableError(table.name, row.line, what + ": a lens table (.dat) cannot hold it; write a .zmx instead");
-    };
-    if (row.conic != 0) refuse("a conic constant");
+    if (row.conic != 0) refuse(table, row.line, "a conic constant");
     for (double a : row.aspheric)
-        if (a != 0) refuse("aspheric terms");
-    if (row.mirror) refuse("a mirror");
-    if (row.obscurationDiameter > 0) refuse("a central obscuration");
-    if (row.stop && (row.radius != 0 || !isAir(row))) refuse("a stop on a curved or glass surface");
-    if (row.glass.find_first_of(" \t#") != std::string::npos) refuse("the glass name '" + row.glass + "' with spaces");
+        if (a != 0) refuse(table, row.line, "aspheric terms");
+    if (row.mirror) refuse(table, row.line, "a mirror");
+    if (row.obscurationDiameter > 0) refuse(table, row.line, "a central obscuration");
+    if (row.stop && (row.radius != 0 || !isAir(row))) refuse(table, row.line, "a stop on a curved or glass surface");
+    if (row.glass.empty()) return;
+    if (const auto problem = wordTextProblem(row.glass)) refuse(table, row.line, "a glass name with " + *problem);
+    if (row.glass.find('#') != std::string::npos) refuse(table, row.line, "a glass name with '#' (a comment)");
+    if (isNumber(row.glass)) refuse(table, row.line, "the glass name '" + row.glass + "' (it would read as an Abbe number)");
+    refuseCatalogOrderThatMatters(table, row);
+}
+
+void refuseWhatItsHeaderCannotHold(const LensTable& table) {
+    for (std::size_t i = 0; i < table.comments.size(); ++i)
+        if (const auto problem = lineTextProblem(table.comments[i]))
+            refuse(table, 0, "comment " + std::to_string(i + 1) + " with " + *problem);
+    if (table.primaryWavelength != kWavelengthD)
+        refuse(table, 0, "the primary wavelength " + formatNumber(table.primaryWavelength, 9) +
+                             " nm (a table is read at the d line, " + formatNumber(kWavelengthD, 9) + " nm)");
 }
 
 // Column 3 of a glass row must be its nd: a .zmx catalog glass may leave it to the catalog (0).
@@ -35,9 +81,11 @@ double tableIndex(const LensTable& table, const LensTableRow& row) {
 }  // namespace
 
 std::string writeLensTableText(const LensTable& table) {
+    refuseWhatItsHeaderCannotHold(table);
     std::string out;
-    for (const std::string& comment : table.comments) out += "# " + comment + "\n";
-    out += std::string("# radius  gap (") + layoutName(table.layout) + ")  N  diameter  glass or Vd\n";
+    for (const std::string& comment : table.comments)
+        if (!isColumnHeader(comment)) out += "# " + comment + "\n";
+    out += "# " + columnHeader(table.layout) + "\n";
     for (const LensTableRow& row : table.rows) {
         refuseWhatATableCannotHold(table, row);
         out += exactNumberText(row.radius) + " " + exactNumberText(row.gap) + " " + exactNumberText(tableIndex(table, row)) +

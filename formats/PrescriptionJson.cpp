@@ -2,6 +2,10 @@
 
 #include <cmath>
 
+#include "LineText.h"
+#include "prescription/GlassCatalog.h"
+#include "prescription/Wavelength.h"
+
 namespace lenslab {
 
 using nlohmann::json;
@@ -68,6 +72,12 @@ LensTableRow rowFromJson(const json& row, const std::string& name, int line) {
     r.diameter = in.number("diameter", 0);
     r.stop = in.flag("stop");
     r.glass = in.text("glass");
+    // Checked before anything looks the name up (the search for the nearest names costs with its length).
+    if (r.glass.size() > kMaxGlassNameLength)
+        in.fail("a glass name of " + std::to_string(r.glass.size()) + " characters: catalog names have at most " +
+                std::to_string(kMaxGlassNameLength));
+    if (!r.glass.empty())
+        if (const auto problem = wordTextProblem(r.glass)) in.fail("the glass name holds " + *problem);
     r.abbe = in.number("abbe", 0);
     r.conic = in.number("conic", 0);
     r.mirror = in.flag("mirror");
@@ -88,6 +98,28 @@ LensTableRow rowFromJson(const json& row, const std::string& name, int line) {
     if (r.obscurationDiameter < 0 || r.obscurationDiameter >= r.diameter)
         in.fail("the obscuration must be smaller than the clear diameter");
     return r;
+}
+
+// The free text and names of the whole lens, checked as the readers of files would: bounded, on one
+// line, wavelengths lenslab traces.
+void checkHeader(const LensTable& table) {
+    const auto fail = [&](const std::string& problem) { throw LensTableError(table.name, 0, problem); };
+    if (table.comments.size() > 64 || table.catalogs.size() > 64 || table.wavelengths.size() > 24)
+        fail("at most 64 comments, 64 catalogs and 24 wavelengths");
+    std::size_t commentBytes = 0;
+    for (std::size_t i = 0; i < table.comments.size(); ++i) {
+        if (const auto problem = lineTextProblem(table.comments[i]))
+            fail("comment " + std::to_string(i + 1) + " holds " + *problem);
+        commentBytes += table.comments[i].size();
+    }
+    if (commentBytes > kMaxCommentBytes) fail("the comments are longer than " + std::to_string(kMaxCommentBytes) + " bytes");
+    for (const std::string& catalog : table.catalogs) {
+        if (catalog.size() > kMaxGlassNameLength) fail("a catalog name is at most " + std::to_string(kMaxGlassNameLength) + " characters");
+        if (const auto problem = wordTextProblem(catalog)) fail("a catalog name holds " + *problem);
+    }
+    for (double nm : table.wavelengths)
+        if (const auto problem = wavelengthProblem(nm)) fail("wavelengths_nm: " + *problem);
+    if (const auto problem = wavelengthProblem(table.primaryWavelength)) fail("primary_wavelength_nm: " + *problem);
 }
 
 }  // namespace
@@ -112,10 +144,7 @@ LensTable prescriptionFromJson(const json& body, const std::string& name) {
     } catch (const json::exception&) {
         throw LensTableError(name, 0, "comments and catalogs must be lists of strings, wavelengths_nm a list of numbers");
     }
-    if (!(table.primaryWavelength >= 360 && table.primaryWavelength <= 830))
-        throw LensTableError(name, 0, "primary_wavelength_nm must lie between 360 and 830");
-    if (table.comments.size() > 64 || table.catalogs.size() > 64 || table.wavelengths.size() > 24)
-        throw LensTableError(name, 0, "at most 64 comments, 64 catalogs and 24 wavelengths");
+    checkHeader(table);
     return table;
 }
 

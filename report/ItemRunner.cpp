@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "PublicMessage.h"
 #include "SourceDigests.h"
 
 #include "Render.h"
@@ -42,7 +43,7 @@ const ManifestItem* ItemRunner::run(const std::string& id, const std::string& la
         } catch (const RenderCancelled&) {
             throw ReportCancelled();
         } catch (const std::exception& e) {
-            summary_.problems.push_back(label + ": " + e.what());
+            summary_.problems.push_back(publicMessage(label + ": " + e.what()));
             skip(label);
             return nullptr;
         }

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <exception>
+#include <filesystem>
 
 #include "settings/LensAnalysis.h"
 #include "LensJson.h"
+#include "PublicMessage.h"
 
 namespace lenslab {
 
@@ -34,20 +36,25 @@ LensFacts measureLens(const std::string& id, const std::string& path, const Lens
     f.id = id;
     f.path = path;
     try {
-        const LensSystem lens = loadLensSystem(path);
+        LensSystem lens = loadLensSystem(path);
+        lens.name = std::filesystem::path(path).filename().string();  // published: not where it lies
         if (!lens.comments.empty()) f.description = lens.comments.front();
         const LensAnalysis a = analyzeLens(lens, request.lens);
         f.analysis = lensAnalysisJson(a);
         f.thickError = thickErrorAcrossPupil(a, request.quick ? 12 : 41);
         f.filmZ = a.focus.imageZExact;
-        f.imageCircleRadius = imageCircleRadius(a.lens, f.filmZ, 2 * std::fabs(a.firstOrder.efl) + 50);
+        // Rays that still reach the film at the search's limit (a doublet with its stop at the glass
+        // passes them at any angle) bound no image circle: none, as when no ray reaches the centre.
+        const double limit = 2 * std::fabs(a.firstOrder.efl) + 50;
+        const double circle = imageCircleRadius(a.lens, f.filmZ, limit);
+        f.imageCircleRadius = circle < limit ? circle : 0;
         if (f.imageCircleRadius > 0)
             f.illumination = relativeIllumination(a.lens, f.filmZ, f.imageCircleRadius,
                                                   request.quick ? RelativeIlluminationOptions{12, 48}
                                                                 : RelativeIlluminationOptions{48, 128});
         f.distortion = distortionInsideCircle(a, f.imageCircleRadius, request.quick ? 18 : 86);
     } catch (const std::exception& e) {
-        f.error = e.what();
+        f.error = publicMessage(e.what());  // the page is public
     }
     return f;
 }
@@ -58,7 +65,9 @@ nlohmann::json lensFactsJson(const LensFacts& f) {
     for (const auto& s : f.thickError) thick.push_back({s.height, s.transverseError, s.angleError, s.blocked});
     for (const auto& s : f.illumination) illumination.push_back({s.filmRadius, s.passingArea, s.relativeIllumination});
     for (const auto& s : f.distortion) distortion.push_back({s.fieldDegrees, s.imageHeight, s.paraxialHeight, s.distortionPercent});
-    return {{"id", f.id},           {"path", f.path},
+    // Not the path: the facts are published (assets/lenses/ID.json, manifest.json); it is set again
+    // from the lens source on every build.
+    return {{"id", f.id},
             {"description", f.description},
             {"error", f.error},     {"analysis", f.analysis},
             {"thick_error", thick}, {"film_z", f.filmZ},
@@ -70,7 +79,6 @@ nlohmann::json lensFactsJson(const LensFacts& f) {
 LensFacts lensFactsFromJson(const nlohmann::json& j) {
     LensFacts f;
     f.id = j.at("id").get<std::string>();
-    f.path = j.at("path").get<std::string>();
     f.description = j.at("description").get<std::string>();
     f.error = j.at("error").get<std::string>();
     f.analysis = j.at("analysis");

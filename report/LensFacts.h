@@ -22,7 +22,9 @@ struct LensFacts {
     nlohmann::json analysis;        // lensAnalysisJson at the report's f-number and focus
     std::vector<ThickLensErrorSample> thickError;  // parallel rays across the entrance pupil
     double filmZ = 0;               // film plane of the illumination curve (the focused image plane)
-    double imageCircleRadius = 0;   // mm: the largest film radius any ray reaches
+    // mm: the largest film radius any ray reaches; 0 for none (no ray reaches the centre, or rays
+    // reach past 2 EFL + 50 mm, where the lens bounds no image circle)
+    double imageCircleRadius = 0;
     std::vector<IlluminationSample> illumination;  // from the axis to the image circle
     std::vector<DistortionSample> distortion;      // object at infinity, chief rays inside the image circle
 };

@@ -4,6 +4,7 @@
 
 #include "AnalysisJson.h"
 #include "AnalysisPlots.h"
+#include "AnalysisTables.h"
 #include "firstorder/Focus.h"
 #include "analysis/LensDesignAnalysis.h"
 #include "LensDiagram.h"
@@ -49,13 +50,16 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
         inputs.lens = settings;
         const LensDesignAnalysis a = analyzeLensDesign(loadLensSystem(path), inputs);
         ManifestItem m;
-        m.data = {{"fstop", a.lens.fstop}, {"fields_deg", json::array()}, {"settings", analysisSettingsText(a)}};
-        for (const FieldAnalysis& f : a.fields) m.data["fields_deg"].push_back(f.fieldDegrees);
+        m.data = {{"fstop", a.lens.fstop},
+                  {"settings_html", analysisSettingsHtml(a)},
+                  {"tables_html", analysisTablesHtml(a)},
+                  {"captions", json::array()}};
         m.files.push_back(folder + "analysis.json");
         writeSiteFile(runner.site(), m.files.back(), designAnalysisJson(a).dump(1) + "\n");
         for (const NamedSvg& plot : designAnalysisPlots(a)) {
             m.files.push_back(folder + plot.name + ".svg");
             writeSiteFile(runner.site(), m.files.back(), plot.svg + "\n");
+            m.data["captions"].push_back(plot.caption);
         }
         return m;
     });
@@ -66,8 +70,9 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
     design.jsonFile = item->files.front();
     design.plots.assign(item->files.begin() + 1, item->files.end());
     design.fstop = item->data.value("fstop", 0.0);
-    design.fieldsDegrees = item->data.value("fields_deg", std::vector<double>{});
-    design.settings = item->data.value("settings", std::string());
+    design.captions = item->data.value("captions", std::vector<std::string>{});
+    design.settingsHtml = item->data.value("settings_html", std::string());
+    design.tablesHtml = item->data.value("tables_html", std::string());
     return design;
 }
 
@@ -94,9 +99,9 @@ LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::s
         entry.facts = lensFactsFromJson(facts->data);
     } else {
         entry.facts.id = id;
-        entry.facts.path = path;
         entry.facts.error = "the lens data could not be stored (see the problems list)";
     }
+    entry.facts.path = path;
     if (entry.facts.error.empty()) entry.jsonFile = jsonFile;
 
     for (const char* mode : {"exact", "thick", "overlay"}) {

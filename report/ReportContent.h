@@ -36,12 +36,12 @@ struct ColourFringes {
 // The lens designer's analysis at the report's settings (lenslab analyze's defaults: F, d, C at
 // fields 0, 0.7, 1): its plots as SVG files and the data as JSON.
 struct DesignPlots {
-    std::vector<std::string> plots;  // SVG files relative to the site folder, in designAnalysisPlots' order
+    std::vector<std::string> plots;     // SVG files relative to the site folder, in designAnalysisPlots' order
+    std::vector<std::string> captions;  // each plot's
     std::string jsonFile;
     double fstop = 0;
-    std::vector<double> fieldsDegrees;  // the spot, MTF and fan plots' fields, in order
-    std::string settings;               // the image plane, reference, focus and largest field, in words
-    std::string problem;                // why they are missing
+    std::string settingsHtml, tablesHtml;  // the settings and the numbers, each marked with its place in the JSON
+    std::string problem;                   // why they are missing
 };
 
 struct LensEntry {

@@ -1,8 +1,8 @@
 #include "ReportPage.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 #include <sstream>
 
@@ -109,8 +109,9 @@ void lensTable(std::ostringstream& out, const LensFacts& f) {
     std::string stops;
     for (const auto& s : a["full_stops"]) stops += (stops.empty() ? "f/" : ", f/") + formatNumber(s.get<double>(), 3);
     out << "<tr><th scope=\"row\">Full stops</th><td colspan=\"3\">" << stops << "</td></tr>\n";
-    out << "<tr><th scope=\"row\">Image circle radius</th><td>" << formatFixed(f.imageCircleRadius, 2)
-        << "</td><td>mm</td><td>largest film radius any ray reaches</td></tr>\n";
+    out << "<tr><th scope=\"row\">Image circle radius</th><td>"
+        << (f.imageCircleRadius > 0 ? formatFixed(f.imageCircleRadius, 2) : "none")
+        << "</td><td>mm</td><td>largest film radius any ray reaches (none: rays reach past 2 EFL + 50 mm, or none the centre)</td></tr>\n";
     out << "</tbody>\n</table>\n";
 }
 
@@ -144,7 +145,7 @@ Plot illuminationPlot(const LensFacts& f) {
     p.y.min = 0;
     p.y.max = 1;
     PlotSeries light{"illumination (cos\u2074 included)", {}, {}}, area{"passing area (vignetting)", {}, {}};
-    area.dashed = true;
+    area.dash = LineDash::Dashed;
     for (const auto& s : f.illumination) {
         light.x.push_back(s.filmRadius);
         light.y.push_back(s.relativeIllumination);
@@ -191,39 +192,24 @@ void colourFringes(std::ostringstream& out, const LensFacts& f, const ColourFrin
         << formatFixed(c.rgb.renderSeconds, 2) << " s RGB.</p>\n</section>\n";
 }
 
-// What one of designAnalysisPlots' files shows, from its name ("spot-field-2", "distortion", ...).
-std::string designCaption(const std::string& file, const DesignPlots& d) {
-    const std::string name = std::filesystem::path(file).stem().string();
-    const auto field = [&](const std::string& prefix) -> std::string {
-        const std::size_t i = std::stoul(name.substr(prefix.size())) - 1;
-        return i < d.fieldsDegrees.size() ? formatFixed(d.fieldsDegrees[i], 1) + "\u00b0" : "?";
-    };
-    if (name.rfind("spot-field-", 0) == 0)
-        return "Spot diagram at " + field("spot-field-") + " (F, d, C): ray hits on the image plane around the field's reference point.";
-    if (name.rfind("mtf-field-", 0) == 0)
-        return "MTF at " + field("mtf-field-") + ": sagittal and tangential, from the pupil (diffraction) and the spot (geometric), "
-               "with the diffraction limit.";
-    if (name.rfind("fans-field-", 0) == 0)
-        return "Transverse ray aberration at " + field("fans-field-") + ", tangential and sagittal, against pupil coordinate.";
-    if (name == "field-curvature") return "Field curvature: sagittal and tangential focus against field, from the image plane.";
-    if (name == "distortion") return "Distortion in percent against field.";
-    if (name == "relative-illumination") return "Relative illumination against image height on the film, 1 on the axis.";
-    if (name == "chromatic-focal-shift") return "Chromatic focal shift: the paraxial focus against wavelength, from the d line's.";
-    return name;
+bool drawsCurvesAgainstField(const DesignPlots& d) {
+    return std::any_of(d.plots.begin(), d.plots.end(), [](const std::string& file) {
+        return file.size() >= 15 && file.compare(file.size() - 15, 15, "/distortion.svg") == 0;
+    });
 }
 
 // lenslab analyze's plots for the lens, each an SVG file opened full size by a click.
 void designSection(std::ostringstream& out, const LensFacts& f, const DesignPlots& d) {
     if (d.plots.empty() && d.problem.empty()) return;  // not asked for
-    out << "<section class=\"design\">\n<h4>The lens designer's analysis at f/" << formatFNumber(d.fstop) << "</h4>\n";
-    if (!d.settings.empty()) out << "<p class=\"settings\">" << escapeMarkup(d.settings) << "</p>\n";
+    out << "<section class=\"analysis\" data-lens=\"" << escapeMarkup(f.id) << "\">\n<h4>The lens designer's analysis at f/"
+        << formatFNumber(d.fstop) << "</h4>\n";
     if (!d.problem.empty()) {
         out << "<p class=\"problem\">" << escapeMarkup(d.problem) << "</p>\n</section>\n";
         return;
     }
-    out << "<div class=\"plots design-plots\">\n";
-    for (const std::string& plot : d.plots) {
-        const std::string href = escapeMarkup(plot), caption = designCaption(plot, d);
+    out << d.settingsHtml << "<div class=\"analysis-tables\">\n" << d.tablesHtml << "</div>\n<div class=\"plots design-plots\">\n";
+    for (std::size_t i = 0; i < d.plots.size(); ++i) {
+        const std::string href = escapeMarkup(d.plots[i]), caption = i < d.captions.size() ? d.captions[i] : "";
         out << figure("<a href=\"" + href + "\"><img src=\"" + href + "\" alt=\"" + escapeMarkup(f.id + ": " + caption) +
                           "\" loading=\"lazy\"></a>",
                       escapeMarkup(caption));
@@ -252,9 +238,13 @@ void lensArticle(std::ostringstream& out, const LensEntry& lens) {
     if (!lens.problem.empty()) out << "<p class=\"problem\">" << escapeMarkup(lens.problem) << "</p>\n";
     out << "</div>\n</div>\n<div class=\"plots\">\n";
     out << figure(svgPlot(thickErrorPlot(f)), "Rays parallel to the axis across the entrance pupil, where each crosses the F\u2032 plane.");
-    out << figure(svgPlot(illuminationPlot(f)),
-                  "Irradiance from a uniform scene on the film at the exact focus, by exact tracing; 1 at the centre.");
-    out << figure(svgPlot(distortionPlot(f)), "Chief ray height on the F\u2032 plane against f tan \u03b8; negative is barrel.");
+    // The designer's analysis below draws relative illumination and distortion against field: the
+    // panel draws its own only where that analysis draws none (no largest field, or not asked for).
+    if (!drawsCurvesAgainstField(lens.design)) {
+        out << figure(svgPlot(illuminationPlot(f)),
+                      "Irradiance from a uniform scene on the film at the exact focus, by exact tracing; 1 at the centre.");
+        out << figure(svgPlot(distortionPlot(f)), "Chief ray height on the F\u2032 plane against f tan \u03b8; negative is barrel.");
+    }
     out << "</div>\n";
     designSection(out, f, lens.design);
     if (lens.colourFringes) colourFringes(out, f, *lens.colourFringes);

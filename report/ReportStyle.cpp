@@ -52,6 +52,12 @@ img { max-width: 100%; height: auto; display: block; background: var(--panel); }
 .plots { display: grid; grid-template-columns: repeat(auto-fit, minmax(320px, 1fr)); gap: 20px; margin-top: 20px; }
 .plots.wide { grid-template-columns: repeat(auto-fit, minmax(480px, 1fr)); }
 svg.plot { max-width: 100%; height: auto; display: block; }
+.analysis-settings { display: flex; flex-wrap: wrap; gap: 2px 18px; margin: 6px 0 12px; font-size: 0.9rem; }
+.analysis-settings div { display: flex; gap: 6px; }
+.analysis-settings dt { color: var(--muted); }
+.analysis-settings dd { margin: 0; font-variant-numeric: tabular-nums; }
+.analysis-tables { display: flex; flex-wrap: wrap; gap: 12px 24px; align-items: flex-start; max-width: 100%; overflow-x: auto; }
+.analysis-numbers td[data-json] { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 .triptych { display: grid; grid-template-columns: repeat(3, minmax(0, 1fr)); gap: 12px; }
 .triptych img { width: 100%; image-rendering: auto; }
 .comparison { margin-bottom: 12px; }

@@ -45,7 +45,8 @@ double niceStep(double rough) {
     return (m < 1.5 ? 1 : m < 2.2 ? 2 : m < 3.5 ? 2.5 : m < 7.5 ? 5 : 10) * p;
 }
 
-Scale makeScale(const PlotAxis& axis, const std::vector<double>& values, double pixelLo, double pixelHi) {
+// About `intervals` linear ticks (log axes tick their decades).
+Scale makeScale(const PlotAxis& axis, const std::vector<double>& values, double pixelLo, double pixelHi, int intervals = 5) {
     Scale s;
     s.log = axis.logarithmic;
     s.pixelLo = pixelLo;
@@ -72,7 +73,7 @@ Scale makeScale(const PlotAxis& axis, const std::vector<double>& values, double 
         lo -= pad;
         hi += pad;
     }
-    const double step = niceStep((hi - lo) / 5);
+    const double step = niceStep((hi - lo) / intervals);
     s.lo = axis.min ? lo : std::floor(lo / step + 1e-9) * step;
     s.hi = axis.max ? hi : std::ceil(hi / step - 1e-9) * step;
     const double mantissa = step / std::pow(10.0, std::floor(std::log10(step)));
@@ -82,14 +83,40 @@ Scale makeScale(const PlotAxis& axis, const std::vector<double>& values, double 
     return s;
 }
 
-double legendEntryWidth(const PlotSeries& s) { return 28 + kCharWidth * s.label.size() + 14; }
+double textWidth(const std::string& text) { return kCharWidth * text.size(); }
 
-// Series indices per legend row, filling rows up to `width`.
-std::vector<std::vector<std::size_t>> legendRows(const Plot& plot, double width) {
+bool labelsCollide(const Scale& s) {
+    for (std::size_t i = 1; i < s.ticks.size(); ++i)
+        if (std::fabs(s(s.ticks[i]) - s(s.ticks[i - 1])) < 0.5 * (textWidth(s.label(s.ticks[i])) + textWidth(s.label(s.ticks[i - 1]))) + 8)
+            return true;
+    return false;
+}
+
+double legendEntryWidth(const PlotSeries& s) { return 28 + textWidth(s.label) + 14; }
+
+std::string seriesColour(const PlotSeries& s, std::size_t index) {
+    return s.colour.empty() ? kPalette[index % kPaletteSize] : s.colour;
+}
+
+const char* dashAttribute(LineDash dash) {
+    return dash == LineDash::Dashed ? " stroke-dasharray=\"6 4\"" : dash == LineDash::Dotted ? " stroke-dasharray=\"1.5 3\" stroke-linecap=\"round\"" : "";
+}
+
+// The legend's entries: the plot's own, else one per series when there are several.
+std::vector<PlotSeries> legendEntries(const Plot& plot) {
+    std::vector<PlotSeries> entries = !plot.legend.empty() ? plot.legend
+                                      : plot.series.size() > 1 ? plot.series
+                                                               : std::vector<PlotSeries>{};
+    for (std::size_t i = 0; i < entries.size(); ++i) entries[i].colour = seriesColour(entries[i], i);
+    return entries;
+}
+
+// Entry indices per legend row, filling rows up to `width`.
+std::vector<std::vector<std::size_t>> legendRows(const std::vector<PlotSeries>& entries, double width) {
     std::vector<std::vector<std::size_t>> rows;
     double used = 0;
-    for (std::size_t i = 0; i < plot.series.size(); ++i) {
-        const double w = legendEntryWidth(plot.series[i]);
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const double w = legendEntryWidth(entries[i]);
         if (rows.empty() || (used > 0 && used + w > width)) {
             rows.emplace_back();
             used = 0;
@@ -100,7 +127,7 @@ std::vector<std::vector<std::size_t>> legendRows(const Plot& plot, double width)
     return rows;
 }
 
-void drawSeries(std::ostringstream& out, const PlotSeries& s, const char* colour, const Scale& x, const Scale& y) {
+void drawSeries(std::ostringstream& out, const PlotSeries& s, const std::string& colour, const Scale& x, const Scale& y) {
     const bool line = s.style != SeriesStyle::Markers, markers = s.style != SeriesStyle::Line;
     if (line) {
         std::string d;
@@ -115,7 +142,7 @@ void drawSeries(std::ostringstream& out, const PlotSeries& s, const char* colour
         }
         if (!d.empty())
             out << "<path d=\"" << d.substr(1) << "\" fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\""
-                << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << " stroke-linejoin=\"round\"/>\n";
+                << dashAttribute(s.dash) << " stroke-linejoin=\"round\"/>\n";
     }
     if (markers)
         for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
@@ -128,7 +155,8 @@ void drawSeries(std::ostringstream& out, const PlotSeries& s, const char* colour
 
 std::string svgPlot(const Plot& plot) {
     const double plotRight = plot.width - kRight;
-    const auto legend = plot.series.size() > 1 ? legendRows(plot, plotRight - kLeft) : std::vector<std::vector<std::size_t>>{};
+    const std::vector<PlotSeries> entries = legendEntries(plot);
+    const auto legend = legendRows(entries, plotRight - kLeft);
     const double height = plot.height + kLegendRow * legend.size();
     const double plotBottom = plot.height - kAxisBand;
     // Ranges from the points that will be drawn: both coordinates finite (and positive on a log axis).
@@ -140,7 +168,9 @@ std::string svgPlot(const Plot& plot) {
                 xs.push_back(s.x[i]);
                 ys.push_back(s.y[i]);
             }
-    const Scale x = makeScale(plot.x, xs, kLeft, plotRight);
+    // Fewer x ticks where their labels would touch (long decimals on a narrow plot).
+    Scale x = makeScale(plot.x, xs, kLeft, plotRight);
+    for (int intervals = 4; intervals >= 1 && labelsCollide(x); --intervals) x = makeScale(plot.x, xs, kLeft, plotRight, intervals);
     const Scale y = makeScale(plot.y, ys, plotBottom, kTop);
 
     std::ostringstream out;
@@ -180,24 +210,26 @@ std::string svgPlot(const Plot& plot) {
         << escapeMarkup(plot.y.label) << "</text>\n";
 
     out << "<g clip-path=\"url(#" << plot.id << "-area)\">\n";
-    for (std::size_t i = 0; i < plot.series.size(); ++i) drawSeries(out, plot.series[i], kPalette[i % kPaletteSize], x, y);
+    for (std::size_t i = 0; i < plot.series.size(); ++i) drawSeries(out, plot.series[i], seriesColour(plot.series[i], i), x, y);
     out << "</g>\n";
+    if (!plot.note.empty())
+        out << "<text x=\"" << num(0.5 * (kLeft + plotRight)) << "\" y=\"" << num(0.5 * (kTop + plotBottom))
+            << "\" text-anchor=\"middle\" fill=\"#b42318\">" << escapeMarkup(plot.note) << "</text>\n";
 
     // Legend: swatch and label per series, in rows under the axis label.
     for (std::size_t r = 0; r < legend.size(); ++r) {
         double lx = kLeft;
         const double ly = plot.height + r * kLegendRow + 2;
         for (std::size_t i : legend[r]) {
-            const PlotSeries& s = plot.series[i];
-            const char* colour = kPalette[i % kPaletteSize];
+            const PlotSeries& s = entries[i];
             if (s.style == SeriesStyle::Markers)
-                out << "<circle cx=\"" << num(lx + 11) << "\" cy=\"" << num(ly) << "\" r=\"3.5\" fill=\"" << colour << "\"/>\n";
+                out << "<circle cx=\"" << num(lx + 11) << "\" cy=\"" << num(ly) << "\" r=\"3.5\" fill=\"" << s.colour << "\"/>\n";
             else
                 out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 22) << "\" y2=\""
-                    << num(ly) << "\" stroke=\"" << colour << "\" stroke-width=\"2\""
-                    << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
-            out << "<text x=\"" << num(lx + 28) << "\" y=\"" << num(ly) << "\" dy=\"0.35em\">" << escapeMarkup(s.label)
-                << "</text>\n";
+                    << num(ly) << "\" stroke=\"" << s.colour << "\" stroke-width=\"2\"" << dashAttribute(s.dash) << "/>\n";
+            out << "<text x=\"" << num(lx + 28) << "\" y=\"" << num(ly) << "\" dy=\"0.35em\"";
+            for (const auto& [name, value] : s.labelAttributes) out << " " << name << "=\"" << escapeMarkup(value) << "\"";
+            out << ">" << escapeMarkup(s.label) << "</text>\n";
             lx += legendEntryWidth(s);
         }
     }

@@ -2,6 +2,8 @@
 # The project's mutation run (issue 24): applies each one-line mutant of tests/mutants/mutants.txt
 # to the source, one at a time, rebuilds incrementally, runs the tests that cover its folder (the
 # whole suite to confirm a survivor), restores the file and prints the kill rate and the survivors.
+# A kill must repeat: a failing test is run up to three times (ctest --repeat until-pass:3), and a
+# mutant whose failing tests all pass on a repeat survives (a flaky test under load kills nothing).
 # Not part of CI (an hour on two cores). Run it on a tree whose tests pass, with build/ configured
 # (scripts/build.sh).
 #
@@ -132,10 +134,10 @@ for i in "${selected[@]}"; do
     if ! cmake --build "$build" -j2 >"$log" 2>&1; then
         outcome="does not compile"
         stillborn=$((stillborn + 1)); nocompile+=("${names[$i]}")
-    elif ! ctest --test-dir "$build" -R "${regexes[$i]}" -j2 --timeout "$timeout" >"$log" 2>&1; then
+    elif ! ctest --test-dir "$build" -R "${regexes[$i]}" -j2 --timeout "$timeout" --repeat until-pass:3 >"$log" 2>&1; then
         outcome="killed"
         killed=$((killed + 1))
-    elif [ "$confirm" = 1 ] && ! ctest --test-dir "$build" -j2 --timeout "$timeout" >"$log" 2>&1; then
+    elif [ "$confirm" = 1 ] && ! ctest --test-dir "$build" -j2 --timeout "$timeout" --repeat until-pass:3 >"$log" 2>&1; then
         outcome="killed by the whole suite (not by '${regexes[$i]}')"
         killed=$((killed + 1))
     else

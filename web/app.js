@@ -1,7 +1,8 @@
 // lenslab web page: the lens workbench. Plain ES modules against the service's API (docs/api.md),
 // no build step and no external resources: lens.js (lenses and their controls), renders.js (renders
 // and their history), viewer.js (exposure, comparison, zoom), report.js (the report build),
-// token.js (the API token field), editor.js (the live prescription editor).
+// token.js (the API token field), editor.js (the live prescription editor), analysis.js (the
+// designer's analysis of the lens shown).
 import { showMessage } from "./api.js";
 import { setUpTokenField } from "./token.js";
 import { loadLenses, setUpLensPanel } from "./lens.js";

@@ -1,13 +1,14 @@
 // The live prescription editor: the selected lens's surfaces as an editable table. Every accepted
 // edit asks POST /api/prescriptions/preview for the edited lens (nothing is stored) and shows its
-// first-order and colour data, diagram, spot diagrams and MTF in place of the stored lens's. One
+// first-order and colour data, diagram and analysis (analysis.js) in place of the stored lens's. One
 // preview is in flight at a time; edits made meanwhile are sent together when it answers, and an
 // answer overtaken by a newer edit is dropped. A cell whose text is not acceptable is marked with
 // the reason and the lens is not sent until it is corrected.
 import { $, api, authorizedFetch, postJson, showMessage } from "./api.js";
 import { COLUMNS, needsZemax, newRow, setGlassCatalog } from "./prescription-cells.js";
 import { UndoHistory } from "./undo-history.js";
-import { attachEditor, lensPreviewSettings, loadLenses, selectedLens, showDiagramPng, showLensData } from "./lens.js";
+import { attachEditor, lensPreviewSettings, loadLenses, selectedLens, selectedLensName, showDiagramPng, showLensData } from "./lens.js";
+import { showAnalysis } from "./analysis.js";
 
 const state = {
   lensId: null,
@@ -35,7 +36,7 @@ async function loadPrescription(id) {
   state.prescription = prescription;
   state.history = new UndoHistory(prescription.rows);
   setRows(prescription.rows);
-  $("editor-name").value = `${id}-edited`;
+  $("editor-name").value = `${selectedLensName()}-edited`;
   $("editor").dataset.lens = id;
   say("");
 }
@@ -241,7 +242,7 @@ async function sendPreview() {
 async function showPreview(answer) {
   await showDiagramPng("data:image/png;base64," + answer.diagram_png_base64, "edited lens");
   showLensData(answer.lens);
-  showAnalysis(answer.analysis);
+  showAnalysis(answer.analysis, hasEdits() ? "edited lens" : state.lensId);
   const ms = performance.now() - state.editedAt;
   state.editedAt = 0;
   state.shown++;
@@ -260,50 +261,40 @@ function showPreviewError(e) {
   say(`Not shown: ${e.message}`, true);
 }
 
-function showAnalysis(analysis) {
-  const body = $("editor-spots").tBodies[0];
-  body.replaceChildren();
-  const um = (mm) => (mm === null ? "–" : (mm * 1000).toFixed(2));
-  for (const field of analysis.fields) {
-    const tr = body.insertRow();
-    const spots = field.spots;
-    const d = spots.find((s) => Math.abs(s.wavelength_nm - 587.5618) < 0.01) || spots[0];
-    for (const v of [`${field.field_deg.toFixed(2)}°`, um(d.rms_radius_mm), um(d.geo_radius_mm),
-                     spots.map((s) => um(s.rms_radius_mm)).join(" / ")])
-      tr.insertCell().textContent = v;
-  }
-  const plots = $("editor-plots");
-  // Parsed as HTML, as the report page inlines its own plots; parsing does
-  // not run scripts, and the service wrote every byte.
-  const parser = new DOMParser();
-  const figures = Object.entries(analysis.plots_svg).map(([name, svg]) => {
-    const figure = document.createElement("figure");
-    figure.dataset.plot = name;
-    figure.append(document.importNode(parser.parseFromString(svg, "text/html").querySelector("svg"), true));
-    return figure;
-  });
-  plots.replaceChildren(...figures);
-}
-
 // ---- saving, downloading, rendering -----------------------------------------------------------------
 
+// The rows written as a file; an Error with the service's reason (and .status: 422 for what the
+// format cannot hold, as a .dat cannot hold a conic, a primary wavelength other than the d line or a
+// catalog order that picks a glass).
 async function prescriptionText(format, body) {
   const response = await authorizedFetch(`/api/prescriptions/${format === "zmx" ? "prescription.zmx" : "table.dat"}`, {
     method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
   const text = await response.text();
-  if (!response.ok) throw new Error(JSON.parse(text).error);
+  if (!response.ok) throw Object.assign(new Error(JSON.parse(text).error), { status: response.status });
   return text;
 }
 
-// Uploads the edited rows as a new lens (a .dat when a table can hold them, else a .zmx) and selects it.
+// The rows as a .dat when a table can hold them, else as a .zmx.
+async function savedFile(body) {
+  if (!needsZemax(state.rows)) {
+    try {
+      return { format: "dat", text: await prescriptionText("dat", body) };
+    } catch (e) {
+      if (e.status !== 422) throw e;
+    }
+  }
+  return { format: "zmx", text: await prescriptionText("zmx", body) };
+}
+
+// Uploads the edited rows as a new lens and selects it.
 export async function saveAsNewLens() {
   if (state.invalid.size) throw new Error("some cells need correcting first");
-  const format = needsZemax(state.rows) ? "zmx" : "dat";
-  const name = ($("editor-name").value.trim() || `${state.lensId}-edited`).replace(/\.(dat|zmx)$/, "") + "." + format;
-  const comments = [name.replace(/\.(dat|zmx)$/, "") + ` (edited from ${state.lensId})`, ...(state.prescription.comments || []).slice(1)];
-  const text = await prescriptionText(format, { ...prescriptionBody(state.rows), comments });
+  const base = ($("editor-name").value.trim() || `${selectedLensName()}-edited`).replace(/\.(dat|zmx)$/, "");
+  const comments = [`${base} (edited from ${selectedLensName()})`, ...(state.prescription.comments || []).slice(1)];
+  const file = await savedFile({ ...prescriptionBody(state.rows), comments });
+  const name = `${base}.${file.format}`;
   const lens = await api(`/api/lenses?name=${encodeURIComponent(name)}&layout=gap-after`,
-                         { method: "POST", headers: { "Content-Type": "text/plain" }, body: text });
+                         { method: "POST", headers: { "Content-Type": "text/plain" }, body: file.text });
   await loadLenses(lens.id);
   say(`Saved as ${lens.id} (${name}).`);
   return lens.id;
@@ -314,7 +305,7 @@ async function download(format) {
     const text = await prescriptionText(format, prescriptionBody(state.rows));
     const link = document.createElement("a");
     link.href = URL.createObjectURL(new Blob([text], { type: "text/plain" }));
-    link.download = `${$("editor-name").value.trim() || state.lensId}.${format}`;
+    link.download = `${$("editor-name").value.trim() || selectedLensName()}.${format}`;
     document.body.append(link);
     link.click();
     link.remove();

@@ -2,6 +2,7 @@
 // driven like the course's lens viewer (↑/↓ f-number by 0.1, Shift+↑/↓ a full stop, m the diagram
 // mode, ←/→ the focus). Out-of-range f-numbers are refused with the lens's range, never clamped.
 import { $, api, authorizedFetch, clearMessage, fixed, showMessage } from "./api.js";
+import { analysisChoices, setUpAnalysis, showStoredAnalysis } from "./analysis.js";
 
 const state = {
   lenses: [],
@@ -33,7 +34,7 @@ export async function loadLenses(selectId) {
     button.type = "button";
     button.dataset.id = lens.id;
     // Bundled lenses go by their id; an upload by the name it was uploaded under (its id is random).
-    button.append(lens.bundled ? lens.id : lens.name);
+    button.append(displayName(lens));
     const detail = document.createElement("small");
     detail.textContent = `EFL ${fixed(lens.efl, 1)} mm, f/${fixed(lens.fstop_min, 2)}` + (lens.bundled ? "" : ` · uploaded (${lens.id})`);
     button.append(detail);
@@ -158,6 +159,15 @@ function cycleMode() {
 
 export function selectedLens() { return state.lensId; }
 
+// What people call a lens: a bundled table's id; an upload's own file name without its extension
+// (its id is a random one).
+function displayName(lens) { return lens.bundled ? lens.id : lens.name.replace(/\.(dat|zmx|seq|txt)$/i, ""); }
+
+export function selectedLensName() {
+  const lens = state.lenses.find((l) => l.id === state.lensId);
+  return lens ? displayName(lens) : state.lensId;
+}
+
 async function selectLens(id) {
   clearMessage();
   state.lensId = id;
@@ -166,7 +176,8 @@ async function selectLens(id) {
   if (!summary) return;
   state.fstopMin = summary.fstop_min;
   state.fstopMax = summary.fstop_max;  // the service's range: the lens's widest to f/64
-  $("lens-title").textContent = summary.id;
+  $("lens-title").textContent = displayName(summary);
+  $("lens-title").dataset.id = id;
   $("lens-description").textContent = summary.description || summary.name;
   $("delete-lens").hidden = summary.bundled;
   trySetFstop(state.fstopMin);
@@ -178,6 +189,13 @@ async function selectLens(id) {
 function scheduleUpdate() {
   clearTimeout(state.updateTimer);
   state.updateTimer = setTimeout(updateLensView, 150);
+}
+
+// A choice of the analysis panel changed: the analysis again, of the lens shown.
+function updateAnalysis() {
+  if (!state.lensId || wavelengthParameter() === null) return;
+  if (editor.hasEdits()) editor.requestPreview();
+  else showStoredAnalysis(state.lensId, analysisLensQuery());
 }
 
 // The wavelength box: empty is the lens's own primary wavelength; out-of-range values are marked and
@@ -195,9 +213,14 @@ function wavelengthParameter() {
 const lensQuery = () => `fstop=${fstopParameter()}&focus=${currentFocus()}${wavelengthParameter()}`;
 const colourParameter = () => ($("colour-fans").checked ? "&colour=1" : "");
 
+// The analysis's lens settings: no f-number at the widest, so that it is the widest aperture's
+// exactly (as `lenslab analyze` without --fstop).
+const analysisLensQuery = () =>
+  (state.fstop > state.fstopMin + 1e-9 ? `fstop=${fstopParameter()}&` : "") + `focus=${currentFocus()}${wavelengthParameter()}`;
+
 // The settings above for the edited lens: no f-number at the widest, which an edit may move.
 export function lensPreviewSettings() {
-  const settings = { focus: currentFocus(), mode: currentMode(), colour: $("colour-fans").checked };
+  const settings = { focus: currentFocus(), mode: currentMode(), colour: $("colour-fans").checked, ...analysisChoices() };
   if (state.fstop > state.fstopMin + 1e-9) settings.fstop = fstopParameter();
   const nm = $("wavelength").value.trim();
   if (nm !== "") settings.wavelength = Number(nm);
@@ -211,6 +234,7 @@ async function updateLensView() {
   const request = ++state.dataRequest;
   $("diagram-status").textContent = "Drawing the diagram…";
   loadDiagram(`/api/lenses/${id}/diagram.png?mode=${currentMode()}&${lensQuery()}${colourParameter()}&size=1000x500`, request);
+  showStoredAnalysis(state.lensId, analysisLensQuery());
   try {
     const lens = await api(`/api/lenses/${id}?${lensQuery()}`);
     if (request !== state.dataRequest) return;
@@ -386,5 +410,6 @@ export function setUpLensPanel() {
   $("wavelength").addEventListener("input", scheduleUpdate);
   $("lens-controls").addEventListener("submit", (e) => e.preventDefault());
   $("delete-lens").addEventListener("click", deleteLens);
+  setUpAnalysis(updateAnalysis);
   document.addEventListener("keydown", onKey);
 }

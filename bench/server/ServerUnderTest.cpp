@@ -1,6 +1,9 @@
 #include "ServerUnderTest.h"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,12 +21,12 @@
 
 namespace lenslab::bench {
 
-ServerUnderTest startServer(const std::string& binary, const std::vector<std::string>& extra) {
+ServerUnderTest startServer(const std::string& binary, const std::vector<std::string>& extra, const std::string& data) {
     ServerUnderTest s;
     char pattern[] = "/tmp/lenslab-load-XXXXXX";
     s.folder = mkdtemp(pattern);
     const std::string log = s.folder + "/server.out";
-    std::vector<std::string> args = {binary, "serve", "--port", "0", "--data", s.folder + "/data",
+    std::vector<std::string> args = {binary, "serve", "--port", "0", "--data", data.empty() ? s.folder + "/data" : data,
                                      "--access-log", s.folder + "/access.log"};
     args.insert(args.end(), extra.begin(), extra.end());
     std::cout.flush();
@@ -37,7 +40,7 @@ ServerUnderTest startServer(const std::string& binary, const std::vector<std::st
         _exit(127);
     }
     const std::regex listening(R"(listening on http://[^:]+:(\d+)/)");
-    for (int i = 0; i < 400; ++i) {
+    for (int i = 0; i < 12000; ++i) {
         std::ifstream in(log);
         std::stringstream text;
         text << in.rdbuf();
@@ -65,6 +68,15 @@ double residentMiB(pid_t pid) {
     while (std::getline(status, line))
         if (line.rfind("VmRSS:", 0) == 0) return std::strtod(line.c_str() + 6, nullptr) / 1024.0;
     return 0;
+}
+
+std::function<void(int)> fromLoopbackAddress(int index) {
+    return [index](int socket) {
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl((127u << 24) | static_cast<unsigned>(2 + index % 250));
+        ::bind(socket, reinterpret_cast<sockaddr*>(&address), sizeof address);
+    };
 }
 
 double percentile(std::vector<double> v, double p) {

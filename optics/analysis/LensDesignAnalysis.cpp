@@ -13,6 +13,7 @@
 #include "firstorder/Chromatic.h"
 #include "prescription/NumberText.h"
 #include "prescription/OpticsError.h"
+#include "prescription/Wavelength.h"
 
 namespace lenslab {
 
@@ -238,10 +239,10 @@ void checkDesignAnalysisInputs(const DesignAnalysisInputs& in) {
     const std::string& ws = in.wavelengthsSource;
     require(!in.wavelengths.empty() && in.wavelengths.size() <= std::size_t(kMaxAnalysisWavelengths), ws,
             "give 1 to " + std::to_string(kMaxAnalysisWavelengths) + " wavelengths");
-    for (double nm : in.wavelengths)
-        require(nm >= kShortestWavelength && nm <= kLongestWavelength, ws,
-                "wavelength " + formatNumber(nm) + " nm lies outside " + formatNumber(kShortestWavelength) + "-" +
-                    formatNumber(kLongestWavelength) + " nm");
+    for (double nm : in.wavelengths) {
+        const auto problem = wavelengthProblem(nm);
+        require(!problem, ws, problem.value_or(""));
+    }
     require(in.weights.empty() || in.weights.size() == in.wavelengths.size(), ws, "one weight per wavelength");
     for (double w : in.weights) require(w > 0 && std::isfinite(w), ws, "weights must be positive");
     const std::string& fs = in.fieldsSource;

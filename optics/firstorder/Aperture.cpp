@@ -39,6 +39,23 @@ double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta,
     return std::fabs(heightAtZ(r.ray, lens.stop().z));
 }
 
+// The narrowest f-number at which some light still passes on axis. A central obscuration (a reflex
+// lens's secondary mirror, a hole in its primary) blocks the middle of every cone from F', so a
+// stop closed into its shadow passes nothing: the rim ray of the cone, traced with the
+// obscurations, must pass. Cones from sinWidest down pass until the shadow's edge; bisected there.
+double narrowestPassingFstop(const LensSystem& lens, const FirstOrder& fo, double sinWidest) {
+    const auto rimPasses = [&](double sinTheta) {
+        return traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene).ok();
+    };
+    double lo = 1.0 / (2.0 * kNarrowestFstop), hi = sinWidest;
+    if (lo >= hi || rimPasses(lo)) return kNarrowestFstop;
+    if (!rimPasses(hi)) throw OpticsError("no ray from the rear focal point passes the lens's obscurations");
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (rimPasses(mid) ? hi : lo) = mid;
+    }
+    return 1.0 / (2.0 * hi);
+}
 
 }  // namespace
 
@@ -66,7 +83,7 @@ ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo)
     range.fstopMin = 1.0 / (2.0 * lo);
     // A lens slower than kNarrowestFstop at its widest (a micrometre stop, a kilometre focal length) still
     // has that one setting, rather than a range whose ends cross.
-    range.fstopMax = std::max(kNarrowestFstop, range.fstopMin);
+    range.fstopMax = std::max(narrowestPassingFstop(lens, fo, lo), range.fstopMin);
     bool blocked = false;
     range.stopDiameterMax = 2.0 * stopHeight(lens, fo, lo, range.stopOnly, &blocked);
     return range;

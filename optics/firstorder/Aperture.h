@@ -14,7 +14,9 @@ constexpr double kNarrowestFstop = 64.0;
 
 struct ApertureRange {
     double fstopMin = 0;                // the widest the lens allows (table stop or an element clips)
-    double fstopMax = kNarrowestFstop;  // or fstopMin, for a lens slower than that at its widest
+    // kNarrowestFstop; fstopMin for a lens slower than that at its widest; for an obscured lens,
+    // where its stop closes into the obscuration's shadow (past it no light passes on axis)
+    double fstopMax = kNarrowestFstop;
     double stopDiameterMax = 0;   // the stop opening at fstopMin, mm
     // The cones pass the stop alone: the other apertures block the axis (an off-axis section of a
     // design used at its off-axis fields), so the stop sets the f-number.

@@ -14,6 +14,7 @@
 #include "prescription/Medium.h"
 #include "prescription/NumberText.h"
 #include "prescription/TextEncoding.h"
+#include "prescription/Wavelength.h"
 
 namespace lenslab {
 
@@ -231,7 +232,7 @@ void readTitle(Reader& r, const Command& c) {
 void readWl(Reader& r, const Command& c) {
     r.wavelengths = r.numbers(c, kMaxWavelengths);
     for (double nm : r.wavelengths)
-        if (!(nm > 0)) r.fail(c.line, "WL wavelengths are positive nanometres, found " + formatNumber(nm));
+        if (const auto problem = wavelengthProblem(nm)) r.fail(c.line, "WL: " + *problem);
 }
 
 void readWtw(Reader& r, const Command& c) { r.weights = r.numbers(c, kMaxWavelengths); }

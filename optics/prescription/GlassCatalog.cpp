@@ -248,6 +248,7 @@ GlassLookup findGlass(const std::string& name, const std::vector<std::string>& p
     GlassLookup lookup;
     for (const Source& source : order) lookup.searched.push_back(source.name);
 
+    if (name.size() > kMaxGlassNameLength) return lookup;
     const std::string key = nameKey(name);
     const Medium* best = nullptr;
     std::tuple<std::size_t, int, std::size_t, std::string_view> bestRank;

@@ -17,6 +17,11 @@ struct GlassLookup {
     std::vector<std::string> suggestions;  // when not found: the nearest names, nearest first
 };
 
+// The longest name a glass is looked up by (the catalogs' longest is 13 characters): a longer one
+// is unknown at once, without the search for the nearest names (an edit distance against every
+// glass, which a name of a megabyte would make cost seconds).
+constexpr std::size_t kMaxGlassNameLength = 32;
+
 // Finds a catalog glass by name: case, spaces, underscores and hyphens do not matter, and a name
 // without its maker prefix ("BK7", "LAH64", "LAK02") finds the prefixed glass. preferredCatalogs
 // (a .zmx GCAT line: "SCHOTT", "OHARA", "SUMITA_AUG2011", ...) are searched first, then the

@@ -38,6 +38,10 @@ const GlassSubstitute* substituteFor(const LensTable& table, const std::string& 
 }
 
 [[noreturn]] void unknownGlass(const LensTable& table, const LensTableRow& r, const GlassLookup& found) {
+    if (r.glass.size() > kMaxGlassNameLength)
+        throw LensTableError(table.name, r.line, "a glass name of " + std::to_string(r.glass.size()) +
+                                                     " characters: catalog names have at most " +
+                                                     std::to_string(kMaxGlassNameLength));
     std::string msg = "unknown glass '" + r.glass + "' (searched " + joined(found.searched) + ")";
     if (!found.suggestions.empty()) msg += "; nearest: " + joined(found.suggestions);
     msg += "; give its nd and Vd instead to use a model glass, load its maker's catalog (--glass-catalog FILE.agf), "

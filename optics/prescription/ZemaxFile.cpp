@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "prescription/TextEncoding.h"
+#include "prescription/Wavelength.h"
 
 namespace lenslab {
 
@@ -35,7 +36,9 @@ struct RawSurface {
     int line = 0;
     std::string type = "STANDARD";
     int curvatureLine = 0;  // 0: no CURV
-    double curvature = 0;
+    // Kept in long double: the radius is 1 / CURV, and a radius written as its curvature to 21
+    // digits (formats/ZemaxWriter.cpp) then reads back as the same double.
+    long double curvature = 0;
     int thicknessLine = 0;
     double thickness = 0;  // may be infinite (object surface only)
     double conic = 0;
@@ -56,7 +59,7 @@ struct RawSurface {
     std::string comment;              // COMM
 };
 
-struct Wavelength { double micrometres; double weight; };
+struct Wavelength { double micrometres; double weight; int line; };
 
 struct Fields {
     int type = 0;
@@ -168,9 +171,7 @@ void readWavm(Reader& r, const Line& l) {
     if (slot != int(r.wavelengths.size()) + 1)
         r.fail(l.number, "WAVM " + l.fields[0] + " out of order: expected slot " +
                              std::to_string(r.wavelengths.size() + 1));
-    const double um = r.number(l, 1);
-    if (um <= 0) r.fail(l.number, "WAVM wavelength must be positive (micrometres), found " + l.fields[1]);
-    r.wavelengths.push_back({um, l.fields.size() > 2 ? r.number(l, 2) : 1.0});
+    r.wavelengths.push_back({r.number(l, 1), l.fields.size() > 2 ? r.number(l, 2) : 1.0, l.number});
 }
 
 void readPwav(Reader& r, const Line& l) {
@@ -207,7 +208,8 @@ void readType(Reader& r, const Line& l) {
 
 void readCurv(Reader& r, const Line& l) {
     RawSurface& s = r.surface(l);
-    s.curvature = r.number(l, 0);
+    r.number(l, 0);  // a finite number
+    s.curvature = std::strtold(l.fields[0].c_str(), nullptr);
     s.curvatureLine = l.number;
 }
 
@@ -479,14 +481,14 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const Len
         setMedium(row, s, before);
         return row;
     }
-    if (s.curvature != 0) row.radius = u / s.curvature;
+    if (s.curvature != 0) row.radius = static_cast<double>(u / s.curvature);
     if (!std::isfinite(row.radius)) r.fail(s.curvatureLine, "CURV is too small: the radius is not a finite number of mm");
     if (!s.thicknessLine) r.fail(s.line, "SURF " + std::to_string(number) + " has no DISZ (thickness to the next surface)");
     row.gap = s.thickness * u;
     if (!std::isfinite(row.gap))
         r.fail(s.thicknessLine, "DISZ must be a finite thickness (INFINITY only on the object surface, SURF 0)");
     if (row.gap < 0 && !reversed)
-        r.fail(s.thicknessLine, "negative thickness " + std::to_string(s.thickness) +
+        r.fail(s.thicknessLine, "negative thickness " + formatNumber(s.thickness) +
                                     " where the light travels toward the image: a negative DISZ is allowed only after a mirror");
     setMedium(row, s, before);
     row.conic = s.conic;
@@ -564,6 +566,7 @@ void setHeader(const Reader& r, LensTable& t) {
     while (kept < t.comments.size() && (bytes += t.comments[kept].size()) <= kMaxCommentBytes) ++kept;
     t.comments.resize(kept);
     for (const Wavelength& w : usedWavelengths(r)) {
+        if (const auto problem = wavelengthProblem(w.micrometres * 1000)) r.fail(w.line, "WAVM: " + *problem);
         t.wavelengths.push_back(w.micrometres * 1000);
         t.wavelengthWeights.push_back(w.weight);
     }

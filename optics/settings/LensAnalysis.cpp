@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "prescription/NumberText.h"
 #include "prescription/OpticsError.h"
+#include "prescription/Wavelength.h"
 #include "trace/AxisRay.h"
 
 namespace lenslab {
@@ -29,11 +29,8 @@ void refuseBoth(const std::optional<Setting>& a, const std::optional<Setting>& b
 // The lens at the requested wavelength (or as it was built: at its primary wavelength).
 LensSystem atRequestedWavelength(const LensSystem& lens, const std::optional<Setting>& wavelength) {
     if (!wavelength) return lens;
-    const double nm = wavelength->value;
-    if (!(nm >= kShortestWavelength && nm <= kLongestWavelength))
-        throw SettingError(wavelength->source + ": wavelength " + formatNumber(nm) + " nm lies outside " +
-                           formatNumber(kShortestWavelength) + "-" + formatNumber(kLongestWavelength) + " nm");
-    return atWavelength(lens, nm);
+    if (const auto problem = wavelengthProblem(wavelength->value)) throw SettingError(wavelength->source + ": " + *problem);
+    return atWavelength(lens, wavelength->value);
 }
 
 }  // namespace

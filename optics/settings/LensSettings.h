@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "prescription/Wavelength.h"  // the range any front end accepts
+
 namespace lenslab {
 
 // A setting and where it came from, for messages: "--fstop", "field fstop",
@@ -29,9 +31,5 @@ struct LensSettings {
     std::optional<Setting> filmDistance;   // mm, rear vertex to film: placed, not focused
     std::optional<Setting> wavelength;     // nm; none: the prescription's primary wavelength
 };
-
-// The wavelengths any front end accepts (nm): the visible range of the CIE observer.
-constexpr double kShortestWavelength = 360.0;
-constexpr double kLongestWavelength = 830.0;
 
 }  // namespace lenslab

@@ -26,7 +26,10 @@ const char* modeName(DiagramMode mode) {
     return "";
 }
 
-const char* modeCaption(DiagramMode mode, bool colourFans) {
+// What the picture shows; a folded (mirror) lens has no thick-lens rays, whatever the mode asked.
+const char* modeCaption(DiagramMode mode, bool colourFans, bool folded) {
+    if (folded && mode == DiagramMode::Thick) return "no thick-lens rays (mirrors)";
+    if (folded) mode = DiagramMode::Exact;
     switch (mode) {
         case DiagramMode::Exact: return colourFans ? "exact rays at F, d, C" : "exact rays";
         case DiagramMode::Thick: return "thick-lens rays";
@@ -168,17 +171,33 @@ struct Composer {
             for (const ZY& p : line) points.push_back(at(p));
             addPolyline(pic.shapes, points, 4 * lw, kMirror);
         }
-        for (const Obscuration& o : outline.obscurations)
+        for (const Obscuration& o : outline.obscurations) {
             addLine(pic.shapes, at({o.z, o.radius}), at({o.z, -o.radius}), 5 * lw, kStop);
+            rowLabel(false, at({o.z, -o.radius}), "obscuration", kStop);
+        }
     }
 
+    // Where the F, d and C fans coincide the one drawn last would hide the others, so each line is
+    // drawn narrower than the one before it (C widest, then d, F on top): every ray stays at its true
+    // place, and where the three share a path all three colours show, C's at the edges, F's in the middle.
+    double rayWidth(const FanRay& ray) const {
+        if (ray.wavelength == kWavelengthC) return 5.0 * lw;
+        if (ray.wavelength == kWavelengthD) return 3.2 * lw;
+        if (ray.wavelength == kWavelengthF) return 1.4 * lw;
+        return 1.3 * lw;
+    }
+
+    // An arriving ray is a solid line to the film; a blocked one is dashed and faded, from the object
+    // side to the cross where it stops.
     void rays(const std::vector<FanRay>& fans) {
         for (const FanRay& ray : fans) {
             const Rgba colour = rayColour(ray);
             std::vector<Point2> points;
             for (const ZY& p : ray.points) points.push_back(at(p));
-            for (const auto& piece : clipPolyline(points, pic.content))
-                addPolyline(pic.shapes, piece, 1.3 * lw, ray.blocked ? faded(colour) : colour);
+            for (const auto& piece : clipPolyline(points, pic.content)) {
+                if (ray.blocked) addDashedPolyline(pic.shapes, piece, std::min(rayWidth(ray), 1.3 * lw), 6 * lw, 4 * lw, faded(colour));
+                else addPolyline(pic.shapes, piece, rayWidth(ray), colour);
+            }
             if (ray.blocked) addCross(pic.shapes, points.back(), 3.5 * lw, 1.6 * lw, kBlockMark);
         }
     }
@@ -197,15 +216,16 @@ struct Composer {
         const std::string lens = lensName + "   EFL " + formatFixed(a.firstOrder.efl, 2) + " mm   f/" + formatFNumber(a.fstop);
         const double room = pic.width - pic.content.left;
         label({pic.content.left, 1.35 * em},
-              firstFitting({lens + "   focus " + focus + "   " + modeCaption(options.mode, options.colourFans),
+              firstFitting({lens + "   focus " + focus + "   " + modeCaption(options.mode, options.colourFans, a.lens.hasMirrors()),
                             lens + "   focus " + focus + "   " + modeName(options.mode), lens},
                            em, room),
               em, kText, TextAnchor::Left);
-        const std::string field = pic.fieldHeight > 0 ? millimetres(pic.fieldHeight) : "";
+        const bool offAxis = pic.fieldDegrees > 0;
+        const std::string field = offAxis ? formatFixed(pic.fieldDegrees, 2) + "\u00B0" : "";
         const std::string note = firstFitting(
             {"front (scene side) on the left, film on the right;  film at z = " + millimetres(filmZ) +
-                 (field.empty() ? "" : ";  field point " + field + " below the axis"),
-             "front on the left;  film z = " + millimetres(filmZ) + (field.empty() ? "" : ";  field " + field),
+                 (offAxis ? ";  field " + field + ", imaged " + millimetres(pic.fieldHeight) + " below the axis" : ""),
+             "front on the left;  film z = " + millimetres(filmZ) + (offAxis ? ";  field " + field : ""),
              "front on the left"},
             small, room);
         label({pic.content.left, 1.35 * em + 1.3 * small}, note, small, kNote, TextAnchor::Left);
@@ -218,13 +238,18 @@ struct Composer {
         const double scaleLeft = scaleBar(baseline, mid);
         const bool exact = options.mode != DiagramMode::Thick, thick = options.mode != DiagramMode::Exact;
         auto width = [&](const std::array<const char*, 3>& words) {
-            double w = 1.3 * small + textWidth(words[2], small);
+            double w = 2.6 * small + textWidth(words[2], small);
             for (int i = 0; i < 2; ++i)
                 if (i == 0 ? exact : thick) w += 3.4 * small + textWidth(words[i], small);
             return w;
         };
-        const std::array<const char*, 3> full = {"exact rays", "thick-lens rays", "blocked ray (faded)"};
-        const std::array<const char*, 3> brief = {"exact", "thick lens", "blocked"};
+        // A folded lens's thick-lens model has no straight path to draw: the legend says why it is missing.
+        const bool thickOmitted = a.lens.hasMirrors();
+        const std::array<const char*, 3> full = {
+            "exact rays", thickOmitted ? "no thick-lens rays: a mirror lens folds the light" : "thick-lens rays",
+            "blocked ray (dashed, to where it stops)"};
+        const std::array<const char*, 3> brief = {"exact", thickOmitted ? "no thick-lens rays (mirrors)" : "thick lens",
+                                                  "blocked"};
         const auto& words = width(full) <= scaleLeft - pic.content.left - small ? full : brief;
         double x = pic.content.left;
         auto entry = [&](Rgba colour, const std::string& text) {
@@ -232,15 +257,21 @@ struct Composer {
             label({x + 2.2 * small, baseline}, text, small, kText, TextAnchor::Left);
             x += 2.2 * small + textWidth(text, small) + 1.2 * small;
         };
+        auto note = [&](const std::string& text) {
+            label({x, baseline}, text, small, kNote, TextAnchor::Left);
+            x += textWidth(text, small) + 1.2 * small;
+        };
         if (exact && options.colourFans) {
             for (const auto& [colour, name] : {std::pair{kLineF, "F 486 nm"}, {kLineD, "d 588 nm"}, {kLineC, "C 656 nm"}})
                 entry(colour, name);
         } else if (exact) {
             entry(kExactRay, words[0]);
         }
-        if (thick) entry(kThickRay, words[1]);
-        addCross(pic.shapes, {x + 0.5 * small, mid}, 3.5 * lw, 1.6 * lw, kBlockMark);
-        label({x + 1.3 * small, baseline}, words[2], small, kText, TextAnchor::Left);
+        if (thick && thickOmitted) note(words[1]);
+        else if (thick) entry(kThickRay, words[1]);
+        addDashedPolyline(pic.shapes, {{x, mid}, {x + 1.8 * small, mid}}, 1.3 * lw, 6 * lw, 4 * lw, faded(kExactRay));
+        addCross(pic.shapes, {x + 1.8 * small, mid}, 3.5 * lw, 1.6 * lw, kBlockMark);
+        label({x + 2.6 * small, baseline}, words[2], small, kText, TextAnchor::Left);
     }
 
     // A 1-2-5 length near 120 pixels at the right end of the bottom edge; returns where its label starts.
@@ -278,10 +309,11 @@ DiagramPicture composeDiagram(const LensAnalysis& a, const std::string& lensName
     c.small = std::clamp(static_cast<int>(std::lround(14 * unit)), 10, 40);
     c.lw = std::clamp(unit, 0.8, 4.0);
 
-    const LensOutline outline = buildLensOutline(a.lens);
+    LensOutline outline = buildLensOutline(a.lens);  // holes in mirrors follow once the rays are known
     const double filmZ = a.focus.imageZExact, frontZ = a.lens.frontZ();
     const double span = frontZ - filmZ;
-    pic.fieldHeight = options.fieldHeight.value_or(automaticFieldHeight(a, filmZ));
+    pic.fieldDegrees = options.fieldHeight ? fieldForFilmHeight(a, filmZ, *options.fieldHeight) : automaticFanField(a);
+    pic.fieldHeight = chiefFilmHeight(a, filmZ, pic.fieldDegrees);
     const double filmHalf = std::max(1.25 * pic.fieldHeight, 0.3 * outline.maxRadius);
 
     // The view: film to a little in front of the lens, or to the focused object when it is near;
@@ -311,12 +343,14 @@ DiagramPicture composeDiagram(const LensAnalysis& a, const std::string& lensName
 
     FanSetup setup;
     setup.filmZ = filmZ;
-    setup.fieldHeight = pic.fieldHeight;
+    setup.fieldDegrees = pic.fieldDegrees;
     setup.rays = options.rays;
-    setup.endZ = objectInView ? a.focus.objectZ : pic.view.zAt(pic.content.left);
+    setup.startZ = pic.view.zAt(pic.content.left);
+    if (a.lens.hasMirrors()) setup.bores = findMirrorBores(a.lens, passingLightPaths(a, setup));
+    outline = buildLensOutline(a.lens, setup.bores);
     // Thick-lens rays first, so in overlay the real rays lie on top and the approximation shows
-    // where it departs from them.
-    if (options.mode != DiagramMode::Exact) pic.rays = traceRayFans(a, RayModel::Thick, setup);
+    // where it departs from them. A folded lens gets none (the legend says so).
+    if (options.mode != DiagramMode::Exact && !a.lens.hasMirrors()) pic.rays = traceRayFans(a, RayModel::Thick, setup);
     if (options.mode != DiagramMode::Thick) {
         std::vector<FanRay> exact = options.colourFans ? traceColourFans(a, setup) : traceRayFans(a, RayModel::Exact, setup);
         pic.rays.insert(pic.rays.end(), exact.begin(), exact.end());

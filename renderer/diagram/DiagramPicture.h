@@ -19,7 +19,8 @@ struct DiagramPicture {
     ViewTransform view;       // lens mm to picture pixels
     PictureBox content;       // the lens and rays live here; labels and caption around it
     std::vector<FanRay> rays;  // as traced (lens mm), before clipping to `content`
-    double fieldHeight = 0;   // mm on the film
+    double fieldDegrees = 0;  // the off-axis fan's field (object space); 0: the axial fan only
+    double fieldHeight = 0;   // mm below the axis where that field's chief ray meets the film
 };
 
 // Lays out the diagram for an analysed lens; `options` are already validated.

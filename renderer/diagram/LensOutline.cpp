@@ -3,65 +3,81 @@
 #include <algorithm>
 #include <cmath>
 
+#include "MirrorSolids.h"
+
 namespace lenslab {
+
+double profileZ(const Surface& s, double y) { return s.z - sag(s, std::min(std::abs(y), s.apertureRadius)); }
 
 namespace {
 
 constexpr int kArcSteps = 64;
 
-// Heights from -edge to +edge, with the rims of both surfaces exactly on the list.
-std::vector<double> sampleHeights(double edge, double rimA, double rimB) {
+// The height ranges a surface or element is drawn over: the whole of [-edge, edge], or the two
+// pieces outside a bore.
+std::vector<std::pair<double, double>> drawnSpans(double bore, double edge) {
+    if (bore > 0) return {{-edge, -bore}, {bore, edge}};
+    return {{-edge, edge}};
+}
+
+// Heights from low to high, with the rims of both surfaces exactly on the list where they fall inside.
+std::vector<double> sampleHeights(double low, double high, double rimA, double rimB) {
     std::vector<double> h;
-    for (int i = 0; i <= kArcSteps; ++i) h.push_back(-edge + 2 * edge * i / kArcSteps);
-    for (double rim : {rimA, rimB}) {
-        h.push_back(rim);
-        h.push_back(-rim);
-    }
+    for (int i = 0; i <= kArcSteps; ++i) h.push_back(low + (high - low) * i / kArcSteps);
+    for (double rim : {rimA, rimB, -rimA, -rimB})
+        if (rim > low && rim < high) h.push_back(rim);
     std::sort(h.begin(), h.end());
     h.erase(std::unique(h.begin(), h.end()), h.end());
     return h;
 }
 
-// The surface's z at height y; beyond its clear aperture it continues flat from the rim.
-double profileZ(const Surface& s, double y) { return s.z - sag(s, std::min(std::abs(y), s.apertureRadius)); }
-
-std::vector<ZY> arc(const Surface& s) {
-    std::vector<ZY> points;
-    for (double y : sampleHeights(s.apertureRadius, s.apertureRadius, s.apertureRadius)) points.push_back({profileZ(s, y), y});
-    return points;
+std::vector<std::vector<ZY>> arcs(const Surface& s, double bore) {
+    std::vector<std::vector<ZY>> pieces;
+    for (const auto& [low, high] : drawnSpans(bore, s.apertureRadius)) {
+        pieces.emplace_back();
+        for (double y : sampleHeights(low, high, s.apertureRadius, s.apertureRadius)) pieces.back().push_back({profileZ(s, y), y});
+    }
+    return pieces;
 }
 
-GlassElement element(const Surface& front, const Surface& rear, std::vector<std::vector<ZY>>& lines) {
+void addElement(const Surface& front, const Surface& rear, double bore, LensOutline& out) {
     const double edge = std::max(front.apertureRadius, rear.apertureRadius);
-    GlassElement g;
-    g.index = front.indexAfter;
-    for (double y : sampleHeights(edge, front.apertureRadius, rear.apertureRadius)) {
-        g.front.push_back({profileZ(front, y), y});
-        g.rear.push_back({profileZ(rear, y), y});
+    for (const auto& [low, high] : drawnSpans(bore, edge)) {
+        GlassElement g;
+        g.index = front.indexAfter;
+        for (double y : sampleHeights(low, high, front.apertureRadius, rear.apertureRadius)) {
+            g.front.push_back({profileZ(front, y), y});
+            g.rear.push_back({profileZ(rear, y), y});
+        }
+        out.glass.push_back(std::move(g));
     }
     for (const Surface* s : {&front, &rear}) {
         if (s->apertureRadius >= edge) continue;
         const double zRim = profileZ(*s, edge);
-        lines.push_back({{zRim, s->apertureRadius}, {zRim, edge}});
-        lines.push_back({{zRim, -s->apertureRadius}, {zRim, -edge}});
+        out.lines.push_back({{zRim, s->apertureRadius}, {zRim, edge}});
+        out.lines.push_back({{zRim, -s->apertureRadius}, {zRim, -edge}});
     }
-    for (double y : {edge, -edge}) lines.push_back({{profileZ(front, y), y}, {profileZ(rear, y), y}});
-    return g;
+    // The element's edges, and the bore's walls.
+    for (double y : {edge, -edge}) out.lines.push_back({{profileZ(front, y), y}, {profileZ(rear, y), y}});
+    if (bore > 0)
+        for (double y : {bore, -bore}) out.lines.push_back({{profileZ(front, y), y}, {profileZ(rear, y), y}});
 }
 
 }  // namespace
 
-LensOutline buildLensOutline(const LensSystem& lens) {
+LensOutline buildLensOutline(const LensSystem& lens) { return buildLensOutline(lens, MirrorBores{}); }
+
+LensOutline buildLensOutline(const LensSystem& lens, const MirrorBores& bores) {
     LensOutline out;
     const int n = static_cast<int>(lens.surfaces.size());
     for (int i = 0; i < n; ++i) {
         const Surface& s = lens.surfaces[i];
         out.maxRadius = std::max(out.maxRadius, s.apertureRadius);
-        if (s.obscurationRadius > 0) out.obscurations.push_back({s.z - sag(s, s.obscurationRadius), s.obscurationRadius});
+        if (s.obscurationRadius > 0 && !s.mirror) out.obscurations.push_back({s.z - sag(s, s.obscurationRadius), s.obscurationRadius});
         // A stop on a flat surface between two airs is a diaphragm only: the blades show it.
         if (s.isStop && s.vertexCurvature() == 0 && !s.mirror && s.indexAfter == lens.indexBefore(i)) continue;
-        (s.mirror ? out.mirrors : out.lines).push_back(arc(s));
-        if (s.indexAfter != 1.0 && i + 1 < n) out.glass.push_back(element(s, lens.surfaces[i + 1], out.lines));
+        for (auto& piece : arcs(s, bores.at(i))) (s.mirror ? out.mirrors : out.lines).push_back(std::move(piece));
+        if (s.indexAfter != 1.0 && i + 1 < n) addElement(s, lens.surfaces[i + 1], std::max(bores.at(i), bores.at(i + 1)), out);
     }
     // The blades reach past the neighbouring elements so the stop reads as a diaphragm.
     const Surface& stop = lens.stop();

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <memory>
 
+#include "PublicMessage.h"
+
 namespace lenslab {
 
 namespace {
@@ -15,7 +17,12 @@ constexpr std::size_t kFileChunkBytes = 64 << 10;
 
 void replyJson(httplib::Response& res, int status, const nlohmann::json& body) {
     res.status = status;
-    res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+    if (status < 400 || !body.is_object())
+        return res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+    nlohmann::json refusal = body;
+    for (const char* text : {"error", "problem", "file"})
+        if (refusal.contains(text) && refusal[text].is_string()) refusal[text] = publicMessage(refusal[text]);
+    res.set_content(refusal.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
 }
 
 void replyError(httplib::Response& res, int status, const std::string& message) {

@@ -9,6 +9,8 @@
 
 namespace lenslab {
 
+// A refusal's (status 400 on) texts "error", "problem" and "file" pass through publicMessage: no
+// server path, no long echo of the input.
 void replyJson(httplib::Response& res, int status, const nlohmann::json& body);
 void replyError(httplib::Response& res, int status, const std::string& message);
 void replyBytes(httplib::Response& res, const std::vector<std::uint8_t>& bytes, const std::string& contentType);

@@ -4,21 +4,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <sstream>
 
 #include "core/HttpError.h"
+#include "prescription/NumberText.h"
 
 namespace lenslab {
 
 namespace {
 
 std::string shown(const std::string& value) { return "'" + value.substr(0, 40) + "'"; }
-
-std::string formatNumber(double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
-}
 
 }  // namespace
 

@@ -28,8 +28,15 @@ struct HttpLimits {
     int listenBacklog = 128;
 };
 
+// The heavy-work pool (jobs/WorkPool.h): analyses, previews, diagrams drawn, uploads parsed, reports.
+struct WorkLimits {
+    int threads = 0;    // running at once; 0: one per core
+    int perClient = 4;  // requests of one client address waiting on heavy work at most
+};
+
 // Who may do what (docs/api.md, "Access"). The token is required for every request that writes or
-// spends CPU (any method but GET/HEAD/OPTIONS) when it is set, and for reads too with privateReads.
+// spends CPU (any method but GET/HEAD/OPTIONS, and the reads computed in the heavy-work pool:
+// analyses and diagrams) when it is set, and for reads too with privateReads.
 struct AccessPolicy {
     std::string tokenFile;               // where the token is kept (created on first start)
     std::string token;                   // empty: no token asked for (loopback, or --no-auth)
@@ -61,7 +68,9 @@ struct ServiceConfig {
     std::uintmax_t maxDataBytes = 10ull << 30;  // data folder at most; then uploads and renders get 507 (0: no quota)
     bool maxDataBytesGiven = false;             // false: the default, lowered to what the disk holds
     std::size_t diagramCacheBytes = 64u << 20;
+    std::size_t analysisCacheBytes = 64u << 20;  // analyses and previews as JSON
     int httpThreads = 32;
+    WorkLimits work;                             // requests waiting on it: at most a quarter of the HTTP threads
     std::string mpiHostfile;     // non-empty: renders run through mpirun over these hosts
     int mpiProcesses = 2;        // mpirun -np (rank 0 schedules, the others render)
 };

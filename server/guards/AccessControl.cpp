@@ -6,8 +6,9 @@
 
 #include <fstream>
 #include <random>
-#include <sstream>
 #include <stdexcept>
+
+#include "core/CommaList.h"
 
 namespace lenslab {
 
@@ -15,6 +16,17 @@ namespace {
 
 bool isRead(const httplib::Request& req) {
     return req.method == "GET" || req.method == "HEAD" || req.method == "OPTIONS";
+}
+
+bool endsWith(const std::string& text, const std::string& end) {
+    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+// Writes, and the reads computed in the heavy-work pool: a lens's analysis and its diagram.
+bool spendsCpu(const httplib::Request& req) {
+    if (!isRead(req)) return true;
+    return req.method != "OPTIONS" && req.path.rfind("/api/lenses/", 0) == 0 &&
+           (endsWith(req.path, "/analysis") || endsWith(req.path, "/diagram.png"));
 }
 
 // Compares in time independent of where the strings differ, so the token cannot be guessed byte
@@ -49,9 +61,8 @@ std::string randomToken() {
 }  // namespace
 
 bool isListedOrigin(const std::string& origin, const AccessPolicy& policy) {
-    std::stringstream allowed(policy.allowedOrigins);
-    for (std::string entry; std::getline(allowed, entry, ',');)
-        if (!entry.empty() && entry == origin) return true;
+    for (const std::string& entry : commaListEntries(policy.allowedOrigins))
+        if (entry == origin) return true;
     return false;
 }
 
@@ -59,7 +70,7 @@ std::optional<HttpError> refuseAccess(const httplib::Request& req, const AccessP
     if (!originAllowed(req, policy))
         return HttpError(403, "cross-origin requests are refused (origin " + req.get_header_value("Origin").substr(0, 100) +
                                   "); start the server with --allow-origin to allow one");
-    if (policy.token.empty() || (isRead(req) && !policy.privateReads)) return std::nullopt;
+    if (policy.token.empty() || (!spendsCpu(req) && !policy.privateReads)) return std::nullopt;
     const std::string authorization = req.get_header_value("Authorization");
     const std::string prefix = "Bearer ";
     if (authorization.rfind(prefix, 0) != 0 || !sameSecret(authorization.substr(prefix.size()), policy.token))

@@ -1,8 +1,9 @@
 #pragma once
 // The access check made on every request's head, before its body is read: cross-origin requests
 // are refused unless their origin is allowed (a page on another site must not drive the API with
-// the visitor's network position), and with a token set, requests that write or spend CPU (and
-// reads, when they are private) must carry it as "Authorization: Bearer TOKEN".
+// the visitor's network position), and with a token set, requests that write or spend CPU (every
+// method but GET, HEAD and OPTIONS, and the reads computed in the heavy-work pool: a lens's analysis
+// and diagram; all reads when they are private) must carry it as "Authorization: Bearer TOKEN".
 #include <httplib.h>
 
 #include <optional>

@@ -43,7 +43,8 @@ void AccessLog::requestFinished(const httplib::Request& req, const httplib::Resp
                             {"method", req.method},
                             {"path", req.path},
                             {"status", res.status},
-                            {"bytes", res.body.size()}};
+                            // a file or stream sent by a content provider has no body, only its length
+                            {"bytes", res.content_provider_ ? res.content_length_ : res.body.size()}};
     if (requestStart) {
         entry["ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - *requestStart).count();
         requestStart.reset();

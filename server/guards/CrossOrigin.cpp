@@ -5,7 +5,7 @@
 namespace lenslab {
 
 bool allowListedOrigin(const httplib::Request& req, httplib::Response& res, const AccessPolicy& policy) {
-    res.set_header("Vary", "Origin");
+    res.set_header("Vary", "Origin, Accept-Encoding");  // the answer depends on both (ResponseEncoding.h)
     const std::string origin = req.get_header_value("Origin");
     if (origin.empty() || !isListedOrigin(origin, policy)) return false;
     res.set_header("Access-Control-Allow-Origin", origin);

@@ -4,7 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <sstream>
+
+#include "core/CommaList.h"
 
 namespace lenslab {
 
@@ -15,11 +16,13 @@ std::string lowerCase(std::string text) {
     return text;
 }
 
-// "name:port", "[v6]:port" or either without a port -> the name or address alone.
+// "name:port", "[v6]:port" or either without a port -> the name or address alone; a fully
+// qualified name's final dot ("localhost.") dropped, as DNS does.
 std::string hostName(const std::string& host) {
     if (!host.empty() && host.front() == '[') return host.substr(1, host.find(']') - 1);
-    const std::size_t colon = host.find(':');
-    return host.substr(0, colon);
+    std::string name = host.substr(0, host.find(':'));
+    if (name.size() > 1 && name.back() == '.') name.pop_back();
+    return name;
 }
 
 // An address needs no name lookup, so it cannot be rebound.
@@ -29,9 +32,8 @@ bool isAddress(const std::string& name) {
 }
 
 bool isListed(const std::string& name, const std::string& list) {
-    std::stringstream entries(list);
-    for (std::string entry; std::getline(entries, entry, ',');)
-        if (!entry.empty() && lowerCase(entry) == name) return true;
+    for (const std::string& entry : commaListEntries(list))
+        if (hostName(lowerCase(entry)) == name) return true;  // "a, b." lists b
     return false;
 }
 

@@ -37,7 +37,9 @@ Received receivedOf(const std::string& bytes, std::size_t maxBodyBytes) {
     const std::string head = lowerCase(bytes.substr(0, headEnd));
     const std::size_t bodyBytes = bytes.size() - bodyStart;
     if (bodyBytes > maxBodyBytes || headerValue(head, "expect:") == "100-continue") return Received::Whole;
-    if (headerValue(head, "transfer-encoding:").find("chunked") != std::string::npos) {
+    const std::string coding = headerValue(head, "transfer-encoding:");
+    if (!coding.empty() && coding != "chunked") return Received::Whole;  // the worker refuses it at once
+    if (coding == "chunked") {
         const std::size_t lastChunk = bytes.find("0\r\n\r\n", bodyStart);
         const bool ended = lastChunk != std::string::npos && (lastChunk == bodyStart || bytes[lastChunk - 1] == '\n');
         return ended ? Received::Whole : Received::HeadOnly;

@@ -2,27 +2,33 @@
 
 #include <algorithm>
 #include <cctype>
-#include <sstream>
+#include <cstdlib>
+
+#include "core/CommaList.h"
 
 namespace lenslab {
 
 namespace {
 
-std::string trimmed(const std::string& s) {
-    const auto begin = s.find_first_not_of(" \t");
-    if (begin == std::string::npos) return "";
-    return s.substr(begin, s.find_last_not_of(" \t") - begin + 1);
+std::string lowerCase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    return text;
 }
 
-// "gzip, deflate, br;q=0.9" -> "gzip, deflate": every coding but Brotli, parameters kept.
-std::string withoutBrotli(const std::string& accepted) {
-    std::istringstream codings(accepted);
+// A coding's quality ("gzip;q=0.5" -> 0.5); 1 without one.
+double quality(const std::string& coding) {
+    const std::string lower = lowerCase(coding);
+    const std::size_t q = lower.find("q=", lower.find(';'));
+    return lower.find(';') == std::string::npos || q == std::string::npos ? 1.0 : std::atof(lower.c_str() + q + 2);
+}
+
+// "gzip;q=0, deflate, br;q=0.9" -> "deflate": the codings the client accepts (quality above 0)
+// but Brotli. cpp-httplib looks for "gzip" anywhere in the header, "gzip;q=0" included.
+std::string acceptedWithoutBrotli(const std::string& accepted) {
     std::string kept;
-    for (std::string coding; std::getline(codings, coding, ',');) {
-        coding = trimmed(coding);
-        std::string name = trimmed(coding.substr(0, coding.find(';')));
-        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-        if (name == "br" || coding.empty()) continue;
+    for (const std::string& coding : commaListEntries(accepted)) {
+        const std::string name = lowerCase(trimmedText(coding.substr(0, coding.find(';'))));
+        if (name == "br" || !(quality(coding) > 0)) continue;
         kept += (kept.empty() ? "" : ", ") + coding;
     }
     return kept;
@@ -33,7 +39,7 @@ std::string withoutBrotli(const std::string& accepted) {
 void declineBrotli(const httplib::Request& req) {
     auto& headers = const_cast<httplib::Request&>(req).headers;
     const auto [begin, end] = headers.equal_range("Accept-Encoding");
-    for (auto it = begin; it != end; ++it) it->second = withoutBrotli(it->second);
+    for (auto it = begin; it != end; ++it) it->second = acceptedWithoutBrotli(it->second);
 }
 
 }  // namespace lenslab

@@ -7,8 +7,8 @@
 
 namespace lenslab {
 
-// Removes "br" from the request's Accept-Encoding, which cpp-httplib reads when it compresses the
-// answer. Called on the request before routing; the Request object is cpp-httplib's own mutable
+// Removes "br" and the codings the client refuses ("gzip;q=0") from the request's Accept-Encoding,
+// which cpp-httplib reads when it compresses the answer. Called on the request before routing; the Request object is cpp-httplib's own mutable
 // one, handed to the handlers as const.
 void declineBrotli(const httplib::Request& req);
 

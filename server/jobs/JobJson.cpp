@@ -1,5 +1,7 @@
 #include "jobs/JobJson.h"
 
+#include "PublicMessage.h"
+
 namespace lenslab {
 
 nlohmann::json jobJson(const JobView& job, std::size_t tilesSince, double now) {
@@ -30,7 +32,7 @@ nlohmann::json jobJson(const JobView& job, std::size_t tilesSince, double now) {
                  {"tiles", tiles},
                  {"cancel_requested", job.cancelRequested},
                  {"interrupted", r.interrupted},
-                 {"error", r.error.empty() ? json(nullptr) : json(r.error)},
+                 {"error", r.error.empty() ? json(nullptr) : json(publicMessage(r.error))},
                  {"stats", r.stats},
                  {"links", {{"self", base}, {"preview", base + "/preview.png"}}}};
     if (r.state == JobState::Done) {

@@ -10,6 +10,7 @@
 #include "jobs/RenderJobResolver.h"
 #include "storage/StorageError.h"
 #include "core/WallClock.h"
+#include "PublicMessage.h"
 
 namespace lenslab {
 
@@ -219,6 +220,14 @@ QueueCounts JobQueue::counts() const {
             static_cast<int>(workers_.size())};
 }
 
+std::vector<std::string> JobQueue::liveJobsWithLens(const std::string& lensId) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::string> ids;
+    for (const auto& [id, job] : live_)
+        if (job->input.request.lens == lensId) ids.push_back(id);
+    return ids;
+}
+
 void JobQueue::shutdown() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -293,7 +302,8 @@ void JobQueue::runJob(const std::shared_ptr<LiveJob>& job) {
     } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(job->mutex);
         job->record.state = JobState::Failed;
-        job->record.error = withoutServerPaths(e.what(), job->input);
+        std::cerr << "lenslab serve: render " << job->record.id << " failed: " << e.what() << "\n";
+        job->record.error = publicMessage(e.what());
     } catch (...) {
         std::lock_guard<std::mutex> lock(job->mutex);
         job->record.state = JobState::Failed;

@@ -76,6 +76,8 @@ public:
     std::string imagePath(const std::string& id, const std::string& format) const;
 
     QueueCounts counts() const;
+    // The ids of the jobs waiting or running through lens `lensId` (its file must stay until they end).
+    std::vector<std::string> liveJobsWithLens(const std::string& lensId) const;
 
     // Stops the workers: running renders are cancelled and return to the queue in the database,
     // so that the next start picks them up again. Idempotent.

@@ -1,6 +1,5 @@
 #include "jobs/RenderJobResolver.h"
 
-#include <filesystem>
 
 #include "core/HttpError.h"
 
@@ -33,21 +32,6 @@ RenderSettings renderSettings(const RenderJobInput& job) {
     settings.width = job.request.width;
     settings.height = job.request.height;
     return settings;
-}
-
-std::string withoutServerPaths(std::string message, const RenderJobInput& job) {
-    namespace fs = std::filesystem;
-    for (const std::string& path : {job.scenePath, job.lensPath}) {
-        if (path.empty()) continue;
-        // The renderer names files by their canonical paths; the catalogs may hold relative ones.
-        const fs::path parent = fs::path(path).parent_path();
-        for (const fs::path& where : {fs::weakly_canonical(parent), parent}) {
-            const std::string folder = where.string() + "/";
-            for (std::size_t at; folder.size() > 1 && (at = message.find(folder)) != std::string::npos;)
-                message.erase(at, folder.size());
-        }
-    }
-    return message;
 }
 
 }  // namespace lenslab

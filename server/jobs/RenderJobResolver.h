@@ -21,8 +21,4 @@ RenderJobInput resolveRenderJob(const std::string& jobId, const RenderRequest& r
 // The renderer's settings for a job (all but the thread count).
 RenderSettings renderSettings(const RenderJobInput& job);
 
-// A message about a job as the client may see it: the scene and lens named by their file names,
-// never by where they lie on the server ("/srv/lenslab/scenes/cornell.pbrt:5" -> "cornell.pbrt:5").
-std::string withoutServerPaths(std::string message, const RenderJobInput& job);
-
 }  // namespace lenslab

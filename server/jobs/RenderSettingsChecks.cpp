@@ -4,6 +4,7 @@
 #include "settings/LensAnalysis.h"
 #include "prescription/OpticsError.h"
 #include "jobs/RenderJobResolver.h"
+#include "PublicMessage.h"
 
 namespace lenslab {
 
@@ -22,9 +23,9 @@ std::optional<std::string> checkOutcome(const RenderJobInput& job) {
         checkRenderSettings(renderSettings(job));
         return std::nullopt;
     } catch (const SceneError& e) {
-        return withoutServerPaths(e.what(), job);
+        return publicMessage(e.what());
     } catch (const OpticsError& e) {
-        return withoutServerPaths(e.what(), job);
+        return publicMessage(e.what());
     }
 }
 

@@ -2,25 +2,28 @@
 
 #include "core/HttpError.h"
 #include "core/WallClock.h"
+#include "PublicMessage.h"
 
 namespace lenslab {
 
 ReportJob::~ReportJob() {
     cancel_ = true;
-    if (worker_.joinable()) worker_.join();
+    if (build_.valid()) build_.wait();
 }
 
 void ReportJob::start(const ReportOptions& options) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (state_ == "running") throw HttpError(409, "a report build is already running");
-    if (worker_.joinable()) worker_.join();  // the previous build has finished
+    if (build_.valid()) build_.wait();  // the previous build has finished
     cancel_ = false;
     state_ = "running";
     progress_ = {};
     outcome_ = nullptr;
     started_ = secondsSinceEpoch();
     finished_ = 0;
-    worker_ = std::thread(&ReportJob::run, this, options);
+    auto build = std::make_shared<std::packaged_task<void()>>([this, options] { run(options); });
+    build_ = build->get_future();
+    pool_.post([build] { (*build)(); });
 }
 
 bool ReportJob::cancel() {
@@ -43,12 +46,12 @@ void ReportJob::run(ReportOptions options) {
             &cancel_);
         outcome = {{"summary",
                     {{"items", s.items}, {"built", s.built}, {"reused", s.reused}, {"renders", s.renders},
-                     {"lenses", s.lenses}, {"scenes", s.scenes}, {"seconds", s.seconds}, {"problems", s.problems}}}};
+                     {"lenses", s.lenses}, {"scenes", s.scenes}, {"seconds", s.seconds}, {"problems", s.problems}}}};  // public already
     } catch (const ReportCancelled&) {
         state = "cancelled";
     } catch (const std::exception& e) {
         state = "failed";
-        outcome = {{"error", e.what()}};
+        outcome = {{"error", publicMessage(e.what())}};
     }
     std::lock_guard<std::mutex> lock(mutex_);
     state_ = state;

@@ -1,20 +1,21 @@
 #pragma once
-// The service's report build: one at a time, on its own thread, with progress and cancellation,
-// writing into the folder served at /report/ (buildReport's cache makes rebuilds cheap).
+// The service's report build: one at a time, in the heavy-work pool, with progress and
+// cancellation, writing into the folder served at /report/ (buildReport's cache makes rebuilds cheap).
 #include <nlohmann/json.hpp>
 
 #include <atomic>
+#include <future>
 #include <mutex>
-#include <thread>
 
 #include "BuildReport.h"
+#include "jobs/WorkPool.h"
 
 namespace lenslab {
 
 class ReportJob {
 public:
-    ReportJob() = default;
-    ~ReportJob();  // cancels a running build and waits for it
+    explicit ReportJob(WorkPool& pool) : pool_(pool) {}
+    ~ReportJob();  // cancels a running build and waits for it (the pool must outlive this)
     ReportJob(const ReportJob&) = delete;
     ReportJob& operator=(const ReportJob&) = delete;
 
@@ -28,8 +29,9 @@ public:
 private:
     void run(ReportOptions options);
 
+    WorkPool& pool_;
     mutable std::mutex mutex_;
-    std::thread worker_;
+    std::future<void> build_;
     std::atomic<bool> cancel_{false};
     std::string state_ = "idle";
     ReportProgress progress_;

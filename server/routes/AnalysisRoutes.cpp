@@ -1,10 +1,12 @@
 // GET /api/lenses/{id}/analysis: the lens designer's analysis (the `lenslab analyze --json` object)
 // at fstop and focus, for wavelengths, fields, image plane and reference given as the command line
-// takes them. The work is
-// bounded by the inputs' check (at most 16 fields and 16 wavelengths); a malformed or out-of-range
-// list is 400 naming its parameter, settings the lens cannot take are optics' 422 as elsewhere.
+// takes them; with views=html also what the page shows of it (AnalysisViews.h). The inputs are
+// checked first (at most 16 fields and 16 wavelengths; a malformed or out-of-range list is 400
+// naming its parameter); the analysis runs in the heavy-work pool and is cached by the lens's
+// content and the inputs; settings the lens cannot take are optics' 422 as elsewhere.
 #include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
+#include "AnalysisViews.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
 #include "prescription/OpticsError.h"
@@ -14,6 +16,8 @@
 namespace lenslab {
 
 namespace {
+
+using nlohmann::json;
 
 DesignAnalysisInputs analysisInputs(const httplib::Request& req) {
     DesignAnalysisInputs in;
@@ -40,14 +44,35 @@ DesignAnalysisInputs analysisInputs(const httplib::Request& req) {
     return in;
 }
 
+// What the analysis depends on besides the lens: the values the request can set (exact doubles).
+std::string inputsKey(const DesignAnalysisInputs& in) {
+    const auto value = [](const std::optional<Setting>& s) { return s ? json(s->value) : json(nullptr); };
+    return json{value(in.lens.fstop), value(in.lens.focusDistance), value(in.lens.wavelength), in.wavelengths,
+                in.fields, in.fieldsInDegrees, in.maxFrequency, static_cast<int>(in.imagePlane),
+                static_cast<int>(in.reference)}
+        .dump();
+}
+
 }  // namespace
 
 void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Get(R"(/api/lenses/([^/]+)/analysis)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
-        nlohmann::json body = designAnalysisJson(analyzeLensDesign(lens->system, analysisInputs(req)));
-        body["id"] = lens->id;
-        replyJson(res, 200, body);
+        const auto views = queryText(req, "views");
+        if (views && *views != "html") throw HttpError(400, "query parameter views: html or absent");
+        const DesignAnalysisInputs inputs = analysisInputs(req);
+        // Cached without the lens's id and name: two uploads of one table share it.
+        const std::string key = "analysis|" + lens->digest + "|" + inputsKey(inputs) + (views ? "|views" : "");
+        const auto analysis = parts.work.cachedOrComputed(parts.analyses, key, clientOf(req), [&] {
+            const LensDesignAnalysis a = analyzeLensDesign(lens->system, inputs);
+            json body = designAnalysisJson(a);
+            if (views) body["views"] = analysisViewsJson(a);
+            body.erase("name");
+            return textBytes(body.dump(-1, ' ', false, json::error_handler_t::replace));
+        });
+        const std::string head = json{{"id", lens->id}, {"name", lens->name}}.dump(-1, ' ', false, json::error_handler_t::replace);
+        res.status = 200;
+        res.set_content(head.substr(0, head.size() - 1) + "," + bytesText(*analysis).substr(1), "application/json");
     });
 }
 

@@ -1,5 +1,5 @@
-// /api/lenses: list, upload (multipart field "file" or the raw table as the body), one lens's
-// data at an aperture and focus, its table text, deletion of uploads.
+// /api/lenses: list, upload (multipart field "file" or the raw table as the body; parsed in the
+// heavy-work pool), one lens's data at an aperture and focus, its table text, deletion of uploads.
 #include <limits>
 
 #include "core/HttpError.h"
@@ -52,7 +52,8 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Get("/api/lenses", [&parts](const httplib::Request&, httplib::Response& res) {
         json list = json::array();
         for (const auto& lens : parts.lenses.list()) list.push_back(lensSummaryJson(*lens));
-        replyJson(res, 200, {{"lenses", list}});
+        // Uploads not described yet since the start are left out; "loading" says how many.
+        replyJson(res, 200, {{"lenses", list}, {"loading", parts.lenses.counts().waiting}});
     });
 
     server.Post("/api/lenses", [&parts](const httplib::Request& req, httplib::Response& res) {
@@ -65,10 +66,16 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
         }
         if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw HttpError(400, "the lens table is empty");
         parts.quota.checkRoomForWrite();
+        const std::optional<TableLayout> layout = layoutParameter(req);
+        const auto admission = parts.work.admit(clientOf(req));
         try {
-            const auto lens = parts.lenses.add(name, text, layoutParameter(req));
+            // Parsing and describing a table of up to --max-body bytes is heavy work.
+            const auto [lens, body] = parts.work.run([&] {
+                const auto lens = parts.lenses.add(name, text, layout);
+                return std::make_pair(lens, lensDetailJson(*lens, LensSettings{}));
+            });
             res.set_header("Location", "/api/lenses/" + lens->id);
-            replyJson(res, 201, lensDetailJson(*lens, LensSettings{}));
+            replyJson(res, 201, body);
         } catch (const LensTableError& e) {
             replyJson(res, 400, {{"error", e.what()}, {"file", e.file()}, {"line", e.line()}, {"problem", e.problem()}});
         } catch (const LensStoreFull& e) {
@@ -89,6 +96,11 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
 
     server.Delete(R"(/api/lenses/([^/]+))", [&parts](const httplib::Request& req, httplib::Response& res) {
         const std::string id = findLens(parts, req.matches[1])->id;
+        // Its renders would fail when they start: the client hears it now instead.
+        if (const auto renders = parts.jobs.liveJobsWithLens(id); !renders.empty())
+            throw HttpError(409, "lens '" + id + "' is used by " + std::to_string(renders.size()) +
+                                     " queued or running render(s) (" + renders.front() +
+                                     (renders.size() > 1 ? ", ..." : "") + "); cancel them first (DELETE /api/renders/{id})");
         switch (parts.lenses.remove(id)) {
             case LensStore::Removal::Removed:
                 parts.diagrams.forget(id + "|");

@@ -5,15 +5,20 @@
 //   POST /api/prescriptions/preview                    rows in; lens JSON, diagram PNG, analysis out
 //   POST /api/prescriptions/table.dat, .../prescription.zmx  rows in; the file text out
 // A preview's work is bounded: its body (kMaxPreviewBody), its rows (kMaxLensSurfaces), a fixed
-// analysis (3 fields, F d C) and a fixed diagram size. A row's problem is 400 naming the row.
+// analysis (3 fields, F d C; image_plane, reference and max_frequency as the analysis route takes them)
+// and a fixed diagram size; it runs in the heavy-work pool, and its answer is cached by the body. A
+// row's problem is 400 naming the row.
 #include <future>
 #include <limits>
 
+#include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
-#include "AnalysisPlots.h"
+#include "AnalysisViews.h"
 #include "core/Base64.h"
+#include "core/ContentDigest.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
+#include "core/JsonBody.h"
 #include "LensDiagram.h"
 #include "LensJson.h"
 #include "LensTableWriter.h"
@@ -35,11 +40,7 @@ const char* const kEditedLensName = "edited lens";
 json parseBody(const httplib::Request& req) {
     if (req.body.size() > kMaxPreviewBody)
         throw HttpError(413, "a prescription body is at most " + std::to_string(kMaxPreviewBody / 1024) + " KiB");
-    try {
-        return json::parse(req.body);
-    } catch (const json::parse_error&) {
-        throw HttpError(400, "the body is not JSON");
-    }
+    return parseJsonBody(req, "the body");
 }
 
 // A problem with one row: 400 {"error", "row" (1-based, absent for the whole lens), "problem"}.
@@ -91,7 +92,8 @@ DiagramOptions previewDiagramOptions(const json& body, const LensSettings& lens)
     return o;
 }
 
-// The spot and MTF figures per field (the plots draw the points: the JSON keeps the statistics).
+// The numbers and the page's views without the curves against field (the plots draw the points
+// and fans: the JSON keeps the statistics).
 json previewAnalysisJson(const LensDesignAnalysis& analysis) {
     json summary = designAnalysisJson(analysis);
     for (const char* unshown : {"ray_fans", "curves", "relative_illumination", "field_curvature"}) summary.erase(unshown);
@@ -99,32 +101,39 @@ json previewAnalysisJson(const LensDesignAnalysis& analysis) {
         field.erase("relative_illumination");  // interpolated from the two curve samples: too coarse to show
         for (json& spot : field["spots"]) spot.erase("points");
     }
-    json plots = json::object();
-    for (const NamedSvg& plot : designAnalysisPlots(analysis))
-        if (plot.name.rfind("spot-", 0) == 0 || plot.name.rfind("mtf-", 0) == 0) plots[plot.name] = plot.svg;
-    summary["plots_svg"] = plots;
+    summary["views"] = analysisViewsJson(analysis, false);
     return summary;
 }
 
-void preview(const httplib::Request& req, httplib::Response& res) {
-    const json body = parseBody(req);
-    LensSystem system;
-    try {
-        system = buildLensSystem(prescriptionFromJson(body, kEditedLensName));
-    } catch (const LensTableError& e) {
-        replyRowError(res, e);
-        return;
-    }
-    const LensSettings settings = bodyLensSettings(body);
-    const json lens = lensAnalysisJson(analyzeLens(system, settings));  // 422 here for settings it cannot take
-    // The diagram draws while the analysis runs: the two are about equal and independent.
-    auto diagram = std::async(std::launch::async, [&] { return drawLensDiagramPng(system, previewDiagramOptions(body, settings)); });
+// The analysis at the lens settings with the body's own choices, named as the API's query parameters.
+DesignAnalysisInputs previewAnalysisInputs(const json& body, const LensSettings& settings) {
     DesignAnalysisInputs inputs;
     inputs.lens = settings;
-    inputs.lens.wavelength.reset();  // the analysis's own F, d, C
     // The curves against field (relative illumination above all: 4/10 of the analysis at 16
     // samples) are not shown by the editor: their two end points keep it within the time of an edit.
     inputs.curveSamples = 2;
+    const auto text = [&](const char* field) -> std::optional<std::string> {
+        if (!body.contains(field) || body.at(field).is_null()) return std::nullopt;
+        if (!body.at(field).is_string()) throw HttpError(400, std::string(field) + " must be a string");
+        return body.at(field).get<std::string>();
+    };
+    try {
+        if (const auto plane = text("image_plane")) inputs.imagePlane = parseImagePlaneInput(*plane, "field image_plane");
+        if (const auto reference = text("reference")) inputs.reference = parseSpotReferenceInput(*reference, "field reference");
+    } catch (const InputListError& e) {
+        throw HttpError(400, e.what());
+    }
+    inputs.maxFrequencySource = "field max_frequency";
+    if (const auto max = numberSetting(body, "max_frequency")) inputs.maxFrequency = max->value;
+    return inputs;
+}
+
+// The preview's answer: the lens checked, analysed and drawn.
+std::string previewJson(const LensTable& table, const DiagramOptions& drawing, const DesignAnalysisInputs& inputs) {
+    const LensSystem system = buildLensSystem(table);
+    const json lens = lensAnalysisJson(analyzeLens(system, drawing.lens));  // 422 here for settings it cannot take
+    // The diagram draws while the analysis runs: the two are about equal and independent.
+    auto diagram = std::async(std::launch::async, [&] { return drawLensDiagramPng(system, drawing); });
     json analysis;
     try {
         analysis = previewAnalysisJson(analyzeLensDesign(system, inputs));
@@ -132,7 +141,25 @@ void preview(const httplib::Request& req, httplib::Response& res) {
         diagram.wait();
         throw;
     }
-    replyJson(res, 200, {{"lens", lens}, {"diagram_png_base64", base64Encode(diagram.get())}, {"analysis", analysis}});
+    return json{{"lens", lens}, {"diagram_png_base64", base64Encode(diagram.get())}, {"analysis", analysis}}.dump(
+        -1, ' ', false, json::error_handler_t::replace);
+}
+
+void preview(ServiceParts& parts, const httplib::Request& req, httplib::Response& res) {
+    const json body = parseBody(req);
+    try {
+        // The body's checks before a place in the pool is taken.
+        const LensTable table = prescriptionFromJson(body, kEditedLensName);
+        const LensSettings settings = bodyLensSettings(body);
+        const DiagramOptions drawing = previewDiagramOptions(body, settings);
+        const DesignAnalysisInputs inputs = previewAnalysisInputs(body, settings);
+        const auto answer = parts.work.cachedOrComputed(parts.analyses, "preview|" + contentDigest(req.body), clientOf(req),
+                                                        [&] { return textBytes(previewJson(table, drawing, inputs)); });
+        res.status = 200;
+        res.set_content(reinterpret_cast<const char*>(answer->data()), answer->size(), "application/json");
+    } catch (const LensTableError& e) {
+        replyRowError(res, e);
+    }
 }
 
 using TableWriter = std::string (*)(const LensTable&);
@@ -177,7 +204,8 @@ void addPrescriptionRoutes(httplib::Server& server, ServiceParts& parts) {
         const auto lens = findLens(parts, req.matches[1]);
         replyTableText(res, storedTable(*lens), writeZemaxText, lens->id + ".zmx");
     });
-    server.Post("/api/prescriptions/preview", preview);
+    server.Post("/api/prescriptions/preview",
+                [&parts](const httplib::Request& req, httplib::Response& res) { preview(parts, req, res); });
     server.Post("/api/prescriptions/table.dat", [](const httplib::Request& req, httplib::Response& res) {
         exportEdited(req, res, writeLensTableText, "edited-lens.dat");
     });

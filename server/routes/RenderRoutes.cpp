@@ -3,6 +3,7 @@
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
 #include "core/Identifiers.h"
+#include "core/JsonBody.h"
 #include "jobs/JobJson.h"
 #include "core/QueryParameters.h"
 #include "jobs/RenderJobResolver.h"
@@ -65,9 +66,7 @@ void addRenderRoutes(httplib::Server& server, ServiceParts& parts) {
     });
 
     server.Post("/api/renders", [&parts](const httplib::Request& req, httplib::Response& res) {
-        const json body = json::parse(req.body, nullptr, false);
-        if (body.is_discarded()) throw HttpError(400, "the render request is not valid JSON");
-        submit(parts, parseRenderRequest(body, parts.config.limits, defaultScene(parts)), res);
+        submit(parts, parseRenderRequest(parseJsonBody(req, "the render request"), parts.config.limits, defaultScene(parts)), res);
     });
 
     server.Get("/api/renders", [&parts](const httplib::Request&, httplib::Response& res) {

@@ -5,6 +5,7 @@
 
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
+#include "core/JsonBody.h"
 #include "jobs/ReportJob.h"
 #include "routes/ServiceParts.h"
 
@@ -62,11 +63,7 @@ ReportOptions reportOptions(const ServiceParts& parts, const json& body) {
 
 void addReportRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Post("/api/report", [&parts](const httplib::Request& req, httplib::Response& res) {
-        json body = json::object();
-        if (!req.body.empty()) {
-            body = json::parse(req.body, nullptr, false);
-            if (body.is_discarded()) throw HttpError(400, "the body is not valid JSON");
-        }
+        const json body = req.body.empty() ? json::object() : parseJsonBody(req, "the body");
         parts.report.start(reportOptions(parts, body));
         res.set_header("Location", "/api/report");
         replyJson(res, 202, parts.report.status());

@@ -3,11 +3,12 @@
 #include <httplib.h>
 
 #include "storage/DataFolderQuota.h"
-#include "storage/DiagramCache.h"
+#include "storage/ResultCache.h"
 #include "jobs/JobQueue.h"
 #include "storage/LensStore.h"
 #include "jobs/RenderSettingsChecks.h"
 #include "jobs/ReportJob.h"
+#include "jobs/WorkPool.h"
 #include "storage/SceneCatalog.h"
 #include "core/ServiceConfig.h"
 
@@ -18,7 +19,9 @@ struct ServiceParts {
     LensStore& lenses;
     const SceneCatalog& scenes;
     RenderSettingsChecks& renderChecks;  // render requests against their scene's camera and lens
-    DiagramCache& diagrams;
+    ResultCache& diagrams;   // PNGs by lens id and drawing
+    ResultCache& analyses;   // analyses and previews as JSON, by the lens's content and the settings
+    WorkPool& work;          // where heavy work runs (analyses, previews, diagrams, uploads, reports)
     JobQueue& jobs;
     ReportJob& report;
     DataFolderQuota& quota;  // checked before uploads and render submissions
@@ -27,6 +30,9 @@ struct ServiceParts {
 
 // The lens a URL names: HttpError 400 for an id outside the safe alphabet, 404 for an unknown one.
 std::shared_ptr<const StoredLens> findLens(const ServiceParts& parts, const std::string& id);
+
+// Who is asking, for the heavy-work pool's per-client share: the client's address.
+inline const std::string& clientOf(const httplib::Request& req) { return req.remote_addr; }
 
 void addHealthRoutes(httplib::Server& server, ServiceParts& parts);
 void addLensRoutes(httplib::Server& server, ServiceParts& parts);

@@ -28,6 +28,7 @@ void replyForException(httplib::Response& res, std::exception_ptr error) {
     try {
         std::rethrow_exception(error);
     } catch (const HttpError& e) {
+        if (e.retryAfterSeconds() > 0) res.set_header("Retry-After", std::to_string(e.retryAfterSeconds()));
         replyError(res, e.status(), e.what());
     } catch (const StorageError& e) {
         std::cerr << "lenslab serve: " << e.detail() << "\n";
@@ -130,6 +131,7 @@ HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log)
     });
     server_.set_post_routing_handler([](const httplib::Request& req, httplib::Response& res) {
         applyByteRange(req.get_header_value("Range"), res);
+        if (!res.has_header("Vary")) res.set_header("Vary", "Accept-Encoding");  // gzip or not, by the request
         if (GuardedServer::closesAfterThisRequest()) {
             res.headers.erase("Keep-Alive");
             res.headers.erase("Connection");
@@ -147,7 +149,7 @@ HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log)
             GuardedServer::closeAfterThisRequest();
         const StreamViolation violation = GuardedServer::violationOnThisThread();
         if (violation != StreamViolation::None) return replyForViolation(res, violation, http);
-        if (res.status == 413) return replyBodyTooLarge(res, http);
+        if (res.status == 413 && res.body.empty()) return replyBodyTooLarge(res, http);
         if (res.body.empty()) replyError(res, res.status, defaultMessage(res.status));
     });
 }

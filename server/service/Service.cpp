@@ -1,5 +1,6 @@
 #include "service/Service.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -14,6 +15,22 @@ namespace lenslab {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The folders as absolute paths: messages name files by their paths, and the public ones are cut to
+// file names (PublicMessage.h), which a relative path ("data/lenses/...") would escape.
+ServiceConfig withAbsoluteFolders(ServiceConfig config) {
+    for (std::string* folder : {&config.dataDir, &config.lensesDir, &config.scenesDir, &config.webDir, &config.reportDir})
+        if (!folder->empty()) *folder = fs::absolute(*folder).lexically_normal().string();
+    return config;
+}
+
+WorkPoolLimits workPoolLimits(const ServiceConfig& config) {
+    WorkPoolLimits limits;
+    limits.threads = config.work.threads > 0 ? config.work.threads : std::max(1u, std::thread::hardware_concurrency());
+    limits.admitted = std::max(1, config.httpThreads / 4);
+    limits.perClient = config.work.perClient;
+    return limits;
+}
 
 // Prepares the data folder before anything opens files in it.
 std::string databasePath(const ServiceConfig& config) {
@@ -36,18 +53,21 @@ std::uintmax_t dataQuota(const ServiceConfig& config) {
 }  // namespace
 
 Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> renderer)
-    : config_(config),
-      accessLog_(config.accessLogPath),
-      lock_(config.dataDir),
-      database_(databasePath(config)),
-      lenses_(config.lensesDir, (fs::path(config.dataDir) / "lenses").string(), database_, config.maxUploadedLenses),
-      scenes_(config.scenesDir),
-      diagrams_(config.diagramCacheBytes),
+    : config_(withAbsoluteFolders(config)),
+      accessLog_(config_.accessLogPath),
+      lock_(config_.dataDir),
+      database_(databasePath(config_)),
+      lenses_(config_.lensesDir, (fs::path(config_.dataDir) / "lenses").string(), database_, config_.maxUploadedLenses),
+      scenes_(config_.scenesDir),
+      diagrams_(config_.diagramCacheBytes),
+      analyses_(config_.analysisCacheBytes),
+      work_(workPoolLimits(config_)),
       jobStore_(database_),
       renderer_(std::move(renderer)),
-      jobs_(jobStore_, *renderer_, config.limits, (fs::path(config.dataDir) / "renders").string()),
-      quota_(config.dataDir, dataQuota(config), [this] { collectFinishedRenders(); }),
-      parts_{config_, lenses_, scenes_, renderChecks_, diagrams_, jobs_, report_, quota_, secondsSinceEpoch()},
+      jobs_(jobStore_, *renderer_, config_.limits, (fs::path(config_.dataDir) / "renders").string()),
+      report_(work_),
+      quota_(config_.dataDir, dataQuota(config_), [this] { collectFinishedRenders(); }),
+      parts_{config_, lenses_, scenes_, renderChecks_, diagrams_, analyses_, work_, jobs_, report_, quota_, secondsSinceEpoch()},
       http_(config_, accessLog_) {
     recoverJobs();
     jobs_.setAfterJob([this] { collectFinishedRenders(); });
@@ -95,7 +115,11 @@ void Service::restoreQueuedJobs() {
 
 void Service::collectFinishedRenders() { collectRenders(jobs_, jobStore_, config_.retention, secondsSinceEpoch()); }
 
-int Service::start() { return http_.start(config_.host, config_.port); }
+int Service::start() {
+    const int port = http_.start(config_.host, config_.port);
+    lenses_.describeInBackground();
+    return port;
+}
 
 void Service::stop() {
     http_.stop();

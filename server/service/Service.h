@@ -8,13 +8,14 @@
 #include "storage/DataFolderLock.h"
 #include "storage/DataFolderQuota.h"
 #include "storage/Database.h"
-#include "storage/DiagramCache.h"
+#include "storage/ResultCache.h"
 #include "service/HttpServer.h"
 #include "jobs/JobQueue.h"
 #include "jobs/JobStore.h"
 #include "storage/LensStore.h"
 #include "jobs/JobRenderer.h"
 #include "jobs/ReportJob.h"
+#include "jobs/WorkPool.h"
 #include "storage/SceneCatalog.h"
 #include "core/ServiceConfig.h"
 #include "routes/ServiceParts.h"
@@ -26,7 +27,8 @@ public:
     Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> renderer);
     ~Service();  // stop()
 
-    int start();  // returns the port it listens on
+    // Listens, then describes the stored uploads in the background; returns the port.
+    int start();
     // Stops listening, then stops the render workers (running jobs go back to the queue).
     void stop();
 
@@ -42,7 +44,9 @@ private:
     LensStore lenses_;
     SceneCatalog scenes_;
     RenderSettingsChecks renderChecks_;
-    DiagramCache diagrams_;
+    ResultCache diagrams_;
+    ResultCache analyses_;
+    WorkPool work_;  // before the report, whose build it runs
     JobStore jobStore_;
     std::unique_ptr<JobRenderer> renderer_;
     JobQueue jobs_;

@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "storage/AtomicFile.h"
+#include "core/ContentDigest.h"
 #include "core/Identifiers.h"
 #include "prescription/OpticsError.h"
 #include "storage/StorageError.h"
@@ -36,6 +37,11 @@ std::shared_ptr<StoredLens> describeLens(const LensTable& table) {
         lens->description = printableText(d);
     }
     return lens;
+}
+
+// What the lens is made of: its text and the layout it is read with.
+std::string tableDigest(const std::string& text, std::optional<TableLayout> layout) {
+    return contentDigest(std::string(layout ? layoutName(*layout) : "detected") + "\n" + text);
 }
 
 constexpr std::size_t kDisplayNameCharacters = 64;
@@ -105,17 +111,35 @@ std::string uploadDisplayName(const std::string& clientName) {
     return name.empty() ? "upload.dat" : name;
 }
 
+// An entry registered at start (or added); its lens is described once, lazily.
+struct LensStore::Entry {
+    std::string id, name, path;
+    bool bundled = false;
+    double created = 0;
+    std::optional<TableLayout> layout;  // as recorded for an upload; detected when absent
+    std::once_flag once;
+    // Under the store's mutex: set once described; `failed` when it could not be.
+    std::shared_ptr<const StoredLens> lens;
+    bool failed = false;
+};
+
 LensStore::LensStore(const std::string& bundledDir, const std::string& uploadDir, Database& database, int maxUploads)
     : uploadDir_(uploadDir), database_(database), maxUploads_(maxUploads) {
     fs::create_directories(uploadDir_);
     database_.run(
         "CREATE TABLE IF NOT EXISTS lenses (id TEXT PRIMARY KEY, name TEXT NOT NULL, created REAL NOT NULL, "
         "layout TEXT)");
-    loadBundled(bundledDir);
-    loadUploads();
+    registerBundled(bundledDir);
+    for (const auto& entry : entries_) described(*entry);  // a few small tables, read now
+    registerUploads();
 }
 
-void LensStore::loadBundled(const std::string& folder) {
+LensStore::~LensStore() {
+    stopping_ = true;
+    if (describer_.joinable()) describer_.join();
+}
+
+void LensStore::registerBundled(const std::string& folder) {
     std::error_code ec;
     std::vector<fs::path> files;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
@@ -123,38 +147,28 @@ void LensStore::loadBundled(const std::string& folder) {
             files.push_back(it->path());
     std::sort(files.begin(), files.end());
     for (const fs::path& file : files) {
-        try {
-            auto lens = describeLens(readLensTable(file.string()));
-            lens->id = file.stem().string();
-            lens->name = file.filename().string();
-            lens->bundled = true;
-            lens->path = file.string();
-            lenses_.push_back(std::move(lens));
-        } catch (const std::exception& e) {
-            std::cerr << "lenslab serve: skipping bundled lens " << file << ": " << e.what() << "\n";
-        }
+        auto entry = std::make_shared<Entry>();
+        entry->id = file.stem().string();
+        entry->name = file.filename().string();
+        entry->path = file.string();
+        entry->bundled = true;
+        entries_.push_back(std::move(entry));
     }
 }
 
-void LensStore::loadUploads() {
+void LensStore::registerUploads() {
     std::vector<std::string> known;
     database_.run("SELECT id, name, created, layout FROM lenses ORDER BY created", {}, [&](const SqlRow& row) {
         const std::string id = row.text(0);
         known.push_back(id + ".dat");
         if (!isSafeIdentifier(id)) return;
-        const std::string path = (fs::path(uploadDir_) / (id + ".dat")).string();
-        try {
-            const auto layoutName = row.optionalText(3);
-            auto lens = describeLens(parseLensTable(readWholeFile(path), row.text(1),
-                                                    layoutName ? parseLayoutName(*layoutName) : std::nullopt));
-            lens->id = id;
-            lens->name = row.text(1);
-            lens->created = row.real(2);
-            lens->path = path;
-            lenses_.push_back(std::move(lens));
-        } catch (const std::exception& e) {
-            std::cerr << "lenslab serve: skipping uploaded lens " << id << ": " << e.what() << "\n";
-        }
+        auto entry = std::make_shared<Entry>();
+        entry->id = id;
+        entry->name = row.text(1);
+        entry->created = row.real(2);
+        entry->path = (fs::path(uploadDir_) / (id + ".dat")).string();
+        if (const auto layout = row.optionalText(3)) entry->layout = parseLayoutName(*layout);
+        entries_.push_back(std::move(entry));
     });
     std::error_code ec;
     for (fs::directory_iterator it(uploadDir_, ec), end; !ec && it != end; it.increment(ec)) {
@@ -163,43 +177,105 @@ void LensStore::loadUploads() {
     }
 }
 
+void LensStore::describeInBackground() {
+    if (describer_.joinable()) return;
+    describer_ = std::thread([this] {
+        std::vector<std::shared_ptr<Entry>> entries;
+        {
+            std::shared_lock<std::shared_mutex> lock(mutex_);
+            entries = entries_;
+        }
+        for (const auto& entry : entries) {
+            if (stopping_) return;
+            described(*entry);
+        }
+    });
+}
+
+std::shared_ptr<const StoredLens> LensStore::described(Entry& entry) const {
+    std::call_once(entry.once, [&] {
+        std::shared_ptr<StoredLens> lens;
+        try {
+            const std::string text = readWholeFile(entry.path);
+            lens = describeLens(parseLensTable(text, entry.name, entry.layout));
+            lens->id = entry.id;
+            lens->name = entry.name;
+            lens->bundled = entry.bundled;
+            lens->created = entry.created;
+            lens->path = entry.path;
+            lens->digest = tableDigest(text, entry.layout);
+        } catch (const std::exception& e) {
+            std::cerr << "lenslab serve: skipping " << (entry.bundled ? "bundled" : "uploaded") << " lens " << entry.id
+                      << ": " << e.what() << "\n";
+        }
+        std::unique_lock<std::shared_mutex> lock(mutex_);
+        entry.lens = lens;
+        entry.failed = !lens;
+    });
+    std::shared_lock<std::shared_mutex> lock(mutex_);
+    return entry.lens;
+}
+
 std::vector<std::shared_ptr<const StoredLens>> LensStore::list() const {
     std::shared_lock<std::shared_mutex> lock(mutex_);
-    return lenses_;
+    std::vector<std::shared_ptr<const StoredLens>> lenses;
+    for (const auto& entry : entries_)
+        if (entry->lens) lenses.push_back(entry->lens);
+    return lenses;
+}
+
+LensStore::Counts LensStore::counts() const {
+    std::shared_lock<std::shared_mutex> lock(mutex_);
+    Counts c;
+    for (const auto& entry : entries_) {
+        c.lenses += !entry->failed;
+        c.waiting += !entry->lens && !entry->failed;
+    }
+    return c;
+}
+
+std::shared_ptr<LensStore::Entry> LensStore::entryOf(const std::string& id) const {
+    std::shared_lock<std::shared_mutex> lock(mutex_);
+    for (const auto& entry : entries_)
+        if (entry->id == id && !entry->failed) return entry;
+    return nullptr;
 }
 
 std::shared_ptr<const StoredLens> LensStore::find(const std::string& id) const {
-    std::shared_lock<std::shared_mutex> lock(mutex_);
-    for (const auto& lens : lenses_)
-        if (lens->id == id) return lens;
-    return nullptr;
+    const auto entry = entryOf(id);
+    return entry ? described(*entry) : nullptr;
 }
 
 std::shared_ptr<const StoredLens> LensStore::add(const std::string& uploadName, const std::string& text,
                                                  std::optional<TableLayout> layout) {
-    const std::string name = uploadDisplayName(uploadName);
-    auto lens = describeLens(parseLensTable(text, name, layout));
-    lens->id = newRandomIdentifier("upload-");
-    lens->name = name;
-    lens->created = secondsSinceEpoch();
-    lens->path = (fs::path(uploadDir_) / (lens->id + ".dat")).string();
+    auto entry = std::make_shared<Entry>();
+    entry->name = uploadDisplayName(uploadName);
+    auto lens = describeLens(parseLensTable(text, entry->name, layout));
+    entry->id = lens->id = newRandomIdentifier("upload-");
+    lens->name = entry->name;
+    entry->created = lens->created = secondsSinceEpoch();
+    entry->path = lens->path = (fs::path(uploadDir_) / (lens->id + ".dat")).string();
+    entry->layout = layout;
+    lens->digest = tableDigest(text, layout);
+    std::call_once(entry->once, [&] { entry->lens = lens; });
 
     std::unique_lock<std::shared_mutex> lock(mutex_);
-    const auto uploads = std::count_if(lenses_.begin(), lenses_.end(), [](const auto& l) { return !l->bundled; });
+    const auto uploads =
+        std::count_if(entries_.begin(), entries_.end(), [](const auto& e) { return !e->bundled && !e->failed; });
     if (uploads >= maxUploads_)
         throw LensStoreFull("the service holds " + std::to_string(uploads) + " uploaded lenses, its limit; delete some first");
     writeFileAtomically(lens->path, text);
     database_.run("INSERT INTO lenses (id, name, created, layout) VALUES (?, ?, ?, ?)",
                   {lens->id, lens->name, lens->created,
                    layout ? SqlValue(std::string(layoutName(*layout))) : SqlValue(nullptr)});
-    lenses_.push_back(lens);
+    entries_.push_back(std::move(entry));
     return lens;
 }
 
 LensStore::Removal LensStore::remove(const std::string& id) {
     std::unique_lock<std::shared_mutex> lock(mutex_);
-    auto it = std::find_if(lenses_.begin(), lenses_.end(), [&](const auto& l) { return l->id == id; });
-    if (it == lenses_.end()) return Removal::NotFound;
+    auto it = std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e->id == id && !e->failed; });
+    if (it == entries_.end()) return Removal::NotFound;
     if ((*it)->bundled) return Removal::ReadOnly;
     // The file first: when it cannot go (read-only folder) the lens stays listed and the client
     // hears why, instead of a 200 with the file left behind.
@@ -208,7 +284,7 @@ LensStore::Removal LensStore::remove(const std::string& id) {
     if (error && error != std::errc::no_such_file_or_directory)
         throw StorageError(storageErrorKind(error.value()), "cannot remove " + (*it)->path + ": " + error.message());
     database_.run("DELETE FROM lenses WHERE id = ?", {id});
-    lenses_.erase(it);
+    entries_.erase(it);
     return Removal::Removed;
 }
 

@@ -2,11 +2,14 @@
 // The lenses the service knows: the bundled tables (read-only, id = file name without .dat) and
 // uploaded ones (stored under DATA/lenses/<id>.dat, listed in the database, id chosen by the
 // service; the upload's own name is only shown, never used as a path).
+#include <atomic>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <shared_mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "storage/Database.h"
@@ -23,6 +26,7 @@ struct StoredLens {
     bool bundled = false;
     double created = 0;       // seconds since the epoch (uploads)
     std::string path;         // the table on disk, inside the lens folders
+    std::string digest;       // SHA-256 of the table's text and layout: the key of its cached analyses
     LensSystem system;
     double efl = 0, fstopMin = 0, fstopMax = 0;
 };
@@ -32,14 +36,30 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Uploads are described (parsed, checked, their first-order data computed) after the service
+// listens, not before: 500 stored uploads of 1 MiB took 132 s to describe, and the port stayed closed
+// meanwhile (issue 32). Until a background thread has described an upload it is not listed; asked
+// for by id, it is described on the spot.
 class LensStore {
 public:
-    // Loads the bundled tables and the uploads recorded in the database; tables that no longer
-    // parse and upload files without a record are skipped (and reported on stderr).
+    // Describes the bundled tables and registers the uploads recorded in the database (upload files
+    // without a record are deleted). Tables that no longer parse are skipped and reported on stderr.
     LensStore(const std::string& bundledDir, const std::string& uploadDir, Database& database, int maxUploads);
+    ~LensStore();  // stops the background description
 
+    // Starts describing the registered uploads on a thread of its own, oldest first.
+    void describeInBackground();
+
+    // The described lenses: bundled first, then uploads by age.
     std::vector<std::shared_ptr<const StoredLens>> list() const;
-    std::shared_ptr<const StoredLens> find(const std::string& id) const;  // nullptr when unknown
+    struct Counts {
+        int lenses = 0;   // known, described or not
+        int waiting = 0;  // uploads not described yet
+    };
+    Counts counts() const;
+    // The lens with that id, described now if it was not yet; nullptr when unknown (or no longer
+    // parsing).
+    std::shared_ptr<const StoredLens> find(const std::string& id) const;
 
     // Parses and checks the table (LensTableError with the upload name and line, OpticsError when
     // it has no first-order data), stores it, and returns it. LensStoreFull at the upload limit.
@@ -50,14 +70,20 @@ public:
     Removal remove(const std::string& id);
 
 private:
-    void loadBundled(const std::string& folder);
-    void loadUploads();
+    struct Entry;
+    void registerBundled(const std::string& folder);
+    void registerUploads();
+    // The entry's lens, described once (by whichever thread comes first); nullptr when it fails.
+    std::shared_ptr<const StoredLens> described(Entry& entry) const;
+    std::shared_ptr<Entry> entryOf(const std::string& id) const;
 
     std::string uploadDir_;
     Database& database_;
     int maxUploads_;
     mutable std::shared_mutex mutex_;
-    std::vector<std::shared_ptr<const StoredLens>> lenses_;  // bundled first, then uploads by age
+    std::vector<std::shared_ptr<Entry>> entries_;  // bundled first, then uploads by age
+    std::atomic<bool> stopping_{false};
+    std::thread describer_;
 };
 
 // The name shown for an upload: its last path component, limited to a safe alphabet and length.

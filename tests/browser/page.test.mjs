@@ -51,8 +51,13 @@ async function checkLensControls(page, work) {
   const upload = join(work, "my-wide.dat");
   copyFileSync(join(sourceDir, "lenses", "wide.dat"), upload);
   await page.setInputFiles("#lens-file", upload);
-  await page.waitForFunction(() => document.querySelector("#lens-title").textContent.startsWith("upload-"));
+  await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
   await page.waitForSelector("#message.info");
+  const title = await page.textContent("#lens-title");
+  const listed = await page.$eval("#lens-list button[aria-current=true]", (b) => b.firstChild.textContent);
+  check(title === "my-wide" && listed === "my-wide", `the upload is shown by its file's name: "${title}", listed as "${listed}"`);
+  await page.waitForFunction(() => document.querySelector("#editor-name").value === "my-wide-edited");
+  check(true, "and the editor's save name follows it: my-wide-edited");
   await page.waitForFunction(() => document.querySelector("#lens-data tbody").textContent.includes("Effective focal length"));
   const efl = await page.$eval("#lens-data tbody tr td", (td) => Number(td.textContent));
   check(Math.abs(efl - 100.11) < 0.05, `the uploaded lens's data table shows EFL ${efl}`);

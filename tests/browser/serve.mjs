@@ -37,6 +37,24 @@ export async function closeAll(context, server, work) {
   rmSync(work, { recursive: true, force: true });
 }
 
+// The page of a fresh `lenslab serve` loaded and ready in headless Chromium, its errors logged, waits
+// up to 60 s: { server, base, context, page }. On a failure here everything is closed again.
+export async function openPage(binary, work, viewport) {
+  const { server, base } = await startServer(binary, work);
+  const context = await launchBrowser(viewport);
+  try {
+    const page = context.pages()[0] || await context.newPage();
+    page.setDefaultTimeout(60000);
+    page.on("pageerror", (e) => console.log("# page error:", e.message));
+    await page.goto(base);
+    await page.waitForSelector("body[data-ready]");
+    return { server, base, context, page };
+  } catch (e) {
+    await closeAll(context, server, work);
+    throw e;
+  }
+}
+
 export function launchBrowser(viewport) {
   return chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), "lenslab-chromium-")), {
     executablePath: "/usr/bin/chromium",

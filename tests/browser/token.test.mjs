@@ -62,7 +62,7 @@ async function main() {
     await page.press("#token-input", "Enter");
     check((await page.textContent("#token-status")) === "Token set for this tab.", "the token is taken");
     await page.setInputFiles("#lens-file", table);
-    await page.waitForFunction(() => document.querySelector("#lens-title").textContent.startsWith("upload-"));
+    await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
     await page.waitForSelector("#message.info");
     check(uploads.at(-1) === "Bearer " + token, "the upload carried 'Authorization: Bearer TOKEN'");
     check(!(await page.getAttribute("#token-status", "class")).includes("refused"), "and the refusal is gone");

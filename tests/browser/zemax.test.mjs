@@ -52,11 +52,11 @@ async function main() {
     await page.goto(base);
     await page.waitForSelector("body[data-ready]");
     await page.setInputFiles("#lens-file", upload);
-    await page.waitForFunction(() => document.querySelector("#lens-title").textContent.startsWith("upload-"));
+    await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
     await page.waitForSelector("#message.info");
     // The uploaded lens's own tables (not the previous lens's): its model glasses show.
     await page.waitForFunction(() => document.querySelector("#lens-surfaces tbody").textContent.includes("model 1.58144"));
-    const id = await page.textContent("#lens-title");
+    const id = await page.getAttribute("#lens-title", "data-id");
 
     const surfaces = await page.$$eval("#lens-surfaces tbody tr", (rows) => rows.map((r) => [...r.cells].map((c) => c.textContent)));
     check(surfaces.length === 15, `the UTF-16 .zmx upload reads 15 surfaces (got ${surfaces.length})`);

@@ -3,10 +3,13 @@
 // rows read back to the same table; what a .dat cannot hold is refused naming the row.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <functional>
 #include <filesystem>
 
 #include "settings/LensAnalysis.h"
+#include "prescription/GlassCatalog.h"
 #include "prescription/LensSystem.h"
 #include "LensTableWriter.h"
 #include "PrescriptionJson.h"
@@ -25,13 +28,13 @@ std::vector<std::string> bundledLenses() {
     return paths;
 }
 
-// 1 / (1 / r) may differ from r in the last bit (a .zmx stores curvature); everything else is exact.
+// Every number exact, the radius too (a .zmx stores its curvature).
 void expectSameRows(const LensTable& a, const LensTable& b, const std::string& what) {
     ASSERT_EQ(a.rows.size(), b.rows.size()) << what;
     for (std::size_t i = 0; i < a.rows.size(); ++i) {
         const LensTableRow &x = a.rows[i], &y = b.rows[i];
         const std::string row = what + " row " + std::to_string(i + 1);
-        EXPECT_NEAR(x.radius, y.radius, 1e-12 * std::fabs(x.radius)) << row;
+        EXPECT_EQ(x.radius, y.radius) << row;
         EXPECT_EQ(x.gap, y.gap) << row;
         // Air is N 0 or 1 in a table; a stop is N 0.
         const auto medium = [](const LensTableRow& r) { return r.glass.empty() && r.index == 1 ? 0.0 : r.index; };
@@ -51,9 +54,19 @@ double efl(const LensTable& table) {
     return analyzeLens(buildLensSystem(table), std::nullopt, INFINITY).firstOrder.efl;
 }
 
+// A glass its name finds differently with the file's catalog order than without it.
+bool catalogOrderMatters(const LensTable& t, const LensTableRow& r) {
+    if (r.glass.empty() || t.catalogs.empty()) return false;
+    const GlassLookup with = findGlass(r.glass, t.catalogs), without = findGlass(r.glass);
+    return with.glass && without.glass && (with.glass->name != without.glass->name || with.glass->catalog != without.glass->catalog);
+}
+
 bool tableCanHold(const LensTable& t) {
+    if (t.primaryWavelength != kWavelengthD) return false;
     for (const LensTableRow& r : t.rows)
-        if (r.conic != 0 || r.mirror || r.obscurationDiameter > 0 || r.aspheric != AsphericCoefficients{}) return false;
+        if (r.conic != 0 || r.mirror || r.obscurationDiameter > 0 || r.aspheric != AsphericCoefficients{} ||
+            catalogOrderMatters(t, r))
+            return false;
     return true;
 }
 
@@ -143,6 +156,188 @@ TEST(PrescriptionJson, ABadFieldNamesItsRow) {
     }
     body["rows"][3]["diameter"] = "wide";
     EXPECT_THROW(prescriptionFromJson(body, "edited"), LensTableError);
+}
+
+// ---- what the writers cannot hold (issue 32) ----------------------------------------------------
+
+LensTable dgauss() { return withGapAfterRows(readLensTable(std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss.50mm.dat")); }
+
+using Writer = std::string (*)(const LensTable&);
+
+// The writer refuses the table (LensTableError), or writes text that reads back to the same table.
+void expectRefusedOrFaithful(Writer write, const LensTable& t, const std::string& what) {
+    std::string text;
+    try {
+        text = write(t);
+    } catch (const LensTableError&) {
+        return;
+    }
+    const LensTable again = parseLensTable(text, "again", TableLayout::GapAfter);
+    expectSameRows(t, again, what);
+    EXPECT_EQ(std::vector<std::string>(again.comments.begin(), again.comments.begin() + t.comments.size()), t.comments) << what;
+    ADD_FAILURE() << what << " was written: the field's characters are not a file's line\n" << text.substr(0, 600);
+}
+
+// A comment, the name, a glass or a catalog holding a line break (or a character a reader may take for
+// one) would start rows or keyword lines of its own: "UNIT IN", "MODE NSC", "SURF 99", a table row.
+TEST(PrescriptionWriters, LineBreaksInAnyTextFieldAreRefusedNotWritten) {
+    const std::vector<std::string> breaks = {"\n", "\r", "\v", "\f", "\x1b", "\xc2\x85", "\xe2\x80\xa8", "\xe2\x80\xa9", "\xff"};
+    for (const std::string& b : breaks) {
+        for (Writer write : {writeLensTableText, writeZemaxText}) {
+            LensTable name = dgauss();
+            name.comments = {"first" + b + "UNIT IN"};
+            expectRefusedOrFaithful(write, name, "the first comment");
+            LensTable note = dgauss();
+            note.comments = {"first", "note" + b + "50 5 1.5 20"};
+            expectRefusedOrFaithful(write, note, "a later comment");
+            LensTable glass = dgauss();
+            glass.rows[0].glass = "N-BK7" + b + "SURF 99";
+            glass.rows[0].index = 0;
+            expectRefusedOrFaithful(write, glass, "a glass name");
+        }
+        LensTable catalog = dgauss();
+        catalog.catalogs = {"SCHOTT" + b + "MODE NSC"};
+        EXPECT_THROW(writeZemaxText(catalog), LensTableError);
+    }
+}
+
+TEST(PrescriptionWriters, NamesThatReadAsSomethingElseAreRefused) {
+    LensTable abbe = dgauss();
+    abbe.rows[0].glass = "64.17";  // a .dat's fifth column as a number is an Abbe number
+    EXPECT_THROW(writeLensTableText(abbe), LensTableError);
+    LensTable mirror = dgauss();
+    mirror.rows[0].glass = "MIRROR";  // a .zmx GLAS MIRROR is a mirror
+    EXPECT_THROW(writeZemaxText(mirror), LensTableError);
+    LensTable spaced = dgauss();
+    spaced.catalogs = {"SCHOTT OHARA"};
+    EXPECT_THROW(writeZemaxText(spaced), LensTableError);
+}
+
+// A .dat is read at the d line: a lens designed at 550 nm written as a .dat would come back as
+// another lens (EFL 49.0516 -> 49.2130 in issue 32). The .zmx holds it.
+TEST(PrescriptionWriters, ADatRefusesAPrimaryWavelengthAZmxKeepsIt) {
+    const LensTable glasses = withGapAfterRows(readLensTable(std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-glass.dat"));
+    LensTable t = glasses;
+    t.primaryWavelength = 550;
+    try {
+        writeLensTableText(t);
+        FAIL() << "a 550 nm lens was written as a .dat";
+    } catch (const LensTableError& e) {
+        EXPECT_NE(e.problem().find("550"), std::string::npos) << e.problem();
+        EXPECT_NE(e.problem().find(".zmx"), std::string::npos) << e.problem();
+    }
+    const LensTable again = parseLensTable(writeZemaxText(t), "again.zmx");
+    EXPECT_EQ(again.primaryWavelength, 550);
+    EXPECT_NEAR(efl(again), efl(t), 1e-12 * efl(t));
+    EXPECT_GT(std::fabs(efl(t) - efl(glasses)), 1e-3) << "550 nm and the d line must give different lenses";
+}
+
+// PWAV names the primary wherever it is in the list, or in a list that lacked it.
+TEST(PrescriptionWriters, AZmxNamesItsPrimaryWavelengthWhereverItIs) {
+    struct Case {
+        std::vector<double> list;
+        double primary;
+    };
+    for (const Case& c : {Case{{kWavelengthF, kWavelengthD, kWavelengthC}, kWavelengthC}, Case{{kWavelengthF, kWavelengthD}, 550},
+                          Case{{}, 550}, Case{{}, kWavelengthD}, Case{{kWavelengthC, kWavelengthD}, kWavelengthD}}) {
+        LensTable t = dgauss();
+        t.wavelengths = c.list;
+        t.primaryWavelength = c.primary;
+        const LensTable again = parseLensTable(writeZemaxText(t), "again.zmx");
+        EXPECT_EQ(again.primaryWavelength, c.primary) << c.list.size() << " listed";
+        for (double nm : c.list) EXPECT_NE(std::find(again.wavelengths.begin(), again.wavelengths.end(), nm), again.wavelengths.end());
+    }
+}
+
+TEST(PrescriptionWriters, AZmxRefusesWavelengthsLenslabCannotTrace) {
+    for (double nm : {-500.0, 0.0, 100.0, 1064.0}) {
+        LensTable t = dgauss();
+        t.wavelengths = {kWavelengthD, nm};
+        EXPECT_THROW(writeZemaxText(t), LensTableError) << nm;
+    }
+}
+
+// The catalog order (GCAT) decides between makers' glasses of one name; a .dat has none, so it refuses
+// a lens whose glass the order decides, and writes one where it does not matter.
+TEST(PrescriptionWriters, ADatRefusesACatalogOrderThatPicksTheGlass) {
+    std::optional<std::pair<std::string, std::string>> decided;  // a name and the maker that changes it
+    for (const Medium& g : catalogGlasses()) {
+        for (const std::string& maker : glassCatalogNames()) {
+            const GlassLookup with = findGlass(g.name, {maker}), without = findGlass(g.name);
+            if (with.glass && without.glass && with.glass->catalog != without.glass->catalog) decided = {{g.name, maker}};
+            if (decided) break;
+        }
+        if (decided) break;
+    }
+    ASSERT_TRUE(decided) << "no glass name found in two catalogs";
+    LensTable t = dgauss();
+    t.rows[0].glass = decided->first;
+    t.rows[0].index = 0;
+    t.catalogs = {decided->second};
+    EXPECT_THROW(writeLensTableText(t), LensTableError) << decided->first << " via " << decided->second;
+    t.catalogs = {findGlass(decided->first).glass->catalog};
+    EXPECT_NO_THROW(writeLensTableText(t)) << "the default order's own maker first changes nothing";
+}
+
+// lenslab's own column header is written once, however often a lens is saved: it used to pile up
+// one comment a save, and the 62nd save was refused (64 comments at most).
+TEST(PrescriptionWriters, SavingADatAgainAndAgainKeepsOneHeader) {
+    LensTable t = dgauss();
+    const std::string first = writeLensTableText(t);
+    std::string text = first;
+    for (int save = 0; save < 70; ++save) text = writeLensTableText(parseLensTable(text, "saved.dat", TableLayout::GapAfter));
+    EXPECT_EQ(text, first);
+}
+
+// Radii through a .zmx (curvatures) come back as the same doubles, the awkward ones too: 1 / (1 / r)
+// in doubles is one ulp off for about a quarter of radii near 1 mm.
+TEST(PrescriptionWriters, ZemaxRadiiRoundTripExactly) {
+    LensTable t = dgauss();
+    std::uint64_t state = 12345;
+    int checked = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        for (LensTableRow& row : t.rows) {
+            if (row.radius == 0) continue;
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            const double unit = double(state >> 11) / double(1ull << 53);  // [0, 1)
+            row.radius = std::copysign(std::pow(10.0, 6 * unit - 2), row.radius);  // 0.01 mm to 10 m
+        }
+        const LensTable again = parseLensTable(writeZemaxText(t), "again.zmx");
+        for (std::size_t i = 0; i < t.rows.size(); ++i) {
+            ASSERT_EQ(again.rows[i].radius, t.rows[i].radius) << "row " << i + 1 << " trial " << trial;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 2000);
+}
+
+// The editor's JSON is checked at the door, as files are when read: bounded names and text on one
+// line, wavelengths lenslab traces; a glass name of a megabyte is refused before any catalog search
+// (the nearest-name search over it took 27 s).
+TEST(PrescriptionJson, NamesTextAndWavelengthsAreCheckedAtTheDoor) {
+    const nlohmann::json good = prescriptionJson(dgauss());
+    const auto refused = [&](const std::function<void(nlohmann::json&)>& change, const std::string& mentions) {
+        nlohmann::json body = good;
+        change(body);
+        try {
+            prescriptionFromJson(body, "edited");
+            ADD_FAILURE() << "accepted; expected a refusal mentioning " << mentions;
+        } catch (const LensTableError& e) {
+            EXPECT_NE(e.problem().find(mentions), std::string::npos) << e.problem();
+            EXPECT_LT(e.problem().size(), 200u) << "the problem echoes the input";
+        }
+    };
+    refused([](auto& b) { b["comments"] = {"a\nUNIT IN"}; }, "comment 1");
+    refused([](auto& b) { b["comments"] = {"a", "b\vc"}; }, "comment 2");
+    refused([](auto& b) { b["comments"] = std::vector<std::string>(2, std::string(3000, 'x')); }, "4096");
+    refused([](auto& b) { b["catalogs"] = {"SCHOTT\nMODE NSC"}; }, "catalog");
+    refused([](auto& b) { b["wavelengths_nm"] = {587.5618, -500}; }, "-500 nm");
+    refused([](auto& b) { b["primary_wavelength_nm"] = 100; }, "100 nm");
+    refused([](auto& b) { b["rows"][1]["glass"] = "N-BK7\nSURF 99"; }, "glass");
+    const auto start = std::chrono::steady_clock::now();
+    refused([](auto& b) { b["rows"][1]["glass"] = std::string(1 << 20, 'Q'); }, "1048576 characters");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+    EXPECT_NO_THROW(prescriptionFromJson(good, "edited"));
 }
 
 }  // namespace

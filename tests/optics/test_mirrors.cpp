@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "trace/ExactTrace.h"
+#include "firstorder/Aperture.h"
 #include "firstorder/FirstOrder.h"
 #include "settings/LensAnalysis.h"
 
@@ -19,6 +20,7 @@ namespace {
 // equation: 1/s' - 1/s = -2/R2 gives |R2| = 2 s s' / (s' - s) = 50 (convex); the secondary conic for
 // a perfect axial image is -((m + 1)/(m - 1))^2 = -2.25; system focal length m f1 = 500.
 constexpr double kF1 = 100, kGap = 80, kM = 5;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 LensTable cassegrainTable(double secondaryConic, double obscuration) {
     LensTable t;
@@ -113,6 +115,45 @@ TEST(Mirrors, AnalysisOfAReflexLensIsFinite) {
     EXPECT_NEAR(a.fstop, 5.0, 0.05);  // 100 mm aperture, f = 500
     EXPECT_TRUE(std::isfinite(a.pupils.exit.z));
     EXPECT_TRUE(std::isfinite(a.focus.imageZExact));
+}
+
+TEST(Mirrors, TheNarrowestFstopIsWhereTheStopClosesIntoTheObscurationsShadow) {
+    // The primary is the stop and carries the 30 mm obscuration: light passes only while the stop
+    // opens wider than it. The classical Cassegrain images the axis perfectly, so the collimated ray
+    // at the obscuration's rim (15 mm) crosses F' at the cone angle of that f-number.
+    const LensSystem lens = buildLensSystem(cassegrainTable(-2.25, 30));
+    TraceOptions unobscured;
+    unobscured.ignoreObscurations = true;
+    const TraceResult rim = traceRay(lens, {{0, 15, 10}, {0, 0, -1}}, TraceDirection::SceneToFilm, unobscured);
+    ASSERT_TRUE(rim.ok());
+    const double sinTheta = std::hypot(rim.ray.direction.x, rim.ray.direction.y);
+    const LensAnalysis a = analyzeLens(lens, std::nullopt, kInf);
+    EXPECT_NEAR(a.aperture.fstopMax, 1 / (2 * sinTheta), 1e-7);
+    EXPECT_NEAR(a.aperture.fstopMax, 500.0 / 30, 0.2);  // near N = f / D
+    EXPECT_EQ(analyzeLens(buildLensSystem(cassegrainTable(-2.25, 0)), std::nullopt, kInf).aperture.fstopMax,
+              kNarrowestFstop);
+
+    // The bundled reflex lens (its secondary mirror's shadow): every f-number of its range passes
+    // light on axis, the first past it none.
+    const LensSystem reflex = loadLensSystem(LENSLAB_SOURCE_DIR "/lenses/us4666259-ex1-reflex-500mm.zmx");
+    const ApertureRange range = analyzeLens(reflex, std::nullopt, kInf).aperture;
+    EXPECT_GT(range.fstopMax, 1.5 * range.fstopMin);  // f/6.70 to f/13.08
+    EXPECT_LT(range.fstopMax, 20);
+    const auto axialRaysPass = [&](double fstop) {
+        LensSystem stopped = reflex;
+        const FirstOrder fo = computeFirstOrder(stopped);
+        ApertureRange wide = range;
+        wide.fstopMax = kNarrowestFstop;
+        stopped.surfaces[stopped.stopIndex].apertureRadius = stopDiameterForFstop(stopped, fo, wide, fstop) / 2;
+        int passed = 0;
+        for (int k = 0; k <= 2000; ++k) {
+            const double y = stopped.surfaces[0].apertureRadius * k / 2000;
+            passed += traceRay(stopped, {{0, y, 100}, {0, 0, -1}}, TraceDirection::SceneToFilm).ok();
+        }
+        return passed;
+    };
+    EXPECT_GT(axialRaysPass(range.fstopMax * 0.98), 0);
+    EXPECT_EQ(axialRaysPass(range.fstopMax * 1.05), 0);
 }
 
 // One mirror sends the light back toward the scene: the image space is mirrored across the

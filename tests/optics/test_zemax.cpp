@@ -372,6 +372,15 @@ TEST(ZemaxErrors, NoSemiDiameter) { expectError(replaced(singlet(), "  DIAM 10\n
 TEST(ZemaxErrors, ModelGlassWithoutAbbeNumber) { expectError(singlet("  GLAS ___BLANK 1 0 1.5"), 13, "a model glass needs nd >= 1 and Vd >= 0"); }
 TEST(ZemaxErrors, IndexBelowOne) { expectError(singlet("  GLAS F2 0 0 0.5 30"), 13, "nd 0.5 is below 1"); }
 TEST(ZemaxErrors, PrimaryWavelengthMissing) { expectError(singlet("  CONI 0", "WAVM 1 0.55 1\nPWAV 3"), 3, "PWAV 3 names no WAVM wavelength (1..1)"); }
+// The wavelengths a file lists are ones lenslab traces (360-830 nm), the primary above all: WAVM 1
+// 0.1 used to give a lens at 100 nm (EFL 6.28 mm), and 1e300 um a wavelength_nm of 1e+303.
+TEST(ZemaxErrors, WavelengthsOutsideTheTracedRange) {
+    expectError(singlet("  CONI 0", "WAVM 1 0.1 1"), 2, "WAVM: wavelength 100 nm lies outside 360-830 nm");
+    expectError(singlet("  CONI 0", "WAVM 1 1e300 1"), 2, "wavelength 1e+303 nm lies outside");
+    expectError(singlet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 -0.5 1\nPWAV 1"), 3, "wavelength -500 nm");
+    expectError(singlet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 1.064 1\nPWAV 1"), 3, "wavelength 1064 nm");
+    EXPECT_NEAR(parseZemax(singlet("  CONI 0", "WAVM 1 0.36 1\nWAVM 2 0.83 1\nPWAV 2"), "ends.zmx").primaryWavelength, 830, 1e-9);
+}
 TEST(ZemaxErrors, AsphereTermOutOfRange) { expectError(singlet("  TYPE EVENASPH\n  PARM 9 1"), 14, "PARM 9 is not one"); }
 TEST(ZemaxErrors, SurfaceLineBeforeAnySurface) { expectError(singlet("  CONI 0", "CURV 0.5"), 2, "CURV before the first SURF"); }
 

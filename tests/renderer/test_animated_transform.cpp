@@ -46,6 +46,21 @@ TEST(AnimatedTransform, RotationTakesTheShortWayRound) {
     expectSameMatrix(m.at(0.5f), rotate(-45, 1, 0, 0), 1e-12);
 }
 
+// The short way across 180 degrees: 170 to -170 is 20 degrees through 180, and -60 to -170 is 110
+// degrees through -115 (not 250 through 65). Shepperd's method gives the second pair's quaternions
+// on opposite sides of the quaternion sphere (-60 degrees from the trace, scalar part positive;
+// -170 from the axis component, made positive), so only brought to one side does the blend take the
+// short way; a blend that ignored the sides would stand at 65 degrees midway.
+TEST(AnimatedTransform, RotationTakesTheShortWayAcross180Degrees) {
+    for (const float axis : {0.0f, 1.0f}) {
+        const float x = axis, y = 1 - axis;
+        expectSameMatrix(AnimatedTransform(rotate(170, x, y, 0), rotate(-170, x, y, 0)).at(0.5f), rotate(180, x, y, 0), 1e-12);
+        const AnimatedTransform m(rotate(-60, x, y, 0), rotate(-170, x, y, 0));
+        expectSameMatrix(m.at(0.5f), rotate(-115, x, y, 0), 1e-12);
+        expectSameMatrix(m.at(0.25f), rotate(-87.5, x, y, 0), 1e-6);
+    }
+}
+
 TEST(AnimatedTransform, ScaleBlendsLinearly) {
     const AnimatedTransform m(rotate(40, 0, 1, 0), rotate(40, 0, 1, 0) * scale(3, 2, 1));
     expectSameMatrix(m.at(0.5f), rotate(40, 0, 1, 0) * scale(2, 1.5, 1), 1e-12);

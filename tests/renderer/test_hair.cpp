@@ -1,5 +1,6 @@
 // pbrt-v4's "hair" material (d'Eon et al. 2011, Chiang et al. 2016): a white fibre scatters all the
-// light it receives, sampling draws directions with the density pdf() reports, the parameter forms
+// light it receives, the TRT lobe's attenuation and the R lobe's tilt are d'Eon's and Chiang's
+// closed forms, sampling draws directions with the density pdf() reports, the parameter forms
 // give the absorption their formulas say, and curves report where a ray crossed their width.
 #include <gtest/gtest.h>
 
@@ -57,6 +58,50 @@ TEST(Hair, WhiteFibreScattersAllLightItReceives) {
                 EXPECT_NEAR(albedo, 1.0, 0.015) << rough << " h " << h << " wo " << wo.x << " " << wo.y << " " << wo.z;
             }
     }
+}
+
+// The TRT lobe's light against d'Eon 2011's attenuation written out: Fresnel F at the entry (of
+// cos theta_o cos gamma_o), the chord's transmittance T = exp(-sigma_a 2 cos gamma_t / cos theta_t)
+// once per crossing: A2 = (1 - F)^2 T^2 F. Gathered over 90 degrees of azimuth around the lobe's
+// exit azimuth (4 gamma_t - 2 gamma_o + 2 pi), with the residual's quarter (A3 = A2 F T / (1 - F T),
+// uniform in azimuth); R and TT lie 75 and 142 degrees away, their narrow lobes out of reach.
+TEST(Hair, TheTrtLobeCarriesTwoChordsOfAbsorption) {
+    test::TempDir dir;
+    const float sigma = 0.3f, eta = 1.55f, h = 0.5f;
+    const auto m = test::parseMaterial(
+        dir, hairLine("\"rgb sigma_a\" [0.3 0.3 0.3] \"float beta_m\" 0.2 \"float beta_n\" 0.2 \"float alpha\" 0"));
+    const SurfaceHit hit = fibreHit(h);
+    const Vec3f wo = aroundFibre(0, 90);  // across the fibre: theta_o = 0, eta' = eta
+    const double gammaO = std::asin(h), gammaT = std::asin(h / eta);
+    const double cosI = std::cos(gammaO), cosT = std::sqrt(1 - std::pow(std::sin(gammaO) / eta, 2));
+    const double rs = (cosI - eta * cosT) / (cosI + eta * cosT), rp = (eta * cosI - cosT) / (eta * cosI + cosT);
+    const double F = 0.5 * (rs * rs + rp * rp), T = std::exp(-sigma * 2 * std::cos(gammaT));
+    const double a2 = (1 - F) * (1 - F) * T * T * F, a3 = a2 * F * T / (1 - F * T);
+    const double centre = M_PI / 2 + 4 * gammaT - 2 * gammaO;
+    const double gathered = sphereIntegral([&](Vec3f wi) {
+        const double off = std::remainder(std::atan2(wi.z, wi.y) - centre, 2 * M_PI);
+        return std::fabs(off) < M_PI / 4 ? double(m->evaluate(hit, wo, wi).y) : 0.0;
+    });
+    EXPECT_NEAR(gathered, a2 + a3 / 4, 0.03 * a2) << "F " << F << " T " << T;
+}
+
+// The cuticle's scales tilt the R lobe by -2 alpha (Chiang 2016, as pbrt-v4): light reflected off a
+// fibre seen at elevation theta_o leaves around -(theta_o - 2 alpha), here 0 for theta_o = 2 alpha =
+// 20 degrees (it would be -40 tilted the other way). The brightest elevation along R's azimuth.
+TEST(Hair, TheRLobeIsTiltedByMinusTwoAlpha) {
+    test::TempDir dir;
+    const auto m = test::parseMaterial(
+        dir, hairLine("\"rgb sigma_a\" [0.3 0.3 0.3] \"float beta_m\" 0.1 \"float beta_n\" 0.2 \"float alpha\" 10"));
+    const float h = 0.5f;
+    const SurfaceHit hit = fibreHit(h);
+    const Vec3f wo = aroundFibre(20, 90);
+    const float rAzimuth = 90 - 2 * std::asin(h) * 180 / kPi;  // -2 gamma_o from the viewer's
+    float brightest = -90, peak = 0;
+    for (float theta = -80; theta <= 80; theta += 0.05f) {
+        const float value = m->evaluate(hit, wo, aroundFibre(theta, rAzimuth)).y;
+        if (value > peak) peak = value, brightest = theta;
+    }
+    EXPECT_NEAR(brightest, 0, 1.0);
 }
 
 // The density sampling draws, binned in (wi.x, azimuth), against pdf() integrated over each bin;

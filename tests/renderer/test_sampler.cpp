@@ -145,5 +145,33 @@ TEST(PixelSampler, TimeIsIndependentOfFilmAndLens) {
     EXPECT_NEAR(cross / 32000, 0.0, 0.002);
 }
 
+// The spectral film's wavelength is a sixth dimension, padded apart from the time: were it drawn
+// with the time's seeds, a motion-blurred spectral render would tie colour to the moment (every
+// sample's wavelength equal to its time). Like the time against the lens, 16 samples of (time,
+// wavelength) fill 16 (1 - (3/4)^4) = 10.9 of the 4 x 4 cells on average, not the diagonal's 4; and
+// any aligned power of two of them falls one in each slice of the spectrum.
+TEST(PixelSampler, WavelengthIsIndependentOfTime) {
+    const int pixels = 500;
+    double filled = 0, cross = 0;
+    for (int px = 0; px < pixels; ++px) {
+        const PixelSampler sampler(mix64(px));
+        std::set<std::pair<int, int>> cells;
+        for (std::uint32_t i = 0; i < 16; ++i) {
+            const PixelSample s = sampler(i);
+            cells.insert({int(s.time * 4), int(s.wavelength * 4)});
+            cross += (s.time - 0.5) * (s.wavelength - 0.5);
+        }
+        filled += double(cells.size());
+    }
+    EXPECT_NEAR(filled / pixels, 16 * (1 - std::pow(0.75, 4)), 0.3);
+    EXPECT_NEAR(cross / (16 * pixels), 0.0, 0.004);  // 1/12 were they equal
+    for (int count : {4, 64}) {
+        const PixelSampler sampler(mix64(7));
+        std::set<int> slices;
+        for (std::uint32_t i = 0; i < std::uint32_t(count); ++i) slices.insert(int(sampler(i).wavelength * count));
+        EXPECT_EQ(int(slices.size()), count) << count << " samples";
+    }
+}
+
 }  // namespace
 }  // namespace lenslab

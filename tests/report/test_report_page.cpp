@@ -146,10 +146,23 @@ TEST_F(ReportPage, EveryLensAndSceneAppears) {
                 EXPECT_NE(html_.find("src=\"assets/renders/" + scene + "/" + lens + "-" + kind + ".png\""), std::string::npos)
                     << scene << " " << lens << " " << kind;
     }
-    // One inline SVG plot per lens for each of thick error, illumination and distortion, plus the comparisons.
-    std::size_t plots = 0;
+    // Inline SVG plots: per lens the thick-lens error, and illumination and distortion only where the
+    // designer's analysis draws none (a lens without a largest field), plus the three comparisons.
+    std::size_t plots = 0, expected = 3;
     for (std::size_t at = html_.find("<svg"); at != std::string::npos; at = html_.find("<svg", at + 1)) ++plots;
-    EXPECT_EQ(plots, 3 * bundledLenses(source).size() + 3);
+    for (const std::string& lens : bundledLenses(source)) {
+        SCOPED_TRACE(lens);
+        const nlohmann::json analysis = nlohmann::json::parse(readFile(site_ / "assets/lenses" / (lens + "-analysis/analysis.json")));
+        const bool curves = !analysis["largest_field_deg"].is_null();
+        expected += curves ? 1 : 3;
+        const std::size_t begin = html_.find("<article class=\"lens\" id=\"lens-" + lens + "\">");
+        ASSERT_NE(begin, std::string::npos);
+        const std::string article = html_.substr(begin, html_.find("</article>", begin) - begin);
+        for (const std::string& panel : {"illumination-", "distortion-"})
+            EXPECT_EQ(article.find("<title id=\"" + panel + lens + "-title\">") == std::string::npos, curves) << panel;
+        EXPECT_EQ(article.find("distortion.svg\"") != std::string::npos, curves);
+    }
+    EXPECT_EQ(plots, expected);
 }
 
 TEST_F(ReportPage, EveryImageIsAValidPngOfItsStatedSizeAndEveryLinkIsLocal) {
@@ -212,7 +225,8 @@ TEST_F(ReportPage, TablesHoldTheNumbersOfLensJson) {
         const nlohmann::json stored = nlohmann::json::parse(readFile(site_ / "assets/lenses" / (lens + ".json")));
         const double focus = stored["focus"]["distance"].get<double>();
         EXPECT_TRUE(focus == 2000 || std::fabs(focus - 20 * stored["efl"].get<double>()) < 1e-9) << focus;
-        const nlohmann::json expected = commandJson("lens", lensFile(source, lens), focus);
+        nlohmann::json expected = commandJson("lens", lensFile(source, lens), focus);
+        expected["name"] = lensFile(source, lens).filename().string();  // published: not where it lies
         EXPECT_EQ(stored, expected);
 
         const std::size_t begin = html_.find("<article class=\"lens\" id=\"lens-" + lens + "\">");
@@ -233,6 +247,16 @@ TEST_F(ReportPage, TablesHoldTheNumbersOfLensJson) {
             EXPECT_NEAR(std::stod(text), node.get<double>(), 0.5 * std::pow(10.0, -decimals) + 1e-12) << key;
         }
         EXPECT_GE(cells, 20);
+        // The image circle: a number where rays stop within the search (2 EFL + 50 mm), else none (the
+        // doublet with its stop at the glass passes rays at every angle).
+        std::smatch circle;
+        ASSERT_TRUE(std::regex_search(article, circle, std::regex("<th scope=\"row\">Image circle radius</th><td>([^<]*)</td>")));
+        if (lens == "ac254-100-a") {
+            EXPECT_EQ(circle[1], "none");
+        } else if (lens == "dgauss.50mm") {
+            EXPECT_GT(std::stod(circle[1]), 0);
+            EXPECT_LT(std::stod(circle[1]), 2 * std::fabs(expected["efl"].get<double>()) + 50);
+        }
     }
 }
 

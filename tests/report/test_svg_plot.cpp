@@ -62,3 +62,19 @@ TEST(SvgPlot, MissingValuesBreakTheLine) {
     EXPECT_EQ(std::count(d.begin(), d.end(), 'M'), 2);
     EXPECT_EQ(std::count(d.begin(), d.end(), 'L'), 2);
 }
+
+// Tick labels along x never touch, however many decimals a narrow plot's range needs.
+TEST(SvgPlot, XTickLabelsNeverTouch) {
+    Plot p;
+    p.id = "narrow";
+    p.width = 240;  // 162 px of axis: six labels like "-0.002" at 0.001 apart would overlap
+    p.series = {{"s", {-0.0012, 0.0031}, {0, 1}}};
+    const std::string svg = svgPlot(p);
+    const std::regex tick("<text x=\"([\\d.]+)\" y=\"[\\d.]+\" text-anchor=\"middle\" fill=\"#333\">([^<]*)</text>");
+    std::vector<std::pair<double, std::string>> ticks;
+    for (std::sregex_iterator it(svg.begin(), svg.end(), tick), end; it != end; ++it) ticks.emplace_back(std::stod((*it)[1]), (*it)[2]);
+    ASSERT_GE(ticks.size(), 3u);
+    for (std::size_t i = 1; i < ticks.size(); ++i)
+        EXPECT_GE(ticks[i].first - ticks[i - 1].first, 7.2 * 0.5 * (ticks[i].second.size() + ticks[i - 1].second.size()))
+            << ticks[i - 1].second << " and " << ticks[i].second;
+}

@@ -57,6 +57,14 @@ std::string RawConnection::readReply(double seconds) {
     return reply;
 }
 
+bool RawConnection::closedByServer() {
+    pollfd entry{fd_, POLLIN | POLLRDHUP, 0};
+    if (::poll(&entry, 1, 0) <= 0) return false;
+    if (entry.revents & (POLLRDHUP | POLLHUP | POLLERR)) return true;
+    char byte;
+    return ::recv(fd_, &byte, 1, MSG_PEEK | MSG_DONTWAIT) == 0;
+}
+
 int statusOf(const std::string& reply) {
     if (reply.rfind("HTTP/1.", 0) != 0 || reply.size() < 12) return 0;
     return std::atoi(reply.c_str() + 9);

@@ -16,6 +16,8 @@ public:
     // Everything that arrives until the server closes or `seconds` pass without a complete reply
     // (a reply is complete when its Content-Length bytes have come).
     std::string readReply(double seconds);
+    // Whether the server has closed the connection (checked now, without waiting or reading data).
+    bool closedByServer();
 
 private:
     int fd_ = -1;

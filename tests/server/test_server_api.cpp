@@ -210,6 +210,10 @@ TEST_F(ServerApi, ServesThePageAndExplainsAMissingReport) {
 }
 
 TEST_F(ServerApi, DrawsCachedDiagramsUnderConcurrentRequests) {
+    // Sixteen requests of heavy work at once from one address: its share and the pool's places raised to them.
+    server_.reset();
+    server_ = std::make_unique<ServerProcess>(kBinary, data_.path() + "/data",
+                                              std::vector<std::string>{"--work-per-client", "16", "--http-threads", "64"});
     auto c = client();
     for (const std::string mode : {"exact", "thick", "overlay"}) {
         const auto r = c.Get("/api/lenses/dgauss.50mm/diagram.png?mode=" + mode + "&fstop=2.8&focus=2000&size=600x300");

@@ -1,10 +1,14 @@
 // The HTTP front's details from issue 23 (findings 6 and 13): a request that cannot be parsed ends
 // its connection, byte ranges apply to complete answers only, Keep-Alive states the real limits,
 // a too-long request line gets its 414, a refusal comes before "100 Continue", and unknown API
-// paths answer JSON. LENSLAB_SERVER_BINARY overrides the binary under test.
+// paths answer JSON; and issue 32's nits (codings with quality 0, Vary, 413 before "100 Continue",
+// Host lists and trailing dots, two Host headers, other transfer codings, the access log's bytes).
+// LENSLAB_SERVER_BINARY overrides the binary under test.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <memory>
+#include <regex>
 #include <thread>
 
 #include "RawServerTest.h"
@@ -124,4 +128,97 @@ TEST_F(ServerHttpDetails, UnknownApiPathsAnswerJson) {
     const Reply reply = ::lenslab::test::get(c, "/api/no-such-thing");
     EXPECT_EQ(reply.status, 404);
     EXPECT_TRUE(reply.body.is_object() && reply.body.contains("error")) << reply.raw;
+}
+
+// ---- issue 32, finding 9 --------------------------------------------------------------------------
+
+// gzip;q=0 refuses gzip (cpp-httplib looked for "gzip" anywhere in the header), and every answer
+// says it depends on Accept-Encoding, so caches keep the two apart.
+bool variesByEncoding(const std::string& reply) {
+    return std::regex_search(reply.substr(0, reply.find("\r\n\r\n")), std::regex("\r\nVary: [^\r]*Accept-Encoding"));
+}
+
+TEST_F(ServerHttpDetails, ACodingWithQualityZeroIsNotUsedAndAnswersVaryByIt) {
+    start();
+    for (const std::string& refusing : {"gzip;q=0", "gzip; q=0.0, br;q=0", "identity, gzip;Q=0"}) {
+        const std::string reply = exchange(get("/api/lenses", "Accept-Encoding: " + refusing + "\r\n"));
+        EXPECT_EQ(statusOf(reply), 200) << refusing;
+        EXPECT_EQ(reply.find("Content-Encoding"), std::string::npos) << refusing << "\n" << reply.substr(0, 400);
+        EXPECT_TRUE(variesByEncoding(reply)) << reply.substr(0, 400);
+    }
+    const std::string gzip = exchange(get("/api/lenses", "Accept-Encoding: gzip;q=0.5\r\n"));
+    EXPECT_NE(gzip.find("Content-Encoding: gzip"), std::string::npos) << gzip.substr(0, 400);
+    EXPECT_TRUE(variesByEncoding(gzip)) << gzip.substr(0, 400);
+}
+
+// A client asking for "100 Continue" with a body past the limit hears 413, not an invitation to send it.
+TEST_F(ServerHttpDetails, AnOversizeBodyIsRefusedBeforeContinue) {
+    start();
+    RawConnection connection(server_->port());
+    connection.send("POST /api/lenses?name=x.dat HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: text/plain\r\n"
+                    "Content-Length: 2000000\r\nExpect: 100-continue\r\n\r\n");
+    const std::string reply = connection.readReply(3);
+    EXPECT_EQ(statusOf(reply), 413) << reply;
+    EXPECT_EQ(reply.find("100 Continue"), std::string::npos) << reply;
+    EXPECT_NE(bodyOf(reply).find("1048576"), std::string::npos) << reply;
+}
+
+// A route's own smaller limit is the one its 413 names (a preview body: 256 KiB, not the 1 MiB of --max-body).
+TEST_F(ServerHttpDetails, APreviewBodyPastItsLimitNamesThatLimit) {
+    start();
+    auto c = server_->client();
+    const Reply reply = postRaw(c, "/api/prescriptions/preview", "{\"rows\": [], \"comments\": [\"" + std::string(300000, 'x') + "\"]}");
+    EXPECT_EQ(reply.status, 413) << reply.raw.substr(0, 300);
+    EXPECT_NE(reply.body.value("error", std::string()).find("256 KiB"), std::string::npos) << reply.raw.substr(0, 300);
+}
+
+// Host names as operators and DNS write them: "a, b" lists b, and a trailing dot names the same host.
+TEST_F(ServerHttpDetails, HostNamesAreReadAsWrittenInListsAndByDns) {
+    start({"--allow-host", "lab.example, other.example"});
+    for (const std::string& host : {"lab.example", "other.example", "other.example.", "localhost.", "other.example.:8080"})
+        EXPECT_EQ(statusOf(exchange("GET /api/health HTTP/1.1\r\nHost: " + host + "\r\n\r\n")), 200) << host;
+    EXPECT_EQ(statusOf(exchange("GET /api/health HTTP/1.1\r\nHost: attacker.example.\r\n\r\n")), 421);
+}
+
+// Two Host headers could be read two ways (cpp-httplib took the first, a proxy might take the last).
+TEST_F(ServerHttpDetails, TwoHostHeadersAreRefused) {
+    start();
+    const std::string reply = exchange("GET /api/health HTTP/1.1\r\nHost: 127.0.0.1\r\nHost: attacker.example\r\n\r\n");
+    EXPECT_EQ(statusOf(reply), 400) << reply;
+    EXPECT_TRUE(isJsonError(reply)) << reply;
+}
+
+// A Transfer-Encoding other than chunked leaves the body's end unknown: 400 at once, not after the
+// read timeout (30 s here).
+TEST_F(ServerHttpDetails, ATransferEncodingOtherThanChunkedIsRefusedAtOnce) {
+    start({"--read-timeout", "30"});
+    for (const std::string& coding : {"gzip", "gzip, chunked", "chunked, gzip", "identity"}) {
+        RawConnection connection(server_->port());
+        connection.send("POST /api/lenses?name=x.dat HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: text/plain\r\n"
+                        "Transfer-Encoding: " + coding + "\r\n\r\n5\r\nhello\r\n");
+        const std::string reply = connection.readReply(5);
+        EXPECT_EQ(statusOf(reply), 400) << coding << ": " << reply;
+    }
+}
+
+// The access log counts the bytes of files sent in pieces too (the web page was logged as 0 bytes).
+TEST_F(ServerHttpDetails, TheAccessLogCountsFilesSentInPieces) {
+    const std::string log = data_.path() + "/access.log";
+    start({"--access-log", log});
+    auto c = server_->client();
+    const Reply page = ::lenslab::test::get(c, "/");
+    ASSERT_EQ(page.status, 200);
+    std::ifstream in(std::string(LENSLAB_SOURCE_DIR) + "/web/index.html", std::ios::binary | std::ios::ate);
+    const auto size = static_cast<std::size_t>(in.tellg());
+    server_->stop();
+    std::ifstream lines(log);
+    bool found = false;
+    for (std::string line; std::getline(lines, line);) {
+        const json entry = json::parse(line, nullptr, false);
+        if (entry.is_object() && entry["path"] == "/" && entry["status"] == 200) {
+            EXPECT_EQ(entry["bytes"].get<std::size_t>(), size) << line;
+            found = true;
+        }
+    }
+    EXPECT_TRUE(found);
 }

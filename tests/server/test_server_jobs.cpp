@@ -14,8 +14,6 @@ using nlohmann::json;
 
 namespace {
 
-const std::string kFakeServer = LENSLAB_FAKE_SERVER;
-
 json slowRender(int millisecondsPerTile) {
     return {{"scene", "any"}, {"lens", "dgauss.50mm"}, {"spp", millisecondsPerTile}, {"width", 64}, {"height", 64}};
 }
@@ -23,7 +21,7 @@ json slowRender(int millisecondsPerTile) {
 class ServerJobs : public ::testing::Test {
 protected:
     std::unique_ptr<ServerProcess> start(const std::vector<std::string>& args = {}) {
-        return std::make_unique<ServerProcess>(kFakeServer, data_.path() + "/data", args);
+        return std::make_unique<ServerProcess>(fakeServerUnderTest(), data_.path() + "/data", args);
     }
     std::vector<std::string> sceneArgs() const { return {"--scenes", scenes_.path()}; }
     void SetUp() override { writeFakeRendererScene(scenes_.path()); }
@@ -177,4 +175,25 @@ TEST_F(ServerJobs, RecoversFromKillDuringARender) {
     EXPECT_NE(resubmitted.body["id"], id);
     EXPECT_EQ(resubmitted.body["request"]["spp"], 400);
     EXPECT_EQ(remove(c, "/api/renders/" + resubmitted.body["id"].get<std::string>()).status / 100, 2);
+}
+
+// Issue 32, finding 9: deleting a lens that a queued render uses was 200, and the render failed when
+// it started. Now 409 naming the render until it has ended; then the lens goes.
+TEST_F(ServerJobs, ALensARenderWaitsForCannotBeDeleted) {
+    auto server = start(with(sceneArgs(), {"--renders", "1"}));
+    auto c = server->client();
+    const Reply lens = postRaw(c, "/api/lenses?name=mine.dat", kSmallLensTable);
+    ASSERT_EQ(lens.status, 201);
+    const std::string id = lens.body["id"];
+    const std::string running = postJson(c, "/api/renders", slowRender(500)).body["id"];
+    json queued = slowRender(5);
+    queued["lens"] = id;
+    const Reply waiting = postJson(c, "/api/renders", queued);
+    ASSERT_EQ(waiting.status, 202) << waiting.raw;
+    const Reply refused = remove(c, "/api/lenses/" + id);
+    EXPECT_EQ(refused.status, 409) << refused.raw;
+    EXPECT_NE(refused.body.value("error", std::string()).find(waiting.body["id"].get<std::string>()), std::string::npos) << refused.raw;
+    EXPECT_EQ(remove(c, "/api/renders/" + running).status, 202);
+    EXPECT_EQ(waitForRenderState(c, waiting.body["id"], {"done"}, 20)["state"], "done");
+    EXPECT_EQ(remove(c, "/api/lenses/" + id).status, 200);
 }

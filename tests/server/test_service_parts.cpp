@@ -1,21 +1,31 @@
-// The service's parts in-process: request checking, identifiers, the diagram cache's sharing and
-// eviction, and the job queue's limits, cancellation and persistence with a fake renderer.
+// The service's parts in-process: request checking, identifiers, the result cache's sharing and
+// eviction, the heavy-work pool's admission, event-stream slots, storage errors' statuses, the
+// remembered render checks, and the job queue's limits, cancellation and persistence with a fake
+// renderer.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <filesystem>
 #include <future>
+#include <list>
 #include <thread>
 
 #include "storage/Database.h"
-#include "storage/DiagramCache.h"
+#include "storage/ResultCache.h"
 #include "FakeRenderer.h"
 #include "core/HttpError.h"
 #include "core/Identifiers.h"
+#include "guards/EventStreamSlots.h"
+#include "jobs/JobJson.h"
 #include "jobs/JobQueue.h"
 #include "jobs/JobStore.h"
 #include "storage/LensStore.h"
+#include "storage/StorageError.h"
 #include "jobs/RenderRequest.h"
+#include "jobs/RenderSettingsChecks.h"
+#include "jobs/WorkPool.h"
 #include "ServerProcess.h"
 
 using namespace lenslab;
@@ -58,8 +68,8 @@ TEST(IdentifiersTest, AcceptOnlyPlainNames) {
     EXPECT_EQ(uploadDisplayName("../../"), "upload.dat");
 }
 
-TEST(DiagramCacheTest, SharesOneDrawingBetweenConcurrentRequests) {
-    DiagramCache cache(1 << 20);
+TEST(ResultCacheTest, SharesOneDrawingBetweenConcurrentRequests) {
+    ResultCache cache(1 << 20);
     std::atomic<int> draws{0};
     const auto slowDraw = [&] {
         ++draws;
@@ -67,34 +77,165 @@ TEST(DiagramCacheTest, SharesOneDrawingBetweenConcurrentRequests) {
         return Bytes(100, 7);
     };
     std::vector<std::future<std::shared_ptr<const Bytes>>> results;
-    for (int i = 0; i < 8; ++i) results.push_back(std::async(std::launch::async, [&] { return cache.getOrDraw("k", slowDraw); }));
+    for (int i = 0; i < 8; ++i) results.push_back(std::async(std::launch::async, [&] { return cache.getOrCompute("k", slowDraw); }));
     for (auto& r : results) EXPECT_EQ(r.get()->size(), 100u);
     EXPECT_EQ(draws, 1);
     EXPECT_EQ(cache.stats().hits + cache.stats().misses, 8u);
 }
 
-TEST(DiagramCacheTest, EvictsTheLeastRecentlyUsedAndDoesNotCacheErrors) {
-    DiagramCache cache(250);
+TEST(ResultCacheTest, EvictsTheLeastRecentlyUsedAndDoesNotCacheErrors) {
+    ResultCache cache(250);
     int draws = 0;
     const auto draw = [&] {
         ++draws;
         return Bytes(100, 1);
     };
-    cache.getOrDraw("a", draw);
-    cache.getOrDraw("b", draw);
-    cache.getOrDraw("a", draw);  // a is now the most recent
-    cache.getOrDraw("c", draw);  // evicts b
+    cache.getOrCompute("a", draw);
+    cache.getOrCompute("b", draw);
+    cache.getOrCompute("a", draw);  // a is now the most recent
+    cache.getOrCompute("c", draw);  // evicts b
     EXPECT_EQ(draws, 3);
-    cache.getOrDraw("a", draw);
+    cache.getOrCompute("a", draw);
     EXPECT_EQ(draws, 3);
-    cache.getOrDraw("b", draw);
+    cache.getOrCompute("b", draw);
     EXPECT_EQ(draws, 4);
     EXPECT_LE(cache.stats().bytes, 250u);
-    EXPECT_THROW(cache.getOrDraw("bad", []() -> Bytes { throw std::runtime_error("no"); }), std::runtime_error);
-    EXPECT_EQ(cache.getOrDraw("bad", draw)->size(), 100u);
+    EXPECT_THROW(cache.getOrCompute("bad", []() -> Bytes { throw std::runtime_error("no"); }), std::runtime_error);
+    EXPECT_EQ(cache.getOrCompute("bad", draw)->size(), 100u);
     cache.forget("b");
-    EXPECT_EQ(cache.getOrDraw("b", draw)->size(), 100u);
+    EXPECT_EQ(cache.getOrCompute("b", draw)->size(), 100u);
     EXPECT_EQ(draws, 6);
+}
+
+// The heavy-work pool: at most `admitted` requests wait on it, `perClient` of them from one client,
+// others hear 429 at once with Retry-After; places come back when requests end; results and
+// exceptions reach the waiting caller; work queued before the pool is destroyed still runs.
+TEST(WorkPoolTest, AdmitsBoundedSharesAndRunsTheWork) {
+    WorkPool pool({2, 5, 3});
+    std::list<WorkPool::Admission> held;
+    for (int i = 0; i < 3; ++i) held.push_back(pool.admit("10.0.0.1"));
+    try {
+        pool.admit("10.0.0.1");
+        ADD_FAILURE() << "a fourth place for one client";
+    } catch (const HttpError& e) {
+        EXPECT_EQ(e.status(), 429);
+        EXPECT_GT(e.retryAfterSeconds(), 0);
+        EXPECT_NE(std::string(e.what()).find("share"), std::string::npos) << e.what();
+    }
+    held.push_back(pool.admit("10.0.0.2"));
+    held.push_back(pool.admit("10.0.0.3"));
+    try {
+        pool.admit("10.0.0.4");
+        ADD_FAILURE() << "a sixth place in a pool of five";
+    } catch (const HttpError& e) {
+        EXPECT_EQ(e.status(), 429);
+        EXPECT_NE(std::string(e.what()).find("busy"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(pool.stats().admitted, 5);
+    EXPECT_EQ(pool.stats().refused, 2u);
+    held.pop_front();
+    EXPECT_NO_THROW(pool.admit("10.0.0.4"));  // its place, given back at once
+    EXPECT_NO_THROW(held.push_back(pool.admit("10.0.0.1")));
+    held.clear();
+    EXPECT_EQ(pool.stats().admitted, 0);
+
+    EXPECT_EQ(pool.run([] { return 6 * 7; }), 42);
+    EXPECT_THROW(pool.run([]() -> int { throw std::runtime_error("no"); }), std::runtime_error);
+}
+
+TEST(WorkPoolTest, RunsNoMoreThanItsThreadsAtOnce) {
+    std::atomic<int> now{0}, most{0};
+    {
+        WorkPool pool({2, 16, 16});
+        std::vector<std::future<void>> waiting;
+        for (int i = 0; i < 8; ++i)
+            waiting.push_back(std::async(std::launch::async, [&] {
+                pool.run([&] {
+                    most = std::max(most.load(), ++now);
+                    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+                    --now;
+                    return 0;
+                });
+            }));
+        for (auto& w : waiting) w.get();
+    }
+    EXPECT_EQ(most, 2);
+}
+
+// A cached result is served without a place in the pool: a full pool still answers it.
+TEST(WorkPoolTest, CachedResultsNeedNoPlace) {
+    WorkPool pool({1, 1, 1});
+    ResultCache cache(1 << 20);
+    EXPECT_EQ(pool.cachedOrComputed(cache, "k", "a", [] { return Bytes(3, 1); })->size(), 3u);
+    const WorkPool::Admission full = pool.admit("b");
+    EXPECT_EQ(pool.cachedOrComputed(cache, "k", "a", [] { return Bytes(5, 1); })->size(), 3u);
+    EXPECT_THROW(pool.cachedOrComputed(cache, "other", "a", [] { return Bytes(5, 1); }), HttpError);
+}
+
+// Records kept from before (or any error text) are served without server paths or long values.
+TEST(JobJsonTest, AnErrorIsServedAsAPublicMessage) {
+    JobRecord record;
+    record.id = "render-0000000000000001";
+    record.state = JobState::Failed;
+    record.error = "could not be restarted: lens table '/srv/lenslab/data/lenses/upload-1.dat' not found; " + std::string(500, 'x');
+    const json served = jobJson(JobView{record, false, {}}, 0, 0);
+    const std::string error = served["error"];
+    EXPECT_EQ(error.find("/srv"), std::string::npos) << error;
+    EXPECT_NE(error.find("'upload-1.dat'"), std::string::npos) << error;
+    EXPECT_LT(error.size(), 200u) << error;
+}
+
+// Event streams: a client's fourth stream is its last (docs/api.md: "at most 4 per client address"),
+// and the total is the total; a slot given back is free again.
+TEST(EventStreamSlotsTest, AClientGetsItsShareAndTheTotalHolds) {
+    auto slots = std::make_shared<EventStreamSlots>(6, 4);
+    std::vector<std::shared_ptr<void>> held;
+    for (int i = 0; i < 4; ++i) {
+        held.push_back(slots->take("10.0.0.1"));
+        EXPECT_TRUE(held.back()) << "stream " << i + 1;
+    }
+    EXPECT_FALSE(slots->take("10.0.0.1")) << "a fifth stream for one client";
+    held.push_back(slots->take("10.0.0.2"));
+    held.push_back(slots->take("10.0.0.3"));
+    EXPECT_TRUE(held[4] && held[5]);
+    EXPECT_FALSE(slots->take("10.0.0.4")) << "a seventh stream of six";
+    held.erase(held.begin());
+    EXPECT_TRUE(slots->take("10.0.0.1"));
+}
+
+// A full disk is 507 (ENOSPC above all: the usual errno), a read-only one or any other failure 503.
+TEST(StorageErrorTest, AFullDiskIs507AndOtherFailures503) {
+    for (int full : {ENOSPC, EDQUOT, EFBIG}) EXPECT_EQ(StorageError(storageErrorKind(full), "x").httpStatus(), 507) << full;
+    for (int other : {EROFS, EACCES, EPERM, EIO}) EXPECT_EQ(StorageError(storageErrorKind(other), "x").httpStatus(), 503) << other;
+}
+
+// A render's check is remembered per scene, lens and settings: a scene at f/2.1 is fine through
+// dgauss.50mm (f/2.02) and refused through telephoto.250mm (f/5.59), asked in either order.
+TEST(RenderSettingsChecksTest, TheRememberedOutcomeIsTheLenssOwn) {
+    const std::string source = LENSLAB_SOURCE_DIR;
+    const auto job = [&](const std::string& lens) {
+        RenderJobInput input;
+        input.request.scene = "depth-of-field";
+        input.scenePath = source + "/scenes/depth-of-field.pbrt";
+        input.lensPath = source + "/lenses/" + lens + ".dat";
+        input.lensLayout = TableLayout::GapAfter;
+        return input;
+    };
+    for (bool wideFirst : {true, false}) {
+        RenderSettingsChecks checks;
+        const auto expectRefused = [&] {
+            try {
+                checks.check(job("telephoto.250mm"));
+                ADD_FAILURE() << "f/2.1 accepted through a lens that opens to f/5.59";
+            } catch (const HttpError& e) {
+                EXPECT_EQ(e.status(), 422);
+            }
+        };
+        if (!wideFirst) expectRefused();
+        EXPECT_NO_THROW(checks.check(job("dgauss.50mm")));
+        expectRefused();
+        EXPECT_NO_THROW(checks.check(job("dgauss.50mm")));
+    }
 }
 
 namespace {
