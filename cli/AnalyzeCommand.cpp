@@ -8,6 +8,9 @@
 #include "AnalysisTables.h"
 #include "ArgParser.h"
 #include "Commands.h"
+#include "GhostFormats.h"
+#include "GhostPlot.h"
+#include "analysis/GhostAnalysis.h"
 #include "analysis/LensDesignAnalysis.h"
 #include "LensFlags.h"
 
@@ -41,26 +44,46 @@ void printSummary(const LensDesignAnalysis& a) {
     std::cout << a.lens.lens.name << ": " << analysisSettingsText(a) << "\n" << analysisTablesText(a);
 }
 
-void writeOutputFolder(const LensDesignAnalysis& a, const std::string& folder) {
+// Files by name and text, each ending in a newline.
+using NamedTexts = std::vector<std::pair<std::string, std::string>>;
+
+void writeFiles(const std::string& folder, const NamedTexts& files) {
     std::filesystem::create_directories(folder);
-    auto write = [&](const std::string& name, const std::string& text) {
+    for (const auto& [name, text] : files) {
         std::ofstream out(std::filesystem::path(folder) / name, std::ios::binary);
-        out << text;
+        out << text << "\n";
         if (!out) throw std::runtime_error("cannot write " + (std::filesystem::path(folder) / name).string());
-    };
-    write("analysis.json", designAnalysisJson(a).dump(1) + "\n");
-    for (const NamedSvg& plot : designAnalysisPlots(a)) write(plot.name + ".svg", plot.svg + "\n");
+    }
+}
+
+void writeOutputFolder(const LensDesignAnalysis& a, const std::string& folder) {
+    NamedTexts files{{"analysis.json", designAnalysisJson(a).dump(1)}};
+    for (const NamedSvg& plot : designAnalysisPlots(a)) files.push_back({plot.name + ".svg", plot.svg});
+    writeFiles(folder, files);
+}
+
+// --ghosts: the ghost-focus analysis at the lens settings, at the d line.
+int runGhostAnalysis(const ArgParser& p) {
+    LensSettings settings = lensFlags(p);
+    settings.wavelength = Setting{kWavelengthD, "the d line"};
+    const LensAnalysis lens = analyzeLens(loadLensSystem(p.arg(0)), settings);
+    const GhostAnalysis ghosts = analyzeGhosts(lens);
+    if (p.has("--json")) std::cout << ghostAnalysisJson(ghosts).dump(2) << "\n";
+    else std::cout << ghostAnalysisText(ghosts, lens);
+    if (p.has("-o")) writeFiles(p.get("-o"), {{"ghosts.json", ghostAnalysisJson(ghosts).dump(1)}, {"ghosts.svg", ghostPlotSvg(ghosts, "ghosts")}});
+    return 0;
 }
 
 }  // namespace
 
 int runAnalyzeCommand(const std::vector<std::string>& args) {
     ArgParser p("analyze",
-                "LENS [--fstop N] [--focus MM|inf] [--wavelengths F,d,C|NM,...] [--fields 0,0.7,1|DEGdeg,...] [--image-plane P] [--reference R] [--json] [-o DIR]",
+                "LENS [--fstop N] [--focus MM|inf] [--wavelengths F,d,C|NM,...] [--fields 0,0.7,1|DEGdeg,...] [--image-plane P] [--reference R] [--ghosts] [--json] [-o DIR]",
                 "The lens designer's analysis: spot diagrams, ray fans, geometric and diffraction MTF per field;\n"
                 "field curvature, distortion, relative illumination and chromatic focal shift. Each number's\n"
                 "definition is in docs/analysis.md and in the JSON. Fields are fractions of the largest field (the\n"
-                "lens's own: see 'lenslab lens'), or degrees with 'deg'. -o writes analysis.json and SVG plots into DIR.");
+                "lens's own: see 'lenslab lens'), or degrees with 'deg'. -o writes analysis.json and SVG plots into DIR.\n"
+                "--ghosts: the ghost analysis instead (docs/flare.md).");
     p.positional("LENS", "lens table (.dat) or Zemax file (.zmx)");
     declareLensFlags(p);
     p.option("--wavelengths", "LIST", "F, d, C or nm, comma-separated (default F,d,C; at most 16)");
@@ -70,10 +93,13 @@ int runAnalyzeCommand(const std::vector<std::string>& args) {
     p.option("--reference", "POINT", "spot radii about the centroid (default) or the chief ray");
     p.flag("--json", "print the analysis as one JSON object");
     p.option("-o", "DIR", "write analysis.json and the plots (SVG) into DIR");
+    p.flag("--ghosts", "the ghost-focus analysis instead: every two-reflection path's paraxial image, its blur on the film and\n"
+                       "its intensity beside the direct image, brightest first (-o: ghosts.json and ghosts.svg)");
     if (!p.parse(args)) {
         std::cout << p.help();
         return 0;
     }
+    if (p.has("--ghosts")) return runGhostAnalysis(p);
     const LensDesignAnalysis a = analyzeLensDesign(loadLensSystem(p.arg(0)), analysisFlags(p));
     if (p.has("--json")) std::cout << designAnalysisJson(a).dump(2) << "\n";
     else printSummary(a);

@@ -137,6 +137,8 @@ RenderSettings renderSettings(const ArgParser& p) {
         if (v != "on" && v != "off") throw UsageError("render: --spectral must be on or off, got '" + v + "'");
         s.camera.spectral = v == "on";
     }
+    if (p.has("--ghosts")) s.camera.ghosts = p.get("--ghosts");
+    if (p.has("--ghost-model")) s.camera.ghostModel = p.get("--ghost-model");
     return s;
 }
 
@@ -144,15 +146,19 @@ RenderSettings renderSettings(const ArgParser& p) {
 void printStatistics(const RenderStats& st, bool json, bool quiet, const std::vector<std::string>& outputs) {
     if (json) {
         std::printf("{\"finished\":true,\"setupSeconds\":%.6f,\"renderSeconds\":%.6f,\"cameraRays\":%llu,"
-                    "\"blockedCameraRays\":%llu,\"raysTraced\":%llu}\n",
+                    "\"blockedCameraRays\":%llu,\"raysTraced\":%llu,\"flarePaths\":%d,\"flareRays\":%llu,\"flareSeconds\":%.6f}\n",
                     st.setupSeconds, st.renderSeconds, (unsigned long long)st.cameraRays,
-                    (unsigned long long)st.blockedCameraRays, (unsigned long long)st.raysTraced);
+                    (unsigned long long)st.blockedCameraRays, (unsigned long long)st.raysTraced, st.flarePaths,
+                    (unsigned long long)st.flareRays, st.flareSeconds);
         std::fflush(stdout);
     }
     if (quiet) return;
     const double blocked = st.cameraRays ? double(st.blockedCameraRays) / st.cameraRays : 0.0;
     std::fprintf(stderr, "setup %.3f s, render %.3f s, %.2f Mrays/s, %.2f%% of camera rays blocked by the lens\n",
                  st.setupSeconds, st.renderSeconds, st.raysTraced / std::max(st.renderSeconds, 1e-9) * 1e-6, 100.0 * blocked);
+    if (st.flarePaths > 0)
+        std::fprintf(stderr, "lens flare: %d ghost paths of %d emitters, %.2f Mrays, %.3f s (in the setup)\n", st.flarePaths,
+                     st.flareSources, st.flareRays * 1e-6, st.flareSeconds);
     for (const auto& o : outputs) std::fprintf(stderr, "wrote %s\n", o.c_str());
 }
 
@@ -180,6 +186,10 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
     p.option("--layout", "L", "realistic camera: the --lens table's layout, gap-before | gap-after (default: detect)");
     p.option("--mode", "M", "realistic camera: exact | thick | auto (thick lens where its position error < 0.5 px and brightness within 3%, over 90%+ of the film; else exact)");
+    p.option("--ghosts", "G", "realistic camera: lens flare, off | auto (only with an emitter bright enough in or near the frame) |\n"
+             "all | N (the N brightest ghosts of the ghost analysis); default off");
+    p.option("--ghost-model", "M", "with --ghosts: exact (every ghost traced through the coated lens) | paraxial (its\n"
+             "ray-transfer matrices: the stop's shape, uniform); default exact");
     p.flag("--quiet", "no progress bar, no summary");
     p.flag("--progress-json", "print one JSON line per finished tile on stdout, and the statistics last");
     p.flag("--mpi", "spread the tiles over the processes of an MPI job: mpirun -np N lenslab render ... --mpi");

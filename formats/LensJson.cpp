@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "trace/ThinFilm.h"
+
 namespace lenslab {
 
 namespace {
@@ -50,7 +52,8 @@ nlohmann::json designFieldsJson(const LensSystem& lens) {
 nlohmann::json surfacesJson(const LensSystem& lens) {
     using nlohmann::json;
     json surfaces = json::array();
-    for (const Surface& s : lens.surfaces) {
+    for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
+        const Surface& s = lens.surfaces[i];
         const Medium& m = s.mediumAfter;
         json surface = {{"z", s.z},
                         {"radius", s.radius},
@@ -64,7 +67,10 @@ nlohmann::json surfacesJson(const LensSystem& lens) {
                         {"vd", isDispersive(m) ? json(abbeNumber(m)) : json(nullptr)},
                         {"conic", s.conic},
                         {"aspheric", s.aspheric},
-                        {"mirror", s.mirror}};
+                        {"mirror", s.mirror},
+                        {"coating", s.coating.text},
+                        {"coating_default", s.coating.isDefault},
+                        {"reflectance", surfaceResponse(lens, int(i), true, 1, lens.wavelength).reflectance}};
         if (s.obscurationRadius > 0) surface["obscuration_diameter"] = 2 * s.obscurationRadius;
         addSurfaceShape(surface, s);
         surfaces.push_back(surface);

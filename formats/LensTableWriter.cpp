@@ -15,13 +15,18 @@ namespace {
 bool isAir(const LensTableRow& row) { return row.glass.empty() && row.abbe == 0 && (row.index == 0 || row.index == 1); }
 
 // The comment naming the columns. Read back it is one more comment, so a table written again
-// leaves out the header lines it already holds: a lens saved over and over keeps one.
+// leaves out the header lines it already holds (this one, or one written before the coat= field
+// existed): a lens saved over and over keeps one.
 std::string columnHeader(TableLayout layout) {
-    return std::string("radius  gap (") + layoutName(layout) + ")  N  diameter  glass or Vd";
+    return std::string("radius  gap (") + layoutName(layout) + ")  N  diameter  glass or Vd  coat=coating";
 }
 
 bool isColumnHeader(const std::string& comment) {
-    return comment == columnHeader(TableLayout::GapBefore) || comment == columnHeader(TableLayout::GapAfter);
+    for (const TableLayout layout : {TableLayout::GapBefore, TableLayout::GapAfter}) {
+        const std::string header = columnHeader(layout);
+        if (comment == header || comment == header.substr(0, header.rfind("  coat="))) return true;
+    }
+    return false;
 }
 
 [[noreturn]] void refuse(const LensTable& table, int line, const std::string& what) {
@@ -53,6 +58,10 @@ void refuseWhatATableCannotHold(const LensTable& table, const LensTableRow& row)
     if (row.mirror) refuse(table, row.line, "a mirror");
     if (row.obscurationDiameter > 0) refuse(table, row.line, "a central obscuration");
     if (row.stop && (row.radius != 0 || !isAir(row))) refuse(table, row.line, "a stop on a curved or glass surface");
+    if (!row.coating.empty()) {
+        if (const auto problem = wordTextProblem(row.coating)) refuse(table, row.line, "a coating with " + *problem);
+        if (row.coating.find('#') != std::string::npos) refuse(table, row.line, "a coating with '#' (a comment)");
+    }
     if (row.glass.empty()) return;
     if (const auto problem = wordTextProblem(row.glass)) refuse(table, row.line, "a glass name with " + *problem);
     if (row.glass.find('#') != std::string::npos) refuse(table, row.line, "a glass name with '#' (a comment)");
@@ -94,6 +103,7 @@ std::string writeLensTableText(const LensTable& table) {
                " " + exactNumberText(row.diameter);
         if (!row.glass.empty()) out += " " + row.glass;
         else if (row.abbe > 0) out += " " + exactNumberText(row.abbe);
+        if (!row.coating.empty()) out += " coat=" + row.coating;
         out += "\n";
     }
     return out;

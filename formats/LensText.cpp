@@ -26,6 +26,7 @@ std::string surfaceTable(const LensSystem& lens) {
         if (s.conic != 0) notes += "  conic " + formatNumber(s.conic);
         if (s.isAspheric()) notes += "  asphere";
         if (s.obscurationRadius > 0) notes += "  obscuration " + formatNumber(2 * s.obscurationRadius) + " mm";
+        if (!s.coating.bare()) notes += "  coat " + s.coating.text + (s.coating.isDefault ? " (default)" : "");
         if (!s.form.isEvenAsphere()) notes += std::string("  ") + surfaceKindName(s.form.kind);
         if (s.clearShape) notes += std::string("  ") + apertureKindName(s.clearShape->kind) + " aperture";
         if (s.frame)

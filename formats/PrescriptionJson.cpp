@@ -24,7 +24,8 @@ json prescriptionJson(const LensTable& source) {
     for (const LensTableRow& r : table.rows)
         rows.push_back({{"radius", r.radius}, {"gap", r.gap}, {"index", r.index}, {"diameter", r.diameter},
                         {"stop", r.stop}, {"glass", r.glass}, {"abbe", r.abbe}, {"conic", r.conic},
-                        {"aspheric", r.aspheric}, {"mirror", r.mirror}, {"obscuration_diameter", r.obscurationDiameter}});
+                        {"aspheric", r.aspheric}, {"mirror", r.mirror}, {"obscuration_diameter", r.obscurationDiameter},
+                        {"coating", r.coating}});
     return {{"name", table.name},         {"comments", table.comments},
             {"catalogs", table.catalogs}, {"wavelengths_nm", table.wavelengths},
             {"primary_wavelength_nm", table.primaryWavelength}, {"rows", rows}};
@@ -82,6 +83,8 @@ LensTableRow rowFromJson(const json& row, const std::string& name, int line) {
     r.conic = in.number("conic", 0);
     r.mirror = in.flag("mirror");
     r.obscurationDiameter = in.number("obscuration_diameter", 0);
+    r.coating = in.text("coating");
+    if (r.coating.size() > 256) in.fail("coating must be at most 256 characters");
     if (row.contains("aspheric")) {
         const json& terms = row.at("aspheric");
         if (!terms.is_array() || terms.size() > kAsphericTerms)

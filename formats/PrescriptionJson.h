@@ -1,7 +1,8 @@
 #pragma once
 // A prescription's rows as JSON, for the live editor: {"name", "comments", "catalogs",
 // "wavelengths_nm", "primary_wavelength_nm", "rows": [{radius, gap, index, diameter, stop, glass,
-// abbe, conic, aspheric[8], mirror, obscuration_diameter}]}. Rows are always gap-after (gap: the
+// abbe, conic, aspheric[8], mirror, obscuration_diameter, coating}]} (coating: the text of
+// prescription/Coating.h, "" for the default). Rows are always gap-after (gap: the
 // thickness to the next surface, as designers and .zmx files write it); the last gap is the
 // design's image distance, which no analysis uses.
 #include <nlohmann/json.hpp>

@@ -47,6 +47,7 @@ std::string surfaceBlock(const LensTable& table, const LensTableRow& row, int nu
     out += "  DIAM " + exactNumberText(row.diameter / 2) + "\n";
     if (row.obscurationDiameter > 0) out += "  OBSC 0 " + exactNumberText(row.obscurationDiameter / 2) + "\n";
     if (row.stop) out += "  STOP\n";
+    if (!row.coating.empty()) out += "  COAT " + row.coating + "\n";
     return out;
 }
 

@@ -29,6 +29,10 @@ struct CameraOverrides {
     // film through the colour matching functions) or in RGB. Unset: spectral when the lens disperses
     // and no single wavelength is asked for.
     std::optional<bool> spectral;
+    // Lens flare (renderer/raytracer/cameras/GhostSelection.h): which ghosts ("off", "auto", "all",
+    // or N, the brightest N) and their model ("exact", "paraxial"); unset: the scene camera's
+    // "ghosts" and "ghostmodel" (off and exact when it has none).
+    std::optional<std::string> ghosts, ghostModel;
 };
 
 struct RenderSettings {
@@ -59,6 +63,10 @@ struct RenderStats {
     double setupSeconds = 0;   // scene load, camera setup (pupil bounds, focus)
     double renderSeconds = 0;
     std::uint64_t cameraRays = 0, blockedCameraRays = 0, raysTraced = 0;
+    // Lens flare, part of the setup: emitters and ghost paths rendered, rays traced for them, seconds.
+    int flareSources = 0, flarePaths = 0;
+    std::uint64_t flareRays = 0;
+    double flareSeconds = 0;
 };
 
 struct RenderOutput {

@@ -5,6 +5,9 @@
 #include "AnalysisJson.h"
 #include "AnalysisPlots.h"
 #include "AnalysisTables.h"
+#include "GhostFormats.h"
+#include "GhostPlot.h"
+#include "analysis/GhostAnalysis.h"
 #include "firstorder/Focus.h"
 #include "analysis/LensDesignAnalysis.h"
 #include "LensDiagram.h"
@@ -61,6 +64,13 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
             writeSiteFile(runner.site(), m.files.back(), plot.svg + "\n");
             m.data["captions"].push_back(plot.caption);
         }
+        const GhostAnalysis ghosts = analyzeGhosts(a.lens);
+        m.data["ghosts"] = ghostAnalysisJson(ghosts);
+        m.files.push_back(folder + "ghosts.svg");
+        writeSiteFile(runner.site(), m.files.back(), ghostPlotSvg(ghosts, "ghosts-" + id) + "\n");
+        m.data["captions"].push_back(
+            "Ghosts: every two-reflection path's blur on the film against its peak intensity beside the direct image of "
+            "the sun (paraxial, on axis, d line), the ones focused near the film a series of their own.");
         return m;
     });
     if (!item) {
@@ -73,6 +83,7 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
     design.captions = item->data.value("captions", std::vector<std::string>{});
     design.settingsHtml = item->data.value("settings_html", std::string());
     design.tablesHtml = item->data.value("tables_html", std::string());
+    design.ghosts = item->data.value("ghosts", json::object());
     return design;
 }
 

@@ -16,6 +16,7 @@ RenderPlan renderPlan(const ReportOptions& o) {
     RenderPlan p;
     p.spp = o.quick ? 4 : o.spp;
     p.width = o.quick ? 96 : o.width;
+    p.ghostModel = o.quick ? "paraxial" : "exact";
     for (int s = 1; s * 4 <= p.spp; s *= 2) p.speedSpps.push_back(s);
     return p;
 }
@@ -59,6 +60,7 @@ struct RenderJob {
     std::string mode;
     int spp, width, height;
     double fstop;
+    std::string ghostModel;                       // for the scenes whose camera asks for ghosts
     std::optional<bool> spectral = std::nullopt;  // unset: as the lens decides
 
     // The radiometric camera weight averages the exit pupil's solid angle, about pi / (4 N^2) of the
@@ -72,6 +74,7 @@ struct RenderJob {
         s.camera.fstop = Setting{fstop, "report --render-fstop"};
         s.camera.mode = mode;
         s.camera.spectral = spectral;
+        s.camera.ghostModel = ghostModel;
         s.spp = spp;
         s.width = width;
         s.height = height;
@@ -84,6 +87,7 @@ struct RenderJob {
         for (const std::string& f : scene.files) h.addFile(f);
         h.addFile(lens.facts.path).add(mode).add(double(spp)).add(double(width)).add(double(height)).add(fstop).add(exposure());
         if (spectral) h.add(*spectral ? "spectral" : "rgb");
+        if (ghostModel != "exact") h.add(ghostModel);  // the exact model's renders keep their earlier hash
         return h.hex();
     }
 };
@@ -136,8 +140,8 @@ RenderPair buildRenderPair(ItemRunner& runner, const SceneSource& scene, const L
     pair.lensId = lens.facts.id;
     const int height = heightFor(scene, plan.width);
     const double fstop = renderFstopFor(lens, o.renderFstop);
-    const RenderJob accurate{scene, lens, "exact", plan.spp, plan.width, height, fstop};
-    const RenderJob approximate{scene, lens, "thick", plan.spp, plan.width, height, fstop};
+    const RenderJob accurate{scene, lens, "exact", plan.spp, plan.width, height, fstop, plan.ghostModel};
+    const RenderJob approximate{scene, lens, "thick", plan.spp, plan.width, height, fstop, plan.ghostModel};
     const std::optional<RenderRecord> accurateRecord = renderItem(runner, accurate, o.threads);
     const std::optional<RenderRecord> approximateRecord = renderItem(runner, approximate, o.threads);
     const std::string label = "difference " + lens.facts.id + " in " + scene.id;
@@ -177,9 +181,9 @@ ColourFringes buildColourFringes(ItemRunner& runner, const SceneSource& chart, c
     const int height = heightFor(chart, plan.width);
     const double fstop = renderFstopFor(lens, o.renderFstop);
     const std::optional<RenderRecord> spectral =
-        renderItem(runner, RenderJob{chart, lens, "exact", plan.spp, plan.width, height, fstop, true}, o.threads);
+        renderItem(runner, RenderJob{chart, lens, "exact", plan.spp, plan.width, height, fstop, plan.ghostModel, true}, o.threads);
     const std::optional<RenderRecord> rgb =
-        renderItem(runner, RenderJob{chart, lens, "exact", plan.spp, plan.width, height, fstop, false}, o.threads);
+        renderItem(runner, RenderJob{chart, lens, "exact", plan.spp, plan.width, height, fstop, plan.ghostModel, false}, o.threads);
     if (spectral && rgb) {
         c.spectral = *spectral;
         c.rgb = *rgb;
@@ -198,7 +202,7 @@ SpeedStudy buildSpeedStudy(ItemRunner& runner, const ReportScene& scene, const L
         if (p.lensId == lens.facts.id && p.problem.empty()) reference = &p;
     const int height = heightFor(scene.scene, plan.width);
     const double fstop = renderFstopFor(lens, o.renderFstop);
-    const RenderJob referenceJob{scene.scene, lens, "exact", plan.spp, plan.width, height, fstop};
+    const RenderJob referenceJob{scene.scene, lens, "exact", plan.spp, plan.width, height, fstop, plan.ghostModel};
     for (const char* mode : {"exact", "thick"})
         for (int spp : plan.speedSpps) {
             const std::string label = "speed study " + std::string(mode) + " at " + std::to_string(spp) + " spp";
@@ -206,7 +210,7 @@ SpeedStudy buildSpeedStudy(ItemRunner& runner, const ReportScene& scene, const L
                 runner.skip(label);
                 continue;
             }
-            const RenderJob job{scene.scene, lens, mode, spp, plan.width, height, fstop};
+            const RenderJob job{scene.scene, lens, mode, spp, plan.width, height, fstop, plan.ghostModel};
             InputsHash h = itemInputs("speed");
             h.add(job.hash()).add(referenceJob.hash());
             const std::string id = "speed/" + scene.scene.id + "/" + lens.facts.id + "/" + mode + "/" + std::to_string(spp);

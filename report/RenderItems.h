@@ -2,6 +2,7 @@
 // The report's renders: each lens through each scene with a realistic camera, accurate and
 // approximate, their difference image, and the speed-against-accuracy study. Every render is an
 // item of the cache, keyed by the scene's files, the lens table and the settings.
+#include <string>
 #include <vector>
 
 #include "BuildReport.h"
@@ -13,6 +14,9 @@ namespace lenslab {
 // The settings every render of the report shares.
 struct RenderPlan {
     int spp = 0, width = 0;
+    // Lens flare in the scenes that ask for it: exact, or paraxial in a quick build (the exact model's
+    // setup, seconds per lens, would outweigh its tiny renders).
+    std::string ghostModel = "exact";
     std::vector<int> speedSpps;  // the sample counts of the speed study: 1, 2, 4, ... up to spp / 4
 };
 

@@ -42,6 +42,7 @@ struct DesignPlots {
     double fstop = 0;
     std::string settingsHtml, tablesHtml;  // the settings and the numbers, each marked with its place in the JSON
     std::string problem;                   // why they are missing
+    nlohmann::json ghosts;                 // the ghost analysis (ghostAnalysisJson), its plot the last of `plots`
 };
 
 struct LensEntry {

@@ -198,6 +198,30 @@ bool drawsCurvesAgainstField(const DesignPlots& d) {
     });
 }
 
+// The brightest ghosts of the ghost analysis as a table.
+void ghostTable(std::ostringstream& out, const nlohmann::json& g) {
+    constexpr std::size_t kShown = 8;
+    const nlohmann::json& ghosts = g.at("ghosts");
+    out << "<table class=\"ghosts\">\n<caption>The " << std::min(kShown, ghosts.size()) << " brightest of " << ghosts.size()
+        << " ghosts (" << g.at("reflecting_surfaces").get<int>()
+        << " reflecting surfaces), through the coatings at the d line</caption>\n<thead><tr><th scope=\"col\">Surfaces</th>"
+           "<th scope=\"col\">R\u2081, R\u2082 (%)</th><th scope=\"col\">Focus from the film (mm)</th>"
+           "<th scope=\"col\">Blur \u2300 (mm)</th><th scope=\"col\">Share of the light</th><th scope=\"col\">Intensity</th>"
+           "</tr></thead>\n<tbody>\n";
+    for (std::size_t i = 0; i < std::min(kShown, ghosts.size()); ++i) {
+        const nlohmann::json& x = ghosts[i];
+        const nlohmann::json& focus = x.at("focus_from_film_mm");
+        out << "<tr" << (x.at("focused").get<bool>() ? " class=\"focused\"" : "") << "><th scope=\"row\">"
+            << x.at("surfaces")[0].get<int>() << "\u2013" << x.at("surfaces")[1].get<int>() << "</th><td>"
+            << formatFixed(100 * x.at("reflectance")[0].get<double>(), 3) << ", "
+            << formatFixed(100 * x.at("reflectance")[1].get<double>(), 3) << "</td><td>"
+            << (focus.is_null() ? std::string("\u221e") : formatFixed(focus.get<double>(), 3)) << "</td><td>"
+            << formatFixed(x.at("blur_diameter_mm").get<double>(), 3) << "</td><td>" << formatNumber(x.at("energy").get<double>(), 3)
+            << "</td><td>" << formatNumber(x.at("relative_intensity").get<double>(), 3) << "</td></tr>\n";
+    }
+    out << "</tbody>\n</table>\n";
+}
+
 // lenslab analyze's plots for the lens, each an SVG file opened full size by a click.
 void designSection(std::ostringstream& out, const LensFacts& f, const DesignPlots& d) {
     if (d.plots.empty() && d.problem.empty()) return;  // not asked for
@@ -214,9 +238,11 @@ void designSection(std::ostringstream& out, const LensFacts& f, const DesignPlot
                           "\" loading=\"lazy\"></a>",
                       escapeMarkup(caption));
     }
-    out << "</div>\n<p class=\"download\"><a href=\"" << escapeMarkup(d.jsonFile)
+    out << "</div>\n";
+    if (d.ghosts.contains("ghosts")) ghostTable(out, d.ghosts);
+    out << "<p class=\"download\"><a href=\"" << escapeMarkup(d.jsonFile)
         << "\">The analysis as JSON</a> (the output of <code>lenslab analyze " << escapeMarkup(f.id)
-        << " --json</code> with the settings above).</p>\n</section>\n";
+        << " --json</code> with the settings above; the ghosts: <code>--ghosts --json</code>).</p>\n</section>\n";
 }
 
 void lensArticle(std::ostringstream& out, const LensEntry& lens) {

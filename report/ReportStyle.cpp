@@ -43,7 +43,7 @@ table { border-collapse: collapse; font-size: 0.9rem; }
 caption { text-align: left; color: var(--muted); font-size: 0.85rem; padding-bottom: 6px; caption-side: top; }
 th, td { padding: 3px 8px; border-bottom: 1px solid var(--rule); text-align: left; vertical-align: top; }
 thead th { border-bottom: 2px solid var(--ink); }
-td[data-key], .render-stats td { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+td[data-key], .render-stats td, .ghosts td { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 .lens-data td:last-child { color: var(--muted); }
 figure { margin: 0; }
 figcaption { color: var(--muted); font-size: 0.85rem; margin-top: 4px; }
@@ -61,7 +61,8 @@ svg.plot { max-width: 100%; height: auto; display: block; }
 .triptych { display: grid; grid-template-columns: repeat(3, minmax(0, 1fr)); gap: 12px; }
 .triptych img { width: 100%; image-rendering: auto; }
 .comparison { margin-bottom: 12px; }
-.render-stats { margin-top: 8px; }
+.render-stats, .ghosts { margin-top: 8px; }
+.ghosts tr.focused th, .ghosts tr.focused td { font-weight: 600; }
 .params { color: var(--muted); font-size: 0.85rem; }
 .download { font-size: 0.9rem; }
 footer { color: var(--muted); font-size: 0.85rem; border-top: 1px solid var(--rule); margin-top: 40px; padding-bottom: 24px; }

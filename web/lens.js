@@ -3,6 +3,7 @@
 // mode, ←/→ the focus). Out-of-range f-numbers are refused with the lens's range, never clamped.
 import { $, api, authorizedFetch, clearMessage, fixed, showMessage } from "./api.js";
 import { analysisChoices, setUpAnalysis, showStoredAnalysis } from "./analysis.js";
+import { showGhosts } from "./ghosts.js";
 
 const state = {
   lenses: [],
@@ -240,6 +241,8 @@ async function updateLensView() {
     if (request !== state.dataRequest) return;
     showLensData(lens);
     showFullStops(lens.full_stops || []);
+    const ghosts = await api(`/api/lenses/${id}/ghosts?${lensQuery()}`);
+    if (request === state.dataRequest) showGhosts(ghosts);
   } catch (e) {
     if (request !== state.dataRequest) return;
     showMessage(`Lens ${state.lensId} cannot be set that way: ${e.message}`);
@@ -323,8 +326,10 @@ export function showLensData(lens) {
     const name = i + (s.is_stop ? " (stop)" : "") + (s.mirror ? " mirror" : "");
     const glass = s.mirror ? "" : s.glass === "air" ? "" : s.glass + (s.catalog ? ` (${s.catalog})` : "");
     const terms = (s.aspheric || []).map((a, k) => (a ? `r${2 * k + 2}: ${a.toExponential(4)}` : "")).filter(Boolean).join(", ");
+    const coating = s.coating === "none" ? "" : s.coating + (s.coating_default ? " (default)" : "");
     for (const v of [name, fixed(s.z), s.radius === 0 ? "flat" : fixed(s.radius), fixed(s.n, 5), fixed(s.diameter, 2), glass,
-                     s.mirror || s.n === 1 ? "" : fixed(s.nd, 5), s.vd ? fixed(s.vd, 2) : "", s.conic ? fixed(s.conic, 4) : "", terms])
+                     s.mirror || s.n === 1 ? "" : fixed(s.nd, 5), s.vd ? fixed(s.vd, 2) : "", s.conic ? fixed(s.conic, 4) : "", terms,
+                     coating, s.mirror || s.reflectance === 0 ? "" : fixed(100 * s.reflectance, 3)])
       tr.insertCell().textContent = v;
   });
 }

@@ -126,6 +126,13 @@ export const COLUMNS = [
     },
     apply: (r, v) => ({ ...r, aspheric: v }),
   },
+  {
+    key: "coating", heading: "coating",
+    title: "none, a material's quarter wave (MgF2, MgF2@550) or a stack (MgF2+ZrO2:2q); empty: the default, MgF2 between air and glass",
+    show: (r) => r.coating || "default", exact: (r) => r.coating || "",
+    read: (t) => (/\s/.test(t.trim()) ? { error: "a coating is written without spaces (MgF2+ZrO2:2q)" } : { value: t.trim() }),
+    apply: (r, v) => ({ ...r, coating: v }),
+  },
 ];
 
 function trimTerms(terms) {
@@ -136,7 +143,7 @@ function trimTerms(terms) {
 
 // A new surface after `row`: flat, in air, 1 mm on, as wide as its neighbour.
 export const newRow = (row) => ({ radius: 0, gap: 1, index: 0, diameter: row ? row.diameter : 10, stop: false, glass: "", abbe: 0,
-  conic: 0, aspheric: new Array(ASPHERIC_TERMS).fill(0), mirror: false, obscuration_diameter: 0 });
+  conic: 0, aspheric: new Array(ASPHERIC_TERMS).fill(0), mirror: false, obscuration_diameter: 0, coating: "" });
 
 // Whether only a .zmx can hold the rows (a lens table has no conic, aspheric, mirror or obscuration).
 export const needsZemax = (rows) => rows.some((r) => r.conic !== 0 || r.mirror || r.obscuration_diameter > 0 || (r.aspheric || []).some((a) => a !== 0));

@@ -28,6 +28,10 @@ function renderRequest(mode) {
   if (currentFocus() !== "inf") request.focaldistance = currentFocus();
   if ($("film-diagonal").value) request.filmdiagonal = Number($("film-diagonal").value);
   if ($("render-spectral").value) request.spectral = $("render-spectral").value === "on";
+  if ($("render-ghosts").value !== "off") {
+    request.ghosts = $("render-ghosts").value;
+    request.ghost_model = $("render-ghost-model").value;
+  }
   return request;
 }
 
@@ -35,7 +39,8 @@ function describeRequest(r) {
   const fstop = r.fstop ? `f/${Number(r.fstop).toFixed(1)}` : "scene f-number";
   const focus = r.focaldistance ? `focus ${Math.round(r.focaldistance)} mm` : "scene focus";
   const film = r.spectral === true ? " · spectral" : r.spectral === false ? " · RGB" : "";
-  return `${r.lens} · ${r.scene} · ${fstop} · ${focus} · ${r.width}×${r.height} · ${r.spp} spp${film}`;
+  const ghosts = r.ghosts && r.ghosts !== "off" ? ` · ghosts ${r.ghosts} (${r.ghost_model})` : "";
+  return `${r.lens} · ${r.scene} · ${fstop} · ${focus} · ${r.width}×${r.height} · ${r.spp} spp${film}${ghosts}`;
 }
 
 // ---- the viewer's renders ------------------------------------------------------------------------

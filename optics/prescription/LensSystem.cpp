@@ -97,6 +97,24 @@ void copyFileFacts(const LensTable& table, LensSystem& lens) {
     lens.warnings = table.warnings;
 }
 
+// The row's coating, or the default for a real lens: MgF2 on surfaces between air and glass.
+Coating coatingOf(const LensTable& table, const LensTableRow& r, const LensSystem& lens, int i) {
+    const Surface& s = lens.surfaces[i];
+    if (!r.coating.empty()) {
+        if (s.mirror) throw LensTableError(table.name, r.line, "coating '" + r.coating + "' on a mirror: only refracting surfaces take an anti-reflection coating");
+        try {
+            return parseCoating(r.coating);
+        } catch (const CoatingError& e) {
+            throw LensTableError(table.name, r.line, e.what());
+        }
+    }
+    const bool airBefore = lens.indexBefore(i) == 1.0, airAfter = s.indexAfter == 1.0;
+    if (s.mirror || airBefore == airAfter) return Coating{};
+    Coating c = parseCoating(kDefaultCoatingText);
+    c.isDefault = true;
+    return c;
+}
+
 }  // namespace
 
 bool Surface::isAspheric() const {
@@ -193,6 +211,7 @@ LensSystem buildLensSystem(const LensTable& table) {
     int stops = 0;
     double z = 0;
     RigidMotion pending;  // coordinate breaks not yet met by a surface
+    std::vector<const LensTableRow*> surfaceRows;  // each surface's row (coordinate breaks have none)
     Medium medium = air();
     for (int i = 0; i < n; ++i) {
         const LensTableRow& r = rows[i];
@@ -228,6 +247,7 @@ LensSystem buildLensSystem(const LensTable& table) {
                                                          ") covers the whole clear diameter (" + mm(r.diameter) + ")");
         if (!s.automaticAperture && !s.clearShape) checkSagDefined(table, r, s);
         lens.surfaces.push_back(s);
+        surfaceRows.push_back(&r);
     }
     if (lens.surfaces.empty())
         throw LensTableError(table.name, rows.empty() ? 0 : rows.front().line, "no surfaces: only coordinate breaks");
@@ -238,6 +258,8 @@ LensSystem buildLensSystem(const LensTable& table) {
     lens.surfaces.back().after = lens.surfaces.back().after.then(pending);
     double imageZ = z - (table.layout == TableLayout::GapAfter ? rows.back().gap : 0);
     lens = atWavelength(lens, lens.wavelength);
+    for (std::size_t i = 0; i < lens.surfaces.size(); ++i)
+        lens.surfaces[i].coating = coatingOf(table, *surfaceRows[i], lens, static_cast<int>(i));
     if (lens.surfaces.back().indexAfter != 1.0)
         throw LensTableError(table.name, rows.back().line,
                              "the last surface must leave the ray in air (N 0 or 1) before the film");

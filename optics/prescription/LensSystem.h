@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "prescription/Coating.h"
 #include "prescription/LensTable.h"
 #include "prescription/Medium.h"
 
@@ -29,6 +30,7 @@ struct Surface {
     double obscurationRadius = 0;  // central obscuration, mm (0: none)
     bool isStop = false;
     bool mirror = false;        // reflects: the ray turns back, in the medium it came through
+    Coating coating;            // as the prescription gives it, else the default (buildLensSystem)
     int line = 0;               // source line in the lens table
     SurfaceForm form;           // odd and Q-type aspheres (EvenAsphere: the terms above)
     std::optional<SurfaceAperture> clearShape;        // replaces the circle of apertureRadius
@@ -99,11 +101,15 @@ double sagDomainRadius(const Surface& s);
 LensSystem atWavelength(const LensSystem& lens, double wavelength);
 
 // Builds and validates the geometry at the table's primary wavelength. Looks up catalog glasses
-// (LensTableRow::glass) and makes model glasses (index and abbe). Throws LensTableError naming the
-// table's line for: no stop or more than one, a diameter larger than the surface's sag allows, an
-// unknown glass (naming the catalogs searched), a catalog glass whose nd contradicts the table's N.
-// Warns (LensSystem::warnings) where surfaces overlap at their stated diameters and where a
-// moulded glass is taken as its base glass.
+// (LensTableRow::glass) and makes model glasses (index and abbe). A surface whose row names no
+// coating gets the default: every lens table describes a real lens (the bundled ones are all
+// published, manufactured designs), so each refracting surface between air and glass carries a
+// quarter wave of MgF2 at 550 nm (kDefaultCoatingText); cemented, air-air (the stop) and mirror
+// surfaces stay bare. A row's coating overrides it (coat=none for bare glass). Throws LensTableError naming the
+// table's line for: a coating that does not parse or sits on a mirror, no stop or more than one, a
+// diameter larger than the surface's sag allows, an unknown glass (naming the catalogs searched), a
+// catalog glass whose nd contradicts the table's N. Warns (LensSystem::warnings) where surfaces
+// overlap at their stated diameters and where a moulded glass is taken as its base glass.
 LensSystem buildLensSystem(const LensTable& table);
 
 // readLensTable + buildLensSystem.

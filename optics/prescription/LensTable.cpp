@@ -85,13 +85,27 @@ void parseGlass(LensTableRow& row, const std::string& field, const std::string& 
     if (row.abbe <= 0) throw LensTableError(file, line, "Abbe number Vd must be positive, found " + field);
 }
 
+// A last field coat=TEXT names the surface's coating (prescription/Coating.h; checked when the
+// lens is built, where the default for rows without one is decided too).
+std::string takeCoating(std::vector<std::string>& fields, const std::string& file, int line) {
+    const auto isCoating = [](const std::string& f) { return f.size() >= 5 && (f.compare(0, 5, "coat=") == 0 || f.compare(0, 5, "COAT=") == 0); };
+    if (fields.empty() || !isCoating(fields.back())) return "";
+    std::string coating = fields.back().substr(5);
+    fields.pop_back();
+    for (const std::string& f : fields)
+        if (isCoating(f)) throw LensTableError(file, line, "a second coat= field: a surface has one coating");
+    if (coating.empty()) throw LensTableError(file, line, "coat= needs a coating: none, a material (MgF2, MgF2@550) or a stack");
+    return coating;
+}
+
 LensTableRow parseRow(const std::string& content, const std::string& file, int line) {
     auto fields = splitFields(content);
+    LensTableRow row;
+    row.coating = takeCoating(fields, file, line);
     if (fields.size() != 4 && fields.size() != 5)
         throw LensTableError(file, line,
                              "expected 4 or 5 columns (radius, gap, N, diameter, optional glass or Vd), found " +
-                                 std::to_string(fields.size()));
-    LensTableRow row;
+                                 std::to_string(fields.size()) + " (a coat= field may follow them)");
     row.line = line;
     row.radius = parseNumber(fields[0], 0, file, line);
     row.gap = parseNumber(fields[1], 1, file, line);

@@ -67,6 +67,9 @@ struct LensTableRow {
     // The file gives no clear aperture: one is derived from its aperture and fields at build time.
     bool automaticDiameter = false;
     std::string name;                  // the file's label for the surface (Code V SLB, Zemax COMM)
+    // The coating as written (prescription/Coating.h); empty: the file says nothing, and
+    // buildLensSystem applies the default (a real lens's air-glass surfaces are coated).
+    std::string coating;
     bool isStop() const { return stop; }
 };
 

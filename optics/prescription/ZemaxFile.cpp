@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "prescription/Coating.h"
 #include "prescription/TextEncoding.h"
 #include "prescription/Wavelength.h"
 
@@ -57,6 +58,7 @@ struct RawSurface {
     double apertureCentreX = 0, apertureCentreY = 0;            // OBDC
     std::optional<FrameChange> tilt;  // SCBD: this surface's own decentre and tilt
     std::string comment;              // COMM
+    std::string coating;           // COAT, as written
 };
 
 struct Wavelength { double micrometres; double weight; int line; };
@@ -244,6 +246,19 @@ void readGlas(Reader& r, const Line& l) {
     if (s.nd != 0 && s.nd < 1) r.fail(l.number, "GLAS " + name + ": nd " + l.fields[3] + " is below 1");
 }
 
+// COAT name: lenslab's coating text (prescription/Coating.h), which covers the names of single
+// materials Zemax uses (MGF2); coatings defined only in a COATING.DAT file are refused by name.
+void readCoat(Reader& r, const Line& l) {
+    RawSurface& s = r.surface(l);
+    s.coating = trimmed(l.rest);
+    if (s.coating.empty()) return;  // a blank coating column
+    try {
+        parseCoating(s.coating);
+    } catch (const CoatingError& e) {
+        r.fail(l.number, std::string(e.what()) + "; lenslab does not read Zemax's COATING.DAT");
+    }
+}
+
 void readDiam(Reader& r, const Line& l) { r.surface(l).semiDiameter = r.number(l, 0); }
 void readMema(Reader& r, const Line& l) { r.surface(l).mechanicalSemiDiameter = r.number(l, 0); }
 
@@ -344,6 +359,7 @@ const std::unordered_map<std::string, Handler>& handlers() {
         {"ELAP", readShapedAperture}, {"SQOB", readShapedAperture}, {"ELOB", readShapedAperture},
         {"XDAT", readXdat}, {"COMM", readComm}, {"OBNA", readObna}, {"FTYP", readFtyp},
         {"XFLN", readFieldValues}, {"YFLN", readFieldValues}, {"FWGN", readFieldValues},
+        {"COAT", readCoat},
     };
     return table;
 }
@@ -495,6 +511,7 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const Len
     row.aspheric = asphericTerms(r, s);
     row.form = surfaceForm(r, s);
     row.frame = surfaceTilt(r, s);
+    row.coating = s.coating;
     // The clear aperture is DIAM (Zemax's semi-diameter); a circular aperture overrides it, and the
     // mechanical semi-diameter stands in where DIAM is 0. A rectangle or ellipse (SQAP, ELAP), or
     // any aperture decentred by OBDC, travels as a shape.

@@ -22,11 +22,11 @@ bool endsWith(const std::string& text, const std::string& end) {
     return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
-// Writes, and the reads computed in the heavy-work pool: a lens's analysis and its diagram.
+// Writes, and the reads computed in the heavy-work pool: a lens's analyses and its diagram.
 bool spendsCpu(const httplib::Request& req) {
     if (!isRead(req)) return true;
     return req.method != "OPTIONS" && req.path.rfind("/api/lenses/", 0) == 0 &&
-           (endsWith(req.path, "/analysis") || endsWith(req.path, "/diagram.png"));
+           (endsWith(req.path, "/analysis") || endsWith(req.path, "/ghosts") || endsWith(req.path, "/diagram.png"));
 }
 
 // Compares in time independent of where the strings differ, so the token cannot be guessed byte

@@ -16,7 +16,10 @@ RenderedImages EngineRenderer::render(const RenderJobInput& job, const TileCallb
                     {"render_s", output.stats.renderSeconds},
                     {"camera_rays", output.stats.cameraRays},
                     {"blocked_camera_rays", output.stats.blockedCameraRays},
-                    {"rays_traced", output.stats.raysTraced}};
+                    {"rays_traced", output.stats.raysTraced},
+                    {"flare_paths", output.stats.flarePaths},
+                    {"flare_rays", output.stats.flareRays},
+                    {"flare_s", output.stats.flareSeconds}};
     return images;
 }
 

@@ -71,6 +71,8 @@ RenderedImages MpiRenderer::render(const RenderJobInput& job, const TileCallback
     if (r.focusDistance) argv.insert(argv.end(), {"--focus", exactNumber(*r.focusDistance)});
     if (r.filmDiagonal) argv.insert(argv.end(), {"--filmdiag", exactNumber(*r.filmDiagonal)});
     if (r.spectral) argv.insert(argv.end(), {"--spectral", *r.spectral ? "on" : "off"});
+    if (r.ghosts) argv.insert(argv.end(), {"--ghosts", *r.ghosts});
+    if (r.ghostModel) argv.insert(argv.end(), {"--ghost-model", *r.ghostModel});
 
     struct Cleanup {
         std::vector<std::string> paths;
@@ -116,6 +118,9 @@ RenderedImages MpiRenderer::render(const RenderJobInput& job, const TileCallback
                     {"camera_rays", finished.value("cameraRays", 0ULL)},
                     {"blocked_camera_rays", finished.value("blockedCameraRays", 0ULL)},
                     {"rays_traced", finished.value("raysTraced", 0ULL)},
+                    {"flare_paths", finished.value("flarePaths", 0)},
+                    {"flare_rays", finished.value("flareRays", 0ULL)},
+                    {"flare_s", finished.value("flareSeconds", 0.0)},
                     {"mpi_processes", launch_.processes}};
     return images;
 }

@@ -28,6 +28,8 @@ RenderSettings renderSettings(const RenderJobInput& job) {
     settings.camera.filmDiagonal = job.request.filmDiagonal;
     settings.camera.mode = job.request.mode;
     settings.camera.spectral = job.request.spectral;
+    settings.camera.ghosts = job.request.ghosts;
+    settings.camera.ghostModel = job.request.ghostModel;
     settings.spp = job.request.spp;
     settings.width = job.request.width;
     settings.height = job.request.height;

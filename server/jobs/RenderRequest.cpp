@@ -5,6 +5,7 @@
 
 #include "core/HttpError.h"
 #include "core/Identifiers.h"
+#include "cameras/GhostSelection.h"
 #include "cameras/LensModeMap.h"
 
 namespace lenslab {
@@ -54,7 +55,7 @@ std::string identifierField(const json& body, const char* field, const std::stri
 RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, const std::string& defaultScene) {
     if (!body.is_object()) throw HttpError(400, "the render request must be a JSON object");
     static const char* kFields[] = {"scene", "lens", "fstop", "focaldistance", "filmdiagonal",
-                                    "mode", "spectral", "spp", "width", "height"};
+                                    "mode", "spectral", "spp", "width", "height", "ghosts", "ghost_model"};
     for (const auto& item : body.items()) {
         bool known = false;
         for (const char* f : kFields) known = known || item.key() == f;
@@ -75,6 +76,15 @@ RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, c
     if (body.contains("spectral") && !body["spectral"].is_null()) {
         if (!body["spectral"].is_boolean()) throw HttpError(400, "spectral must be true, false or null");
         r.spectral = body["spectral"].get<bool>();
+    }
+    // ghosts: a name, or the number of the brightest ghosts as a number or its text.
+    if (body.contains("ghosts") && !body["ghosts"].is_null()) {
+        r.ghosts = body["ghosts"].is_number_integer() ? std::to_string(body["ghosts"].get<long long>()) : fieldText(body, "ghosts", "");
+        if (!parseGhostSelection(*r.ghosts)) throw HttpError(400, badGhostsMessage(*r.ghosts));
+    }
+    if (body.contains("ghost_model") && !body["ghost_model"].is_null()) {
+        r.ghostModel = fieldText(body, "ghost_model", "");
+        if (!parseGhostModel(*r.ghostModel)) throw HttpError(400, badGhostModelMessage(*r.ghostModel));
     }
     r.spp = fieldInteger(body, "spp", r.spp, 1, limits.maxSpp, "the service's spp limit");
     r.width = fieldInteger(body, "width", r.width, 8, limits.maxWidth, "the service's width limit");
@@ -98,6 +108,8 @@ nlohmann::json renderRequestJson(const RenderRequest& r) {
             {"filmdiagonal", optional(r.filmDiagonal)},
             {"mode", r.mode},
             {"spectral", r.spectral ? json(*r.spectral) : json(nullptr)},
+            {"ghosts", r.ghosts ? json(*r.ghosts) : json(nullptr)},
+            {"ghost_model", r.ghostModel ? json(*r.ghostModel) : json(nullptr)},
             {"spp", r.spp},
             {"width", r.width},
             {"height", r.height}};

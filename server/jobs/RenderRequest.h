@@ -19,6 +19,8 @@ struct RenderRequest {
     std::optional<double> filmDiagonal;  // unset: as in the scene
     std::optional<bool> spectral;        // unset: spectral when the lens disperses
     std::string mode = "exact";          // exact (every ray traced) | thick (thick lens) | auto
+    std::optional<std::string> ghosts;   // lens flare: off | auto | all | N (cameras/GhostSelection.h); unset: the scene's
+    std::optional<std::string> ghostModel;  // exact | paraxial; unset: the scene's
     int spp = 16;
     int width = 320, height = 240;
 };

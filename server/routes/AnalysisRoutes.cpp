@@ -1,12 +1,15 @@
 // GET /api/lenses/{id}/analysis: the lens designer's analysis (the `lenslab analyze --json` object)
 // at fstop and focus, for wavelengths, fields, image plane and reference given as the command line
-// takes them; with views=html also what the page shows of it (AnalysisViews.h). The inputs are
-// checked first (at most 16 fields and 16 wavelengths; a malformed or out-of-range list is 400
-// naming its parameter); the analysis runs in the heavy-work pool and is cached by the lens's
-// content and the inputs; settings the lens cannot take are optics' 422 as elsewhere.
+// takes them; with views=html also what the page shows of it (AnalysisViews.h); and GET
+// /api/lenses/{id}/ghosts: its ghost analysis (`lenslab analyze --ghosts --json`) at fstop and
+// focus. The inputs are checked first (at most 16 fields and 16 wavelengths; a malformed or
+// out-of-range list is 400 naming its parameter); the analyses run in the heavy-work pool and are
+// cached by the lens's content and the inputs; settings the lens cannot take are optics' 422 as
+// elsewhere.
 #include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
 #include "AnalysisViews.h"
+#include "GhostFormats.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
 #include "prescription/OpticsError.h"
@@ -73,6 +76,22 @@ void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
         const std::string head = json{{"id", lens->id}, {"name", lens->name}}.dump(-1, ' ', false, json::error_handler_t::replace);
         res.status = 200;
         res.set_content(head.substr(0, head.size() - 1) + "," + bytesText(*analysis).substr(1), "application/json");
+    });
+    server.Get(R"(/api/lenses/([^/]+)/ghosts)", [&parts](const httplib::Request& req, httplib::Response& res) {
+        const auto lens = findLens(parts, req.matches[1]);
+        LensSettings settings = queryLensSettings(req);
+        settings.wavelength = Setting{kWavelengthD, "the d line"};
+        // A 256-surface upload has 32,640 paths: in the pool and cached, as the analysis.
+        DesignAnalysisInputs inputs;
+        inputs.lens = settings;
+        const auto ghosts = parts.work.cachedOrComputed(
+            parts.analyses, "ghosts|" + lens->digest + "|" + inputsKey(inputs), clientOf(req), [&] {
+                return textBytes(ghostAnalysisJson(analyzeGhosts(analyzeLens(lens->system, settings)))
+                                     .dump(-1, ' ', false, json::error_handler_t::replace));
+            });
+        const std::string head = json{{"id", lens->id}}.dump();
+        res.status = 200;
+        res.set_content(head.substr(0, head.size() - 1) + "," + bytesText(*ghosts).substr(1), "application/json");
     });
 }
 

@@ -49,6 +49,7 @@ void expectSameRows(const LensTable& a, const LensTable& b, const std::string& w
         EXPECT_EQ(x.aspheric, y.aspheric) << row;
         EXPECT_EQ(x.mirror, y.mirror) << row;
         EXPECT_EQ(x.obscurationDiameter, y.obscurationDiameter) << row;
+        EXPECT_EQ(x.coating, y.coating) << row;
     }
 }
 
@@ -153,6 +154,28 @@ TEST(PrescriptionWriters, FeaturesTheWritersDoNotHoldAreRefusedNamingTheRow) {
         "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ncir 10\ns -60 10\ncir 10\nepd 10; wl 587.5618\n", "plain.seq");
     const double efl = computeFirstOrder(buildLensSystem(plain)).efl;
     EXPECT_NEAR(computeFirstOrder(buildLensSystem(parseLensTable(writeZemaxText(plain), "plain.zmx"))).efl, efl, 1e-9 * efl);
+}
+
+// A prescription's coatings (bare, a stack, a layer in nm) come back from every writer, and rows
+// without one keep the default.
+TEST(PrescriptionWriters, CoatingsRoundTripThroughZmxDatAndJson) {
+    LensTable t = readLensTable(std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss.50mm.dat");
+    t.rows[0].coating = "none";
+    t.rows[1].coating = "MgF2+ZrO2:2q+Al2O3@510";
+    t.rows[9].coating = "1.38:99.6nm";
+    const LensTable viaZmx = parseLensTable(writeZemaxText(t), "written.zmx");
+    const LensTable viaDat = parseLensTable(writeLensTableText(t), "written.dat", t.layout);
+    const LensTable viaJson = prescriptionFromJson(prescriptionJson(t), "edited");
+    for (const LensTable* again : {&viaZmx, &viaDat, &viaJson}) {
+        expectSameRows(t, *again, "coated dgauss.50mm");
+        const LensSystem lens = buildLensSystem(*again);
+        EXPECT_TRUE(lens.surfaces[0].coating.bare());
+        EXPECT_EQ(lens.surfaces[1].coating.layers.size(), 3u);
+        EXPECT_DOUBLE_EQ(lens.surfaces[9].coating.layers.at(0).thicknessNm, 99.6);
+        EXPECT_TRUE(lens.surfaces[2].coating.isDefault);
+    }
+    EXPECT_NE(writeZemaxText(t).find("  COAT MgF2+ZrO2:2q+Al2O3@510\n"), std::string::npos);
+    EXPECT_NE(writeLensTableText(t).find(" coat=none\n"), std::string::npos);
 }
 
 TEST(PrescriptionJson, RowsReadBackToTheSameTable) {

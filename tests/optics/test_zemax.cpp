@@ -221,6 +221,34 @@ TEST(Zemax, ManginMirrorKeepsTheGlassItReflectsIn) {
     EXPECT_DOUBLE_EQ(t.rows[2].gap, -30);
 }
 
+// COAT: a material's name as Zemax spells it, a stack in lenslab's text; a blank one says nothing.
+TEST(Zemax, CoatingsAreReadFromCoat) {
+    const LensTable t = parseZemax(replaced(singlet("  COAT MGF2"), "  DISZ 40\n", "  DISZ 40\n  COAT MgF2+ZrO2:2q@500\n"),
+                                   "coated.zmx");
+    EXPECT_EQ(t.rows[0].coating, "MGF2");
+    EXPECT_EQ(t.rows[1].coating, "MgF2+ZrO2:2q@500");
+    EXPECT_EQ(parseZemax(singlet("  COAT"), "blank.zmx").rows[0].coating, "");
+}
+
+TEST(ZemaxErrors, CoatingDefinedOnlyInACoatingFile) {
+    expectError(singlet("  COAT HEAR1"), 13, "unknown material 'HEAR1'");
+    expectError(singlet("  COAT HEAR1"), 13, "does not read Zemax's COATING.DAT");
+}
+
+TEST(ZemaxErrors, CoatingOnAMirror) {
+    const std::string text = replaced(singlet(), "SURF 2\n  CURV -0.02\n  DISZ 40\n",
+                                      "SURF 2\n  CURV -0.02\n  DISZ -5\n  GLAS MIRROR 0 0 1.5 40\n  COAT MGF2\n");
+    const std::string lens = replaced(text, "SURF 3\n  CURV 0\n  DISZ 0\n",
+                                      "SURF 3\n  CURV 0.02\n  DISZ -30\n  DIAM 10\nSURF 4\n  CURV 0\n  DISZ 0\n");
+    try {
+        buildLensSystem(parseZemax(lens, "bad.zmx"));
+        FAIL() << "a coated mirror was accepted";
+    } catch (const LensTableError& e) {
+        EXPECT_EQ(e.line(), 14);
+        EXPECT_NE(e.problem().find("on a mirror"), std::string::npos) << e.what();
+    }
+}
+
 TEST(Zemax, AsphericTermsScaleAsLengthToOneMinusTwoI) {
     std::string text = replaced(singlet("  PARM 1 2\n  PARM 2 3\n  PARM 8 5"), "UNIT MM", "UNIT IN");
     text = replaced(text, "  STOP\n", "  STOP\n  TYPE EVENASPH\n");

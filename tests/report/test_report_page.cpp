@@ -292,6 +292,23 @@ TEST_F(ReportPage, EveryLensShowsTheDesignersAnalysisOfTheCommandLine) {
             std::snprintf(degrees, sizeof degrees, "Spot diagram at %.1f\u00b0", field["field_deg"].get<double>());
             EXPECT_NE(article.find(degrees), std::string::npos) << degrees;
         }
+        // The ghost analysis: its plot, and a table of its brightest ghosts in the order and count of
+        // `lenslab analyze --ghosts --json`.
+        EXPECT_NE(article.find("<img src=\"" + folder + "ghosts.svg\""), std::string::npos);
+        const nlohmann::json ghosts = commandJson("analyze --ghosts", lensFile(source, lens), focus);
+        const std::size_t table = article.find("<table class=\"ghosts\">");
+        ASSERT_NE(table, std::string::npos);
+        const std::string count = "of " + std::to_string(ghosts["ghosts"].size()) + " ghosts (" +
+                                  std::to_string(ghosts["reflecting_surfaces"].get<int>()) + " reflecting surfaces)";
+        EXPECT_NE(article.find(count, table), std::string::npos) << count;
+        std::size_t at = table;
+        for (std::size_t i = 0; i < std::min<std::size_t>(8, ghosts["ghosts"].size()); ++i) {
+            const nlohmann::json& surfaces = ghosts["ghosts"][i]["surfaces"];
+            const std::string row = "<th scope=\"row\">" + std::to_string(surfaces[0].get<int>()) + "\u2013" +
+                                    std::to_string(surfaces[1].get<int>()) + "</th>";
+            at = article.find(row, at);
+            ASSERT_NE(at, std::string::npos) << "ghost " << i + 1 << ": " << row;
+        }
     }
 }
 

@@ -1,6 +1,6 @@
 // GET /api/lenses/{id}/analysis on the real `lenslab serve`: the analysis JSON with its keys, with
 // views=html the page's views of it too, and 400 naming the parameter for lists that are malformed
-// or too long.
+// or too long; GET /api/lenses/{id}/ghosts.
 #include <gtest/gtest.h>
 
 #include "ServerProcess.h"
@@ -61,6 +61,21 @@ TEST(ServerAnalysis, ServesTheAnalysisAndRefusesBadListsNamingThem) {
         EXPECT_NE(bad.body.value("error", std::string()).find(parameter), std::string::npos) << query << " " << bad.raw;
     }
     EXPECT_EQ(get(c, "/api/lenses/no-such-lens/analysis").status, 404);
+
+    // The ghost analysis: every two-reflection path of dgauss.50mm (10 reflecting surfaces) at the
+    // settings asked, brightest first; the lens settings' errors are optics' as elsewhere.
+    const Reply ghosts = get(c, "/api/lenses/dgauss.50mm/ghosts?fstop=4&focus=inf");
+    ASSERT_EQ(ghosts.status, 200) << ghosts.raw.substr(0, 400);
+    EXPECT_EQ(ghosts.body["id"], "dgauss.50mm");
+    EXPECT_EQ(ghosts.body["reflecting_surfaces"], 10);
+    ASSERT_EQ(ghosts.body["ghosts"].size(), 45u);
+    const json& first = ghosts.body["ghosts"][0];
+    for (const char* key : {"surfaces", "reflectance", "focus_z", "focus_from_film_mm", "blur_diameter_mm", "field_scale",
+                            "energy", "relative_intensity", "focused"})
+        EXPECT_TRUE(first.contains(key)) << key;
+    EXPECT_GE(first["relative_intensity"].get<double>(), ghosts.body["ghosts"][44]["relative_intensity"].get<double>());
+    EXPECT_EQ(get(c, "/api/lenses/dgauss.50mm/ghosts?fstop=0.5").status, 422);
+    EXPECT_EQ(get(c, "/api/lenses/no-such-lens/ghosts").status, 404);
 }
 
 // The image plane and the reference point change the answer, so a cached answer for one must not

@@ -42,12 +42,18 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
     EXPECT_FALSE(r.spectral.has_value());  // spectral when the lens disperses
     EXPECT_FALSE(parseRenderRequest(json{{"spectral", nullptr}}, limits, "s").spectral.has_value());
     const json full = {{"scene", "s"}, {"lens", "l"}, {"fstop", 2.8}, {"focaldistance", 1500}, {"filmdiagonal", 43.3},
-                       {"mode", "thick"}, {"spectral", true}, {"spp", 4}, {"width", 64}, {"height", 48}};
+                       {"mode", "thick"}, {"spectral", true}, {"spp", 4}, {"width", 64}, {"height", 48},
+                       {"ghosts", "12"}, {"ghost_model", "paraxial"}};
     EXPECT_EQ(renderRequestJson(parseRenderRequest(full, limits, "")), full);
+    EXPECT_FALSE(r.ghosts.has_value());  // the scene's own
+    EXPECT_EQ(parseRenderRequest(json{{"ghosts", 7}}, limits, "s").ghosts, "7");
+    EXPECT_EQ(parseRenderRequest(json{{"ghosts", "auto"}}, limits, "s").ghosts, "auto");
     for (const json& bad : {json{{"spp", 0}}, json{{"spp", limits.maxSpp + 1}}, json{{"width", 7}},
                             json{{"height", limits.maxHeight + 1}}, json{{"fstop", "wide"}}, json{{"focaldistance", "near"}},
                             json{{"filmdiagonal", "big"}}, json{{"mode", "fast"}}, json{{"scene", "../x"}},
-                            json{{"lens", ""}}, json{{"colour", 1}}, json{{"spp", 1.5}}, json{{"spectral", "on"}}}) {
+                            json{{"lens", ""}}, json{{"colour", 1}}, json{{"spp", 1.5}}, json{{"spectral", "on"}},
+                            json{{"ghosts", "some"}}, json{{"ghosts", 0}}, json{{"ghosts", 1001}}, json{{"ghosts", true}},
+                            json{{"ghost_model", "fast"}}}) {
         try {
             parseRenderRequest(bad, limits, "s");
             ADD_FAILURE() << "accepted " << bad.dump();

@@ -74,6 +74,24 @@ ApertureShape apertureShape(const SceneDescription& scene, const ParamSet& p) {
 
 // Everything the realistic camera's Camera directive and the overrides say, the lens read; nothing
 // measured yet (the exit pupil's setup is the camera's own).
+// The lens flare asked for: the settings' ghosts and ghost model, else the camera's parameters.
+GhostSelection ghostSelection(const ParamSet& p, const CameraOverrides& o) {
+    const std::string ghosts = o.ghosts.value_or(p.getString("ghosts", "off"));
+    std::optional<GhostSelection> s = parseGhostSelection(ghosts);
+    if (!s) {
+        if (o.ghosts) throw SceneError(badGhostsMessage(ghosts));
+        p.fail(badGhostsMessage(ghosts));
+    }
+    const std::string model = o.ghostModel.value_or(p.getString("ghostmodel", "exact"));
+    const std::optional<GhostModel> m = parseGhostModel(model);
+    if (!m) {
+        if (o.ghostModel) throw SceneError(badGhostModelMessage(model));
+        p.fail(badGhostModelMessage(model));
+    }
+    s->model = *m;
+    return *s;
+}
+
 RealisticParams readRealisticParams(SceneDescription& scene, const CameraOverrides& o) {
     const ParamSet& p = scene.camera.params;
     refuseSynonyms(p, {"specfile", "lensfile"}, "the lens table");
@@ -160,6 +178,7 @@ RealisticParams readRealisticParams(SceneDescription& scene, const CameraOverrid
         r.pbrtExposure = pbrtStyle;
     }
     r.aperture = apertureShape(scene, p);
+    r.ghosts = ghostSelection(p, o);
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
     return r;
 }
@@ -195,6 +214,13 @@ std::unique_ptr<Camera> makePlacedCamera(SceneDescription& scene, const CameraOv
     if (o.lensFile || o.fstop || o.focusDistance || o.wavelength || o.filmDiagonal || o.mode)
         throw SceneError(scene.file + ": the lens overrides need a Camera \"realistic\"; this scene has a " +
                          scene.camera.type + " camera");
+    // Lens flare comes from a lens: asked of another camera it is refused, unless only "if needed".
+    if (o.ghosts || o.ghostModel) {
+        const GhostSelection ghosts = ghostSelection(ParamSet{}, o);
+        if (ghosts.on() && ghosts.mode != GhostSelection::Mode::Auto)
+            throw SceneError(scene.file + ": ghosts need a Camera \"realistic\" (lens flare comes from a lens's surfaces); this "
+                             "scene has a " + scene.camera.type + " camera");
+    }
     if (scene.camera.type == "environment") {
         p.checkAllUsed(scene.warnings, {"shutteropen", "shutterclose", "frameaspectratio", "screenwindow"});
         return std::make_unique<EnvironmentCamera>(cameraToWorld, width, height);

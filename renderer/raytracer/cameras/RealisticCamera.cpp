@@ -163,6 +163,11 @@ void RealisticCamera::filmPoint(double rasterX, double rasterY, double& x, doubl
     y = -sy * halfHeightMm_;
 }
 
+void RealisticCamera::rasterPoint(double x, double y, double& rasterX, double& rasterY) const {
+    rasterX = 0.5 * width_ * (1.0 - x / halfWidthMm_);
+    rasterY = 0.5 * height_ * (1.0 + y / halfHeightMm_);
+}
+
 // Irradiance from a patch dA of the aiming plane: L cos^2 / dist^2 dA = L cos^4 / dz^2 dA.
 double RealisticCamera::aimThick(double fx, double fy, float u1, float u2, Ray& ray) const {
     float dx, dy;

@@ -20,6 +20,7 @@
 
 #include "cameras/ApertureShape.h"
 #include "cameras/Camera.h"
+#include "cameras/GhostSelection.h"
 #include "trace/ExactTrace.h"
 #include "firstorder/ExitPupilBounds.h"
 #include "settings/LensAnalysis.h"
@@ -52,6 +53,7 @@ struct RealisticParams {
     // Trace each exact ray at its sample's wavelength (CameraSample::wavelengthNm), with the lens's
     // dispersion; the thick lens stays at the lens's wavelength. Only for a dispersive lens.
     bool spectral = false;
+    GhostSelection ghosts;                 // lens flare (cameras/LensFlare.h), made by the frame
 };
 
 // Parameters for a lens file at an f-number (nullopt: the widest) focused at focusDistanceMm from the
@@ -82,6 +84,13 @@ public:
     // The film point (mm, lens space z = filmZ) a raster position maps to; the lens inverts the
     // image, so the top-left pixel sits at +x, -y (pbrt's camera x points right, y up).
     void filmPoint(double rasterX, double rasterY, double& x, double& y) const;
+    void rasterPoint(double x, double y, double& rasterX, double& rasterY) const;  // filmPoint's inverse
+    // What lens flare (cameras/LensFlare.h) needs: the parameters, where the camera stands, and the
+    // factor the exact trace's weights carry on irradiance (exposure time, or simple weighting's).
+    const RealisticParams& params() const { return params_; }
+    const Transform& cameraToWorld() const { return cameraToWorld_; }
+    double exactWeightScale() const { return weightScaleExact_; }
+    double lensSpaceOriginZ() const { return originZ_; }  // mm: camera space's origin in lens space
 
 private:
     // Sets the film radii the crop window reaches; returns the whole frame's reach.

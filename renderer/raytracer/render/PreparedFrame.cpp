@@ -91,6 +91,9 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     });
     integrator_ = makeIntegrator(*geometry_, scene_.integrator, scene_.camera.medium.get());
     spectral_ = settings.camera.spectral.value_or(camera_->spectral());
+    arena_.execute([&] {
+        flare_ = makeFlareLayer(*camera_, settings.camera, *geometry_, width_, height_, sensor_, shutter_.moment(0, scene_.transformTimes));
+    });
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
@@ -153,7 +156,12 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                 local.cameraRays += spp_;
                 float* out = row + std::size_t(px - rect.x0) * 3;
                 // A filter's negative lobes can push a pixel below zero; pbrt-v3 clamps it there too.
-                Vec3f v = float(scene_.film.scale) * pixel.value();
+                Vec3f v = pixel.value();
+                if (!flare_.rgb.empty()) {
+                    const float* f = &flare_.rgb[(std::size_t(py) * width_ + px) * 3];
+                    v += Vec3f{f[0], f[1], f[2]};
+                }
+                v = float(scene_.film.scale) * v;
                 if (scene_.film.whiteBalanceKelvin > 0) v = applyRgbMatrix(whiteBalance, v);
                 out[0] = std::max(0.0f, v.x);
                 out[1] = std::max(0.0f, v.y);
@@ -182,6 +190,7 @@ std::map<std::string, std::string> PreparedFrame::metadata() const {
                             "matching functions (Wyman, Sloan & Shirley 2013 fit), linear Rec. 709"
                           : "RGB, linear Rec. 709";
     if (!scene_.film.filename.empty()) m["filmFilename"] = scene_.film.filename;
+    if (!flare_.description.empty()) m["lensFlare"] = flare_.description;
     if (!scene_.warnings.empty()) m["warnings"] = joinLines(scene_.warnings);
     return m;
 }

@@ -21,6 +21,7 @@
 #include "Render.h"
 #include "scene/SceneDescription.h"
 #include "geometry/SceneGeometry.h"
+#include "render/FlareLayer.h"
 #include "render/TileScheduler.h"
 
 namespace lenslab {
@@ -62,6 +63,7 @@ public:
                     const std::atomic<bool>* cancel = nullptr) const;
 
     bool spectral() const { return spectral_; }
+    const FlareStats& flareStats() const { return flare_.stats; }
     // Camera and lens parameters, scene, resolution, spp, seed: the image's metadata.
     std::map<std::string, std::string> metadata() const;
 
@@ -80,6 +82,7 @@ private:
     std::unique_ptr<Integrator> integrator_;
     bool spectral_ = false;          // a wavelength per sample, the film through SpectralSensor
     SpectralSensor sensor_;
+    FlareLayer flare_;               // lens flare, added to every pixel; empty: none
     double setupSeconds_ = 0;
 };
 

@@ -56,6 +56,10 @@ RenderOutput renderScene(const RenderSettings& settings, const std::function<voi
     out.stats.cameraRays = counters.cameraRays;
     out.stats.blockedCameraRays = counters.blockedCameraRays;
     out.stats.raysTraced = counters.raysTraced;
+    out.stats.flareSources = frame.flareStats().sources;
+    out.stats.flarePaths = frame.flareStats().paths;
+    out.stats.flareRays = frame.flareStats().raysTraced;
+    out.stats.flareSeconds = frame.flareStats().seconds;
     out.metadata = frame.metadata();
     return out;
 }
