@@ -139,6 +139,7 @@ RenderSettings renderSettings(const ArgParser& p) {
     }
     if (p.has("--ghosts")) s.camera.ghosts = p.get("--ghosts");
     if (p.has("--ghost-model")) s.camera.ghostModel = p.get("--ghost-model");
+    if (auto v = p.integer("--wavelengths-per-sample")) s.wavelengthsPerSample = int(*v);
     return s;
 }
 
@@ -180,8 +181,9 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.option("--seed", "N", "random seed (default 0)");
     p.option("--exposure", "E", "PNG exposure scale (default 1)");
     p.option("--lens", "FILE", "realistic camera: lens table or .zmx prescription instead of the scene's specfile");
-    p.option("--spectral", "on|off", "a wavelength per sample through the lens's dispersion, the film through the CIE "
+    p.option("--spectral", "on|off", "wavelengths per sample through the lens's dispersion, the film through the CIE "
              "matching functions (default: on when the lens disperses and no --wavelength is given)");
+    p.option("--wavelengths-per-sample", "N", "spectral: wavelengths each camera sample carries, 1 to 8 (default 3, 1 with the box filter)");
     declareLensFlags(p);
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
     p.option("--layout", "L", "realistic camera: the --lens table's layout, gap-before | gap-after (default: detect)");

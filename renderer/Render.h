@@ -44,6 +44,11 @@ struct RenderSettings {
     int threads = 0;                       // 0 = all cores
     int tileSize = 32;
     std::uint64_t seed = 0;
+    // A spectral render's wavelengths per camera sample, 1 to 8 (docs/spectral.md): the first is the
+    // sample's own, the others share its scene path. 1 is the plain one-wavelength sample; 0 picks
+    // 3 for smooth pixel filters and 1 for the box, whose hard borders make the other wavelengths
+    // noisier than they save (bench/README.md).
+    int wavelengthsPerSample = 0;
     // Crop window x0, x1, y0, y1 as fractions of the image (pbrt's cropwindow); unset = the scene's.
     // The output image holds only the cropped pixels.
     std::optional<std::array<double, 4>> crop;

@@ -12,6 +12,8 @@
 #include "RenderItems.h"
 #include "ReportPage.h"
 #include "SiteFiles.h"
+#include "SlantedEdgeComparison.h"
+#include "SlantedEdgeSection.h"
 
 #if !defined(LENSLAB_VERSION) || !defined(LENSLAB_SOURCE_DIR)
 #error "LENSLAB_VERSION and LENSLAB_SOURCE_DIR must be defined by the build"
@@ -116,6 +118,8 @@ void buildItems(ItemRunner& runner, const std::vector<LensSource>& lensSources, 
             }
         content.scenes.push_back(std::move(entry));
     }
+    const auto edges = std::find_if(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kSlantedEdgeSceneId; });
+    if (edges != scenes.end()) content.slantedEdges = buildSlantedEdges(runner, *edges, content.lenses, o);
     const ReportScene* speedScene = nullptr;
     for (const ReportScene& s : content.scenes)
         if (!speedScene && s.scene.realisticCamera) speedScene = &s;
@@ -147,8 +151,11 @@ ReportSummary buildReport(const ReportOptions& options, const std::function<void
     for (const SceneSource& s : scenes) realisticScenes += s.realisticCamera;
     const bool speed = realisticScenes > 0 && !renderIds.empty();
     const bool chart = std::any_of(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kColourChartSceneId; });
+    const bool edges = std::any_of(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kSlantedEdgeSceneId; });
+    std::vector<std::string> lensIds;
+    for (const LensSource& l : lensSources) lensIds.push_back(l.id);
     const int total = (chart ? 7 : 5) * static_cast<int>(lensSources.size()) + 3 * realisticScenes * static_cast<int>(renderIds.size()) +
-                      (speed ? 2 * static_cast<int>(plan.speedSpps.size()) : 0) + 1;
+                      (speed ? 2 * static_cast<int>(plan.speedSpps.size()) : 0) + (edges ? slantedEdgeItemCount(lensIds) : 0) + 1;
 
     ReportSummary summary;
     ItemRunner runner(o.outputDir, readManifest(o.outputDir), total, onProgress, cancel, summary);

@@ -87,7 +87,8 @@ InputsHash itemInputs(const std::string& kind, const CodeDigests& code) {
         {"diagram", {CodePart::Optics, CodePart::Image, CodePart::Diagram}},
         {"render", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}},
         {"difference", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}},
-        {"speed", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}}};
+        {"speed", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}},
+        {"slanted-edge", {CodePart::Optics, CodePart::Image, CodePart::Raytracer}}};
     InputsHash h;
     h.add(std::string("lenslab ") + LENSLAB_VERSION).add(kind).add(code.digests[int(CodePart::Report)]);
     const auto it = kMadeBy.find(kind);

@@ -55,6 +55,21 @@ struct LensEntry {
 };
 
 
+// An edge of the slanted-edge chart through a lens: the crop's e-SFR against the analysis's MTF
+// times the pixel's (SlantedEdgeSection.h).
+struct EdgePlot {
+    std::string lensId, direction;  // "tangential" | "sagittal"
+    std::string plot;               // SVG file relative to the site folder
+    double fieldDegrees = 0, fstop = 0;
+    double maxDifference = 0;       // |e-SFR - prediction| up to half the pixel Nyquist
+    std::string problem;            // why the plot is missing
+};
+
+struct SlantedEdges {
+    std::vector<EdgePlot> plots;
+    int spp = 0, cropPixels = 0;
+};
+
 struct RenderPair {
     std::string lensId;
     RenderRecord accurate, approximate;
@@ -89,6 +104,7 @@ struct ReportContent {
     std::vector<LensEntry> lenses;
     std::vector<ReportScene> scenes;
     SpeedStudy speed;
+    SlantedEdges slantedEdges;
     std::vector<std::string> problems;
 };
 

@@ -8,6 +8,7 @@
 
 #include "MarkupText.h"
 #include "prescription/NumberText.h"
+#include "SlantedEdgeSection.h"
 #include "SvgPlot.h"
 
 namespace lenslab {
@@ -404,7 +405,9 @@ std::string reportHtml(const ReportContent& c) {
     out << "</li>\n<li><a href=\"#renders\">Renders</a>:";
     for (const ReportScene& s : c.scenes)
         out << " <a href=\"#" << escapeMarkup(sceneAnchor(s.scene.id)) << "\">" << escapeMarkup(s.scene.id) << "</a>";
-    out << "</li>\n<li><a href=\"#plots\">Comparison plots</a></li>\n<li><a href=\"#algorithms\">How it works</a></li>\n";
+    out << "</li>\n<li><a href=\"#plots\">Comparison plots</a></li>\n";
+    if (!c.slantedEdges.plots.empty()) out << "<li><a href=\"#render-against-analysis\">The render against the analysis</a></li>\n";
+    out << "<li><a href=\"#algorithms\">How it works</a></li>\n";
     if (!c.problems.empty()) out << "<li><a href=\"#problems\">Problems</a></li>\n";
     out << "</ol>\n</nav>\n</header>\n<main>\n";
 
@@ -423,7 +426,7 @@ std::string reportHtml(const ReportContent& c) {
     for (const ReportScene& s : c.scenes) sceneArticle(out, s);
     out << "</section>\n<section id=\"plots\">\n<h2>Comparison plots</h2>\n";
     comparisonPlots(out, c);
-    out << "</section>\n" << algorithmsSectionHtml();
+    out << "</section>\n" << slantedEdgeSectionHtml(c.slantedEdges) << algorithmsSectionHtml();
     if (!c.problems.empty()) {
         out << "<section id=\"problems\">\n<h2>Problems</h2>\n<ul>\n";
         for (const std::string& p : c.problems) out << "<li>" << escapeMarkup(p) << "</li>\n";

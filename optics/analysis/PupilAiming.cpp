@@ -55,7 +55,9 @@ bool solveChief(const LensSystem& lens, FieldAim& aim, double step) {
     for (int it = 0; it < 30; ++it) {
         const auto s = linearise(lens, aim, u, v, step);
         if (!s) return false;
-        if (std::hypot(s->x, s->y) < 1e-12 * aim.stopRadius) {
+        // 1e-9 of the stop's radius: at 1e-12 the rounding of a finite object's ray at the stop kept
+        // Newton from ever passing at some angles, and those fields went untraced.
+        if (std::hypot(s->x, s->y) < 1e-9 * aim.stopRadius) {
             aim.chiefAimX = u;
             aim.chiefAimY = v;
             return true;

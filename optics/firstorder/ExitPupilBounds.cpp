@@ -1,7 +1,6 @@
 #include "firstorder/ExitPupilBounds.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "prescription/OpticsError.h"
@@ -114,18 +113,22 @@ std::vector<double> boundaryDistances(PassTest& passes, double r, const GridScan
     return hi;  // the failing side of the bisection: never inside the passing region
 }
 
-// Widens the boundary distances `half` (measured for the lens's own wavelength, the failing side)
-// to where the lens at another wavelength still passes rays, direction by direction: a region
-// shifts only slightly with the wavelength, so a bisection between the own boundary and a quarter
-// beyond it finds the other's at a small fraction of a full measurement's rays.
-void widenForWavelength(PassTest& passes, double r, double centreX, int vertices, std::vector<double>& half) {
-    constexpr int kBisections = 10;
-    const int count = static_cast<int>(half.size());
-    std::vector<double> cosA(count), sinA(count), lo(half), hi(count);
+// The boundary distances at another wavelength, direction by direction, from `own` (measured at
+// the lens's own wavelength, the failing side): a region shifts only slightly with the wavelength,
+// so a bisection between half and one and a half times the own distance finds the other's at a
+// small fraction of a full measurement's rays. A direction where the other region does not pass at
+// half the own distance keeps the own one (no such lens seen); one where it passes beyond one and a
+// half searches outward.
+std::vector<double> boundaryAtWavelength(PassTest& passes, double r, double centreX, int vertices,
+                                         const std::vector<double>& own) {
+    constexpr int kBisections = 10, kGrowths = 4;
+    const int count = static_cast<int>(own.size());
+    std::vector<double> cosA(count), sinA(count), lo(count), hi(count);
     for (int k = 0; k < count; ++k) {
         cosA[k] = std::cos(2.0 * kPi * k / vertices);
         sinA[k] = std::sin(2.0 * kPi * k / vertices);
-        hi[k] = 1.25 * half[k];
+        lo[k] = 0.5 * own[k];
+        hi[k] = 1.5 * own[k];
     }
     std::vector<double> xs(count), ys(count);
     const auto test = [&](const std::vector<double>& rho) {
@@ -135,23 +138,62 @@ void widenForWavelength(PassTest& passes, double r, double centreX, int vertices
         }
         return passes(r, xs, ys);
     };
-    const std::vector<bool> beyondOwn = test(lo);
+    const std::vector<bool> inner = test(lo);
+    for (int grow = 0; grow < kGrowths; ++grow) {
+        const std::vector<bool> outer = test(hi);
+        bool any = false;
+        for (int k = 0; k < count; ++k)
+            if (outer[k] && own[k] > 0) lo[k] = hi[k], hi[k] *= 2, any = true;
+        if (!any) break;
+    }
     for (int it = 0; it < kBisections; ++it) {
         std::vector<double> mid(count);
         for (int k = 0; k < count; ++k) mid[k] = 0.5 * (lo[k] + hi[k]);
         const std::vector<bool> midPass = test(mid);
         for (int k = 0; k < count; ++k) (midPass[k] ? lo[k] : hi[k]) = mid[k];
     }
-    for (int k = 0; k < count; ++k)
-        if (beyondOwn[k] && half[k] > 0) half[k] = hi[k];
+    std::vector<double> half(count);
+    for (int k = 0; k < count; ++k) half[k] = own[k] > 0 && inner[k] ? hi[k] : own[k];
+    return half;
 }
 
-// The polygon seen from film radius r, interpolated between the measured radii (full circle).
-struct Polygon {
+// A film radius's region at the lens's own wavelength: its centre and half-polygon (the failing
+// side of each direction's bisection; nothing when no ray passes).
+struct OwnRegion {
+    bool any = false;
     double centreX = 0;
-    int n = 0;
-    std::array<double, kMaxVertices> rho{};
+    std::vector<double> half;
 };
+
+OwnRegion measureRegion(PassTest& passes, double r, double aimRadius, int vertices) {
+    double extent = 1.5 * aimRadius;
+    GridScan g = scanGrid(passes, r, extent, 64);
+    for (int grow = 0; grow < 4 && g.touchesEdge; ++grow) {
+        extent *= 2;
+        g = scanGrid(passes, r, extent, 64);
+    }
+    if (!g.any) g = scanGrid(passes, r, extent, 256);  // a sliver the coarse grid missed
+    if (!g.any) return {};
+    return {true, g.centreX, boundaryDistances(passes, r, g, vertices)};
+}
+
+// The plane camera rays are aimed through: the rear vertex's, unless a cover glass just before the
+// film brings it so close that the film centre's passing region is smaller than a cell of the
+// search grid (the Sony 55 mm's, 1 mm from the film: 0.3 mm across against 1 mm cells, so that
+// every film radius fell back to the fine grid, 16 times the rays); then the front vertex's, where
+// the region is about as large as the lens (as relativeIllumination aims). Decided at the film
+// centre, so that a crop window's regions stay the whole frame's.
+double aimingPlaneZ(const LensSystem& lens, double filmZ) {
+    PassTest rear(lens, filmZ, lens.rearZ());
+    if (scanGrid(rear, 0.0, 1.5 * lens.surfaces.back().apertureRadius, 64).any) return lens.rearZ();
+    PassTest front(lens, filmZ, lens.frontZ());
+    return scanGrid(front, 0.0, 1.5 * lens.surfaces.front().apertureRadius, 64).any ? lens.frontZ() : lens.rearZ();
+}
+
+// The clear aperture of the surface whose vertex plane is the aiming plane: the search grid's scale.
+double aimingRadius(const LensSystem& lens, double aimZ) {
+    return (aimZ == lens.rearZ() ? lens.surfaces.back() : lens.surfaces.front()).apertureRadius;
+}
 
 // Where film radius r falls between the measured radii: rows i and j = i + 1 (or i at the ends),
 // weight f of row j.
@@ -168,16 +210,6 @@ RadiusWeight radiusWeight(const ExitPupilBounds& b, double r) {
     w.f = last > 0 ? t - w.i : 0.0;
     w.j = std::min(w.i + 1, last);
     return w;
-}
-
-Polygon polygonAt(const ExitPupilBounds& b, double r) {
-    Polygon p;
-    p.n = b.vertices;
-    const auto [i, j, f] = radiusWeight(b, r);
-    p.centreX = (1 - f) * b.centreX[i] + f * b.centreX[j];
-    for (int k = 0; k < p.n; ++k)
-        p.rho[k] = (1 - f) * b.rho[i * p.n + k] + f * b.rho[j * p.n + k];
-    return p;
 }
 
 // Fills fanAreas, vertexX and vertexY (ExitPupilBounds.h).
@@ -214,49 +246,143 @@ ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, dou
                                   options);
 }
 
-ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, double radiusStep, int firstRadius,
-                                       int lastRadius, const ExitPupilBoundsOptions& options) {
+namespace {
+
+void checkOptions(double filmZ, const LensSystem& lens, double radiusStep, int firstRadius, int lastRadius,
+                  const ExitPupilBoundsOptions& options) {
     if (options.vertices < 8 || options.vertices > kMaxVertices || options.vertices % 2 != 0)
         throw OpticsError("exit pupil bounds: vertices must be even, 8 to 256");
     if (!(radiusStep > 0) || firstRadius < 0 || lastRadius <= firstRadius)
         throw OpticsError("exit pupil bounds: need a positive radius step and at least 2 film radii");
     if (!(filmZ < lens.rearZ())) throw OpticsError("exit pupil bounds: the film must lie behind the rear vertex");
+}
+
+// Bounds with no regions yet: the radii and the aiming plane.
+ExitPupilBounds emptyBounds(const LensSystem& lens, double filmZ, double radiusStep, int firstRadius, int lastRadius,
+                            int vertices) {
     ExitPupilBounds b;
     b.filmZ = filmZ;
-    b.aimZ = lens.rearZ();
+    b.aimZ = aimingPlaneZ(lens, filmZ);
     b.radiusStep = radiusStep;
     b.firstRadius = firstRadius;
-    b.vertices = options.vertices;
-    const int n = options.vertices, count = lastRadius - firstRadius + 1;
+    b.vertices = vertices;
+    const int count = lastRadius - firstRadius + 1;
     b.centreX.assign(count, 0.0);
-    b.rho.assign(static_cast<std::size_t>(count) * n, 0.0);
-    PassTest passes(lens, filmZ, b.aimZ);
-    std::vector<PassTest> otherWavelengths;
-    for (double nm : options.wavelengthsNm) otherWavelengths.emplace_back(atWavelength(lens, nm), filmZ, b.aimZ);
-    const double rearRadius = lens.surfaces.back().apertureRadius;
+    b.rho.assign(static_cast<std::size_t>(count) * vertices, 0.0);
+    return b;
+}
+
+// Radius i's polygon from a half-polygon, mirrored about y = 0 and widened by the margin.
+void setRegion(ExitPupilBounds& b, int i, double centreX, const std::vector<double>& half, double margin) {
+    const int n = b.vertices;
+    b.centreX[i] = centreX;
+    for (int k = 0; k < n; ++k) {
+        const int m = k <= n / 2 ? k : n - k;
+        b.rho[static_cast<std::size_t>(i) * n + k] = half[m] * (1.0 + margin);
+    }
+}
+
+// Measures every radius's own region, reporting each to `use(i, r, region)`, with the options'
+// progress and cancel.
+template <class Use>
+void measureRegions(const LensSystem& lens, const ExitPupilBounds& b, const ExitPupilBoundsOptions& options, Use use) {
+    PassTest passes(lens, b.filmZ, b.aimZ);
+    const double aimRadius = aimingRadius(lens, b.aimZ);
+    const int count = b.radiusCount();
     for (int i = 0; i < count; ++i) {
         if (options.progress && i > 0) options.progress(double(i) / count);
         if (options.cancel && options.cancel->load(std::memory_order_relaxed)) throw SetupCancelled();
-        const double r = (firstRadius + i) * radiusStep;
-        double extent = 1.5 * rearRadius;
-        GridScan g = scanGrid(passes, r, extent, 64);
-        for (int grow = 0; grow < 4 && g.touchesEdge; ++grow) {
-            extent *= 2;
-            g = scanGrid(passes, r, extent, 64);
+        const double r = (b.firstRadius + i) * b.radiusStep;
+        const OwnRegion region = measureRegion(passes, r, aimRadius, b.vertices);
+        if (region.any) use(i, r, region);
+    }
+    if (options.progress) options.progress(1.0);
+}
+
+}  // namespace
+
+ExitPupilBounds computeExitPupilBounds(const LensSystem& lens, double filmZ, double radiusStep, int firstRadius,
+                                       int lastRadius, const ExitPupilBoundsOptions& options) {
+    checkOptions(filmZ, lens, radiusStep, firstRadius, lastRadius, options);
+    ExitPupilBounds b = emptyBounds(lens, filmZ, radiusStep, firstRadius, lastRadius, options.vertices);
+    measureRegions(lens, b, options, [&](int i, double, const OwnRegion& region) {
+        setRegion(b, i, region.centreX, region.half, options.margin);
+    });
+    tabulateFans(b);
+    return b;
+}
+
+SpectralExitPupilBounds computeSpectralExitPupilBounds(const LensSystem& lens, double filmZ, double radiusStep,
+                                                       int firstRadius, int lastRadius,
+                                                       const std::vector<double>& edgesNm,
+                                                       const ExitPupilBoundsOptions& options) {
+    checkOptions(filmZ, lens, radiusStep, firstRadius, lastRadius, options);
+    if (edgesNm.size() < 2 || !std::is_sorted(edgesNm.begin(), edgesNm.end()))
+        throw OpticsError("spectral exit pupil bounds: need at least two wavelengths, ascending");
+    SpectralExitPupilBounds s;
+    s.edgesNm = edgesNm;
+    const ExitPupilBounds empty = emptyBounds(lens, filmZ, radiusStep, firstRadius, lastRadius, options.vertices);
+    s.bands.assign(edgesNm.size() - 1, empty);
+    std::vector<PassTest> atEdges;
+    for (double nm : edgesNm) atEdges.emplace_back(atWavelength(lens, nm), filmZ, empty.aimZ);
+    measureRegions(lens, empty, options, [&](int i, double r, const OwnRegion& region) {
+        std::vector<std::vector<double>> edge;
+        for (PassTest& p : atEdges) edge.push_back(boundaryAtWavelength(p, r, region.centreX, options.vertices, region.half));
+        // A band holding the lens's own wavelength also holds its measured region.
+        for (std::size_t band = 0; band + 1 < edge.size(); ++band) {
+            const bool holdsOwn = lens.wavelength >= edgesNm[band] && lens.wavelength <= edgesNm[band + 1];
+            std::vector<double> half(region.half.size());
+            for (std::size_t k = 0; k < half.size(); ++k)
+                half[k] = std::max({edge[band][k], edge[band + 1][k], holdsOwn ? region.half[k] : 0.0});
+            setRegion(s.bands[band], i, region.centreX, half, options.margin);
         }
-        if (!g.any) g = scanGrid(passes, r, extent, 256);  // a sliver the coarse grid missed
-        if (!g.any) continue;
-        std::vector<double> half = boundaryDistances(passes, r, g, n);
-        for (PassTest& other : otherWavelengths) widenForWavelength(other, r, g.centreX, n, half);
-        b.centreX[i] = g.centreX;
-        for (int k = 0; k < n; ++k) {
-            const int m = k <= n / 2 ? k : n - k;  // mirror image about y = 0
-            b.rho[static_cast<std::size_t>(i) * n + k] = half[m] * (1.0 + options.margin);
+    });
+    for (ExitPupilBounds& b : s.bands) tabulateFans(b);
+    return s;
+}
+
+std::size_t SpectralExitPupilBounds::bandOf(double nm) const {
+    const auto above = std::upper_bound(edgesNm.begin() + 1, edgesNm.end() - 1, nm);
+    return std::size_t(above - edgesNm.begin()) - 1;
+}
+
+void sampleSpectralExitPupils(const SpectralExitPupilBounds& bounds, std::size_t count, const double* filmX,
+                              const double* filmY, const double* u1, const double* u2, const double* nm,
+                              PupilSampleBatch& out) {
+    thread_local std::vector<std::size_t> of, start;
+    thread_local std::vector<std::uint8_t> bandOfSample;
+    thread_local std::vector<double> fx, fy, v1, v2;
+    thread_local PupilSampleBatch part;
+    out.resize(count);
+    // The samples sorted by band (a counting sort), each band sampled as one batch.
+    const std::size_t bands = bounds.bands.size();
+    bandOfSample.resize(count);
+    start.assign(bands + 1, 0);
+    for (std::size_t s = 0; s < count; ++s) ++start[(bandOfSample[s] = std::uint8_t(bounds.bandOf(nm[s]))) + 1];
+    for (std::size_t band = 0; band < bands; ++band) start[band + 1] += start[band];
+    of.resize(count);
+    {
+        std::vector<std::size_t> next(start.begin(), start.end() - 1);
+        for (std::size_t s = 0; s < count; ++s) of[next[bandOfSample[s]]++] = s;
+    }
+    for (std::size_t band = 0; band < bands; ++band) {
+        const std::size_t* members = of.data() + start[band];
+        const std::size_t size = start[band + 1] - start[band];
+        if (size == 0) continue;
+        for (auto* v : {&fx, &fy, &v1, &v2}) v->resize(size);
+        for (std::size_t k = 0; k < size; ++k) {
+            fx[k] = filmX[members[k]];
+            fy[k] = filmY[members[k]];
+            v1[k] = u1[members[k]];
+            v2[k] = u2[members[k]];
+        }
+        sampleExitPupils(bounds.bands[band], size, fx.data(), fy.data(), v1.data(), v2.data(), part);
+        for (std::size_t k = 0; k < size; ++k) {
+            out.x[members[k]] = part.x[k];
+            out.y[members[k]] = part.y[k];
+            out.area[members[k]] = part.area[k];
         }
     }
-    tabulateFans(b);
-    if (options.progress) options.progress(1.0);
-    return b;
 }
 
 namespace {
@@ -339,15 +465,23 @@ PupilSample sampleExitPupil(const ExitPupilBounds& b, double filmX, double filmY
 
 bool insideExitPupilBounds(const ExitPupilBounds& b, double filmX, double filmY, double x, double y) {
     const double r = std::sqrt(filmX * filmX + filmY * filmY);  // mm: no overflow, cheaper than hypot
-    const Polygon p = polygonAt(b, r);
+    const auto [i, j, f] = radiusWeight(b, r);
+    const int n = b.vertices;
     const double c = r > 0 ? filmX / r : 1.0, sn = r > 0 ? filmY / r : 0.0;
-    const double lx = x * c + y * sn - p.centreX, ly = -x * sn + y * c;
+    const double lx = x * c + y * sn - ((1 - f) * b.centreX[i] + f * b.centreX[j]), ly = -x * sn + y * c;
+    // The fan sector holding the point: between vertex directions k and k + 1 (b.vertexX/Y, the
+    // directions sampling uses), found from its angle and settled by the sides of those directions.
     double angle = std::atan2(ly, lx);
     if (angle < 0) angle += 2.0 * kPi;
-    const int k = std::min(static_cast<int>(angle / (2.0 * kPi) * p.n), p.n - 1);
-    const double a0 = 2.0 * kPi * k / p.n, a1 = 2.0 * kPi * (k + 1) / p.n;
-    const double x0 = p.rho[k] * std::cos(a0), y0 = p.rho[k] * std::sin(a0);
-    const double x1 = p.rho[(k + 1) % p.n] * std::cos(a1), y1 = p.rho[(k + 1) % p.n] * std::sin(a1);
+    int k = std::min(static_cast<int>(angle / (2.0 * kPi) * n), n - 1);
+    const auto leftOf = [&](int v) { return b.vertexX[v] * ly - b.vertexY[v] * lx >= 0; };
+    if (!leftOf(k)) k = (k + n - 1) % n;
+    else if (leftOf(k + 1)) k = (k + 1) % n;
+    const int k1 = (k + 1) % n;
+    const double rho0 = (1 - f) * b.rho[std::size_t(i) * n + k] + f * b.rho[std::size_t(j) * n + k];
+    const double rho1 = (1 - f) * b.rho[std::size_t(i) * n + k1] + f * b.rho[std::size_t(j) * n + k1];
+    const double x0 = rho0 * b.vertexX[k], y0 = rho0 * b.vertexY[k];
+    const double x1 = rho1 * b.vertexX[k + 1], y1 = rho1 * b.vertexY[k + 1];
     // Inside the fan triangle: on the centre's side of the edge from vertex k to vertex k+1.
     return (x1 - x0) * (ly - y0) - (y1 - y0) * (lx - x0) >= 0;
 }

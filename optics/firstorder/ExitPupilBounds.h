@@ -1,8 +1,8 @@
 #pragma once
 // Tight bounds of the exit pupil as seen from each film radius, for aiming camera rays.
 //
-// From a film point, the rays that pass the whole lens cross a plane behind the lens (the aiming
-// plane, at the rear vertex) inside a region: the stop's image cut by the rims of the other
+// From a film point, the rays that pass the whole lens cross a plane (the aiming plane: the rear
+// vertex's, or the front vertex's behind a cover glass, ExitPupilBounds.cpp) inside a region: the stop's image cut by the rims of the other
 // elements (the "cat's eye" of vignetting). A box around that region wastes a quarter of the rays
 // on a double Gauss; here each region is a star-shaped polygon around its centroid, measured at a
 // set of film radii with the exact trace, interpolated linearly between them and widened by a
@@ -25,11 +25,6 @@ struct ExitPupilBoundsOptions {
     int filmRadii = 64;      // film radii sampled from 0 to the maximum (whole-disc form)
     int vertices = 64;       // polygon vertices (even), at equal angles around the centre
     double margin = 0.01;    // relative widening of every polygon
-    // Widen each region, direction by direction, to also hold the regions at these wavelengths
-    // (nm). A spectral camera passes the ends of the visible range: a region shifts smoothly with
-    // the wavelength, so the widened regions (with the margin) hold the wavelengths between; the
-    // rays they still lose are measured in tests/optics/test_wavelength_etas.cpp.
-    std::vector<double> wavelengthsNm;
     // Checked before each film radius (a radius costs ~1/64 of the whole, milliseconds even for a
     // lens at the surface limit): once set, the measurement stops by throwing SetupCancelled.
     const std::atomic<bool>* cancel = nullptr;
@@ -44,7 +39,7 @@ public:
 
 struct ExitPupilBounds {
     double filmZ = 0;          // film plane
-    double aimZ = 0;           // aiming plane (rear vertex)
+    double aimZ = 0;           // aiming plane (the rear vertex's, or the front one's behind a cover glass)
     // Film radii measured: (firstRadius + i) * radiusStep for i < radiusCount(). A crop window
     // needs a ring of them; the same step keeps its regions identical to the whole frame's.
     double radiusStep = 0;
@@ -102,5 +97,29 @@ void sampleExitPupils(const ExitPupilBounds& bounds, std::size_t count, const do
 
 // Whether a point of the aiming plane lies inside the bounds seen from the film point.
 bool insideExitPupilBounds(const ExitPupilBounds& bounds, double filmX, double filmY, double x, double y);
+
+// Bounds for a spectral camera, one set per band of wavelengths [edgesNm[b], edgesNm[b + 1]], each
+// holding the rays that pass at every wavelength of its band (narrow bands: few camera rays wasted,
+// and each blocked ray is noise). The regions are measured at the lens's own wavelength, then each
+// edge wavelength's boundary is found near them direction by direction (a bisection, a tenth of a
+// measurement's rays); a band takes the larger of its two edges' distances in each direction, with
+// the margin, as a region shifts smoothly with the wavelength. The rays they lose are measured in
+// tests/optics/test_wavelength_etas.cpp.
+struct SpectralExitPupilBounds {
+    std::vector<double> edgesNm;
+    std::vector<ExitPupilBounds> bands;
+    std::size_t bandOf(double nm) const;  // wavelengths beyond the edges take the nearest band
+    const ExitPupilBounds& at(double nm) const { return bands[bandOf(nm)]; }
+};
+
+SpectralExitPupilBounds computeSpectralExitPupilBounds(const LensSystem& lens, double filmZ, double radiusStep,
+                                                       int firstRadius, int lastRadius,
+                                                       const std::vector<double>& edgesNm,
+                                                       const ExitPupilBoundsOptions& options = {});
+
+// sampleExitPupils with each sample in the bounds of its wavelength nm[s].
+void sampleSpectralExitPupils(const SpectralExitPupilBounds& bounds, std::size_t count, const double* filmX,
+                              const double* filmY, const double* u1, const double* u2, const double* nm,
+                              PupilSampleBatch& out);
 
 }  // namespace lenslab

@@ -78,30 +78,52 @@ void stepAsphere(std::size_t count, const BatchArrays& a, const SurfaceConstants
                  std::int16_t index) {
     thread_local std::vector<double> t;
     thread_local std::vector<std::uint8_t> done;
+    thread_local std::vector<std::uint32_t> stragglers;
     t.resize(count);
     done.assign(count, 0);
     double* tt = t.data();
     std::uint8_t* dn = done.data();
+    // A ray blocked at an earlier surface takes no part: it would only keep the passes going (rays far
+    // outside the lens, as the exit-pupil search traces by the thousand, rarely converge).
+    std::size_t open = 0;
 #pragma GCC ivdep
     for (std::size_t r = 0; r < count; ++r) {
         tt[r] = asphereStart(a.px[r], a.py[r], a.pz[r] - s.zVertex, a.vx[r], a.vy[r], a.vz[r], s);
-        dn[r] = !std::isfinite(tt[r]);
+        dn[r] = a.why[r] != 0 || !std::isfinite(tt[r]);
+        open += dn[r] == 0;
     }
-    for (int pass = 0; pass < kMaxAsphereIterations; ++pass) {
-        std::size_t open = 0;
+    // One Newton step of ray r unless it is done: converged (2), or stalled on a non-finite t (1,
+    // which finishAsphere reports as a miss).
+    const auto advance = [&](std::size_t r) {
+        const double step = asphereNewtonStep(a.px[r], a.py[r], a.pz[r] - s.zVertex, a.vx[r], a.vy[r], a.vz[r], tt[r], EvenSag<double>{s});
+        const bool moving = dn[r] == 0;
+        const double next = tt[r] + step;
+        tt[r] = moving ? next : tt[r];
+        const std::uint8_t state = asphereStepConverged(step, next) ? 2 : std::isfinite(next) ? 0 : 1;
+        dn[r] = moving ? state : dn[r];
+    };
+    // Whole-batch passes while many rays iterate; the few that converge slowly or never (a ray that
+    // misses the surface runs all the iterations) then go on alone, so that they do not cost a pass
+    // over the whole batch each. Either way a ray takes exactly the scalar trace's steps.
+    int pass = 0;
+    for (; pass < kMaxAsphereIterations && open > count / 16; ++pass) {
+        open = 0;
 #pragma GCC ivdep
         for (std::size_t r = 0; r < count; ++r) {
-            const double step =
-                asphereNewtonStep(a.px[r], a.py[r], a.pz[r] - s.zVertex, a.vx[r], a.vy[r], a.vz[r], tt[r], EvenSag<double>{s});
-            const bool moving = dn[r] == 0;
-            const double next = tt[r] + step;
-            tt[r] = moving ? next : tt[r];
-            // Converged (2), or stalled on a non-finite t (1, which finishAsphere reports as a miss).
-            const std::uint8_t state = asphereStepConverged(step, next) ? 2 : std::isfinite(next) ? 0 : 1;
-            dn[r] = moving ? state : dn[r];
+            advance(r);
             open += dn[r] == 0;
         }
-        if (open == 0) break;
+    }
+    stragglers.clear();
+    for (std::size_t r = 0; r < count && open > 0; ++r)
+        if (dn[r] == 0) stragglers.push_back(std::uint32_t(r));
+    for (; pass < kMaxAsphereIterations && !stragglers.empty(); ++pass) {
+        std::size_t left = 0;
+        for (std::uint32_t r : stragglers) {
+            advance(r);
+            if (dn[r] == 0) stragglers[left++] = r;
+        }
+        stragglers.resize(left);
     }
 #pragma GCC ivdep
     for (std::size_t r = 0; r < count; ++r) {

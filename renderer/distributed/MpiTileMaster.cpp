@@ -15,6 +15,7 @@
 
 #include "MasterSignalNote.h"
 #include "TileMessages.h"
+#include "render/SplatImage.h"
 
 namespace lenslab {
 
@@ -41,7 +42,8 @@ class TileMaster {
 public:
     TileMaster(const PreparedFrame& frame, const MpiRenderOptions& options,
                const std::function<void(const TileUpdate&, const Image&)>& onTile)
-        : frame_(frame), options_(options), onTile_(onTile), done_(frame.tiles().size(), false) {
+        : frame_(frame), options_(options), onTile_(onTile), done_(frame.tiles().size(), false),
+          splats_(frame.tiles().size()) {
         int size = 1;
         MPI_Comm_size(MPI_COMM_WORLD, &size);
         workers_.resize(std::size_t(size));  // index = rank; rank 0 is this master, never used
@@ -76,6 +78,7 @@ public:
         MasterResult result;
         result.finalize = !anyLost;
         RenderOutput& out = result.output;
+        if (tilesDone_ == int(done_.size())) frame_.addSplats(splats_.sum(), image_);
         out.image = std::move(image_);
         out.stats.setupSeconds = frame_.setupSeconds();
         out.stats.renderSeconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -125,7 +128,12 @@ private:
         if (head.tileIndex >= int(done_.size())) throw std::runtime_error("rank " + std::to_string(rank) + " sent an unknown tile");
         const PixelRect& tile = frame_.tiles()[std::size_t(head.tileIndex)];
         const std::size_t width = std::size_t(tile.x1 - tile.x0), height = std::size_t(tile.y1 - tile.y0);
-        if (message.size() != sizeof head + sizeof(float) * 3 * width * height)
+        const std::size_t pixelBytes = sizeof(float) * 3 * width * height;
+        const PixelRect splatBox{head.splatBox[0], head.splatBox[1], head.splatBox[2], head.splatBox[3]};
+        const std::size_t splatFloats = splatBox.x1 > splatBox.x0 && splatBox.y1 > splatBox.y0
+                                            ? std::size_t(splatBox.x1 - splatBox.x0) * std::size_t(splatBox.y1 - splatBox.y0) * 3
+                                            : 0;
+        if (message.size() != sizeof head + pixelBytes + sizeof(float) * splatFloats)
             throw std::runtime_error("rank " + std::to_string(rank) + " sent a tile of the wrong size");
         if (w.tile == head.tileIndex) w.tile = -1;
         if (done_[std::size_t(head.tileIndex)]) return;  // re-queued and already done by another worker
@@ -134,6 +142,10 @@ private:
         for (std::size_t row = 0; row < height; ++row)
             std::memcpy(&image_.rgb[((std::size_t(tile.y0 - area.y0) + row) * image_.width + std::size_t(tile.x0 - area.x0)) * 3],
                         pixels + row * width * 3, sizeof(float) * 3 * width);
+        std::vector<float> splats(splatFloats);
+        std::memcpy(splats.data(), message.data() + sizeof head + pixelBytes, sizeof(float) * splatFloats);
+        splats_.tileDone(std::size_t(head.tileIndex),
+                         SplatBuffer::fromParts(splatFloats > 0 ? splatBox : PixelRect{}, std::move(splats)));
         done_[std::size_t(head.tileIndex)] = true;
         ++tilesDone_;
         ++w.tilesDone;
@@ -222,6 +234,7 @@ private:
     int tilesDone_ = 0;
     TileCounters counters_;
     Image image_;
+    SplatImage splats_;
 };
 
 }  // namespace

@@ -162,19 +162,33 @@ bool testHookKills(int rank, int tilesRendered) {
 std::vector<unsigned char> renderTileResult(PreparedFrame& frame, int tileIndex) {
     const PixelRect& tile = frame.tiles()[std::size_t(tileIndex)];
     const int width = tile.x1 - tile.x0, height = tile.y1 - tile.y0;
-    std::vector<unsigned char> message(sizeof(mpi::TileResultHeader) + sizeof(float) * 3 * std::size_t(width) * height);
+    const std::size_t pixelBytes = sizeof(float) * 3 * std::size_t(width) * height;
+    std::vector<unsigned char> message(sizeof(mpi::TileResultHeader) + pixelBytes);
     float* pixels = reinterpret_cast<float*>(message.data() + sizeof(mpi::TileResultHeader));
     std::vector<TileCounters> rowCounters(static_cast<std::size_t>(height));
+    std::vector<SplatBuffer> rowSplats(static_cast<std::size_t>(height));
     frame.arena().execute([&] {
         tbb::parallel_for(0, height, [&](int row) {
             const PixelRect rect{tile.x0, tile.y0 + row, tile.x1, tile.y0 + row + 1};
-            frame.renderRect(rect, pixels + std::size_t(row) * width * 3, std::size_t(width) * 3, rowCounters[row]);
+            frame.renderRect(rect, pixels + std::size_t(row) * width * 3, std::size_t(width) * 3, rowCounters[row],
+                             rowSplats[row]);
         });
     });
     TileCounters sum;
     for (const auto& c : rowCounters) sum += c;
+    // The rows' splats added in row order, as a whole-tile render adds them.
+    SplatBuffer splats;
+    for (const auto& s : rowSplats) splats.add(s);
+    message.resize(message.size() + sizeof(float) * splats.rgb().size());
+    std::memcpy(message.data() + sizeof(mpi::TileResultHeader) + pixelBytes, splats.rgb().data(),
+                sizeof(float) * splats.rgb().size());
     mpi::TileResultHeader head;
     head.tileIndex = tileIndex;
+    const PixelRect& box = splats.box();
+    head.splatBox[0] = box.x0;
+    head.splatBox[1] = box.y0;
+    head.splatBox[2] = box.x1;
+    head.splatBox[3] = box.y1;
     head.cameraRays = sum.cameraRays;
     head.blockedCameraRays = sum.blockedCameraRays;
     head.raysTraced = sum.raysTraced;

@@ -16,10 +16,13 @@ enum Tag : int { kHello = 1, kHeartbeat, kRequest, kFailed, kTile = 10, kStop, k
 // mpirun --enable-recovery), so then every rank leaves without it; mpirun still exits with 0.
 enum StopKind : int { kFinalize = 0, kSkipFinalize = 1 };
 
-// Head of a Request; followed by the tile's RGB floats, row-major (none when tileIndex < 0).
+// Head of a Request; followed by the tile's RGB floats, row-major, then its splats' RGB floats over
+// their box (render/SplatBuffer.h: a spectral frame's wavelengths landing in other pixels; an empty
+// box when none), none of either when tileIndex < 0.
 struct TileResultHeader {
     std::int32_t tileIndex = -1;
     std::int32_t reserved = 0;
+    std::int32_t splatBox[4] = {0, 0, 0, 0};  // x0, y0, x1, y1, full-image pixels
     std::uint64_t cameraRays = 0, blockedCameraRays = 0, raysTraced = 0;
 };
 

@@ -89,6 +89,18 @@ TEST_F(MpiRender, ThreeProcessesGiveTheSingleProcessImageBitForBit) {
     EXPECT_NE(mpi.output.find("{\"tilesDone\":48,\"tilesTotal\":48,"), std::string::npos) << mpi.output;
 }
 
+// Through a dispersive lens the frame is spectral; with several wavelengths a sample, samples leave
+// splats in other pixels, other tiles' included, which the workers send with their tiles.
+TEST_F(MpiRender, ThreeProcessesGiveTheSingleProcessSpectralImageBitForBit) {
+    const std::string size = std::string("--spp 2 --width 64 --height 48 --wavelengths-per-sample 3 --lens ") +
+                             LENSLAB_SOURCE_DIR + "/lenses/dgauss-glass.dat";
+    const CommandResult one = single(size, dir_ / "single.exr");
+    ASSERT_EQ(one.exitCode, 0) << one.output;
+    const CommandResult mpi = mpirun("", size, "-o '" + (dir_ / "mpi.exr").string() + "'");
+    ASSERT_EQ(mpi.exitCode, 0) << mpi.output;
+    EXPECT_EQ(readExrRgb(dir_ / "mpi.exr"), readExrRgb(dir_ / "single.exr"));
+}
+
 // Worker rank 2 kills itself (test hook) when handed its second tile; enough tiles that it gets one.
 const std::string kKillHook = " -x LENSLAB_MPI_TEST_KILL_RANK=2 -x LENSLAB_MPI_TEST_KILL_AFTER_TILES=1";
 const std::string kKillSize = "--spp 32 --width 96 --height 72";

@@ -1,6 +1,7 @@
 // Builds the quick report with the real `lenslab report` binary and checks the site: every lens and
-// scene present, every image a valid PNG of its stated size, every link relative and resolving, the
-// tables equal to `lenslab lens --json`, the HTML well formed, and a second build reusing everything.
+// scene present, the slanted-edge comparisons within their tolerance, every image a valid PNG of its
+// stated size, every link relative and resolving, the tables equal to `lenslab lens --json`, the HTML
+// well formed, and a second build reusing everything.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -163,6 +164,18 @@ TEST_F(ReportPage, EveryLensAndSceneAppears) {
         EXPECT_EQ(article.find("distortion.svg\"") != std::string::npos, curves);
     }
     EXPECT_EQ(plots, expected);
+}
+
+TEST_F(ReportPage, TheRenderAgreesWithTheAnalysisThroughTheSlantedEdges) {
+    ASSERT_EQ(first_.status, 0) << first_.out;
+    for (const char* edge : {"dgauss.50mm-0-tangential", "dgauss.50mm-8-tangential", "dgauss.50mm-8-sagittal",
+                             "wide.22mm-0-tangential", "wide.22mm-15-tangential", "wide.22mm-15-sagittal"})
+        EXPECT_NE(html_.find(std::string("src=\"assets/slanted-edge/") + edge + ".svg\""), std::string::npos) << edge;
+    const std::regex difference("half Nyquist is ([0-9.]+)\\.</figcaption>");
+    int captions = 0;
+    for (auto it = std::sregex_iterator(html_.begin(), html_.end(), difference); it != std::sregex_iterator(); ++it, ++captions)
+        EXPECT_LE(std::stod((*it)[1]), 0.05) << it->str();
+    EXPECT_EQ(captions, 6);
 }
 
 TEST_F(ReportPage, EveryImageIsAValidPngOfItsStatedSizeAndEveryLinkIsLocal) {

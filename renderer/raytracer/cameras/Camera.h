@@ -22,6 +22,17 @@ struct CameraSample {
     double wavelengthNm = 0;  // a spectral render's wavelength for this sample (0: none)
 };
 
+// Where a camera ray made at a sample's own (hero) wavelength meets the film at another of the
+// sample's wavelengths, traced back through the lens (docs/spectral.md, "Several wavelengths per
+// sample"). Densities are per unit of ray measure (etendue), so they compare across film points.
+struct FilmLanding {
+    double rasterX = 0, rasterY = 0;
+    double density = 0;   // of the camera making this ray from that film point at that wavelength: 0
+                          // when it cannot (the lens blocks it there, or it leaves the sampled pupil)
+    double response = 0;  // the film's response there per unit radiance and ray measure (the exposure
+                          // time, a shaped stop's transmission): a ray's weight is response / density
+};
+
 class Camera {
 public:
     virtual ~Camera() = default;
@@ -32,6 +43,18 @@ public:
     virtual void generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const {
         for (std::size_t i = 0; i < n; ++i)
             if (!generateRay(samples[i].rasterX, samples[i].rasterY, samples[i].u1, samples[i].u2, out[i])) out[i].weight = 0;
+    }
+    // Samples that carry `perSample` wavelengths each (wavelengthsNm[i * perSample + k]; k = 0 is
+    // the sample's own, as in samples[i].wavelengthNm): rays made at the sample's own wavelength
+    // into out, and landings[i * perSample + k], where the ray meets the film at wavelength k. A
+    // camera without dispersion lands every wavelength on the sample's own film point.
+    virtual void generateSpectralRays(const CameraSample* samples, std::size_t n, const double* wavelengthsNm,
+                                      int perSample, CameraRay* out, FilmLanding* landings) const {
+        (void)wavelengthsNm;
+        generateRays(samples, n, out);
+        for (std::size_t i = 0; i < n; ++i)
+            for (int k = 0; k < perSample; ++k)
+                landings[i * perSample + k] = {samples[i].rasterX, samples[i].rasterY, 1.0, double(out[i].weight)};
     }
     // Whether its rays depend on each sample's wavelength (a lens traced with dispersion): the
     // frame is then rendered spectrally unless told otherwise.

@@ -22,6 +22,17 @@ bool MovingCamera::generateRay(double rasterX, double rasterY, float u1, float u
 
 void MovingCamera::generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const {
     still_->generateRays(samples, n, out);
+    toWorldAtTheirMoments(samples, n, out);
+}
+
+// The landings are film positions and densities, the same in camera space and in the world.
+void MovingCamera::generateSpectralRays(const CameraSample* samples, std::size_t n, const double* wavelengthsNm,
+                                        int perSample, CameraRay* out, FilmLanding* landings) const {
+    still_->generateSpectralRays(samples, n, wavelengthsNm, perSample, out, landings);
+    toWorldAtTheirMoments(samples, n, out);
+}
+
+void MovingCamera::toWorldAtTheirMoments(const CameraSample* samples, std::size_t n, CameraRay* out) const {
     for (std::size_t i = 0; i < n; ++i)
         if (out[i].weight > 0) toWorld(cameraToWorld_.at(samples[i].time), out[i]);
 }

@@ -16,9 +16,13 @@ public:
     // A lone ray carries no moment: it leaves at shutter open.
     bool generateRay(double rasterX, double rasterY, float u1, float u2, CameraRay& out) const override;
     void generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const override;
+    void generateSpectralRays(const CameraSample* samples, std::size_t n, const double* wavelengthsNm, int perSample,
+                              CameraRay* out, FilmLanding* landings) const override;
+    bool spectral() const override { return still_->spectral(); }
     std::map<std::string, std::string> describe() const override;
 
 private:
+    void toWorldAtTheirMoments(const CameraSample* samples, std::size_t n, CameraRay* out) const;
     std::unique_ptr<Camera> still_;
     AnimatedTransform cameraToWorld_;
 };

@@ -17,8 +17,10 @@ namespace {
 
 double cos4(double c) { return (c * c) * (c * c); }
 
-// The wavelengths a spectral camera traces (nm), those of the spectral film.
+// The wavelengths a spectral camera traces (nm), those of the spectral film, and the bands its
+// exit-pupil bounds are measured for: narrower where glasses disperse most.
 constexpr double kSpectralFirstNm = 360, kSpectralLastNm = 830;
+const std::vector<double> kPupilBandEdgesNm = {360, 410, 460, 520, 590, 680, 830};
 
 // A film point's distance from the axis. Film coordinates are millimetres under 10^4: no overflow,
 // and the square root costs a fraction of std::hypot's on every camera ray.
@@ -92,12 +94,18 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         measure.cancel = cancel;
         measure.progress = progress;
         if (params.spectral) {
-            measure.wavelengthsNm = {kSpectralFirstNm, kSpectralLastNm};
             etas_ = tabulateEtas(analysis_.lens, TraceDirection::FilmToScene, kSpectralFirstNm, kSpectralLastNm);
+            etasBack_ = tabulateEtas(analysis_.lens, TraceDirection::SceneToFilm, kSpectralFirstNm, kSpectralLastNm);
             if (!params.aperture.isCircular())
                 for (int k = 0; k < etas_.bands; ++k) bandLenses_.push_back(atWavelength(analysis_.lens, etas_.bandCentreNm(k)));
         }
-        bounds_ = computeExitPupilBounds(analysis_.lens, filmZExact_, step, first, last, measure);
+        if (params.spectral) {
+            spectralBounds_ = computeSpectralExitPupilBounds(analysis_.lens, filmZExact_, step, first, last,
+                                                             kPupilBandEdgesNm, measure);
+            bounds_ = spectralBounds_.at(analysis_.lens.wavelength);
+        } else {
+            bounds_ = computeExitPupilBounds(analysis_.lens, filmZExact_, step, first, last, measure);
+        }
         const double centreWeight = params.simpleWeighting ? exactCentreWeight() : 0;
         weightScaleExact_ = params.simpleWeighting ? (centreWeight > 0 ? 1.0 / centreWeight : 0.0) : params.exposureTime;
     }
@@ -146,7 +154,7 @@ double RealisticCamera::thickShareOfCrop() const {
 
 double RealisticCamera::exactCentreWeight() const {
     // The film centre's region, measured apart when the crop leaves the centre out, or at the lens's
-    // own wavelength when the bounds hold every wavelength's (the exposure stays the RGB film's).
+    // own wavelength alone when the bounds are a spectral band's (the exposure stays the RGB film's).
     const ExitPupilBounds centre = bounds_.firstRadius == 0 && !params_.spectral
                                        ? bounds_
                                        : computeExitPupilBounds(analysis_.lens, filmZExact_, bounds_.radiusStep, 0, 1);
@@ -185,19 +193,20 @@ double RealisticCamera::aimThick(double fx, double fy, float u1, float u2, Ray& 
     return shape * cos4(ray.direction.z) * (M_PI * 0.25 * xp.diameter * xp.diameter) / (dz * dz) * weightScaleThick_;
 }
 
-TraceResult RealisticCamera::traceShaped(const LensSystem& lens, const Ray& ray, double& weight) const {
-    if (params_.aperture.isCircular()) return traceRay(lens, ray, TraceDirection::FilmToScene);
-    // Film to stop (the stop included), the shape where the ray crosses it, then on to the front.
+TraceResult RealisticCamera::traceShaped(const LensSystem& lens, const Ray& ray, TraceDirection direction,
+                                         double& weight) const {
+    if (params_.aperture.isCircular()) return traceRay(lens, ray, direction);
+    // To the stop (the stop included), the shape where the ray crosses it, then on through the rest.
     const int stop = lens.stopIndex;
-    TraceOptions toStop;
-    toStop.begin = stop;
-    const TraceResult atStop = traceRay(lens, ray, TraceDirection::FilmToScene, toStop);
+    const bool fromFilm = direction == TraceDirection::FilmToScene;
+    TraceOptions toStop, beyond;
+    (fromFilm ? toStop.begin : toStop.end) = fromFilm ? stop : stop + 1;
+    (fromFilm ? beyond.end : beyond.begin) = fromFilm ? stop : stop + 1;
+    const TraceResult atStop = traceRay(lens, ray, direction, toStop);
     if (!atStop.ok()) return atStop;
     const double radius = lens.stop().apertureRadius;
     weight *= params_.aperture.weight(atStop.ray.origin.x / radius, atStop.ray.origin.y / radius);
-    TraceOptions toFront;
-    toFront.end = stop;
-    return traceRay(lens, atStop.ray, TraceDirection::FilmToScene, toFront);
+    return traceRay(lens, atStop.ray, direction, beyond);
 }
 
 bool RealisticCamera::finish(const Ray& lensRay, double weight, CameraRay& out) const {
@@ -227,19 +236,25 @@ bool RealisticCamera::generateRay(double rasterX, double rasterY, float u1, floa
 }
 
 void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const {
+    thread_local ExactRayBatch b;
+    makeRays(samples, n, out, b);
+}
+
+void RealisticCamera::makeRays(const CameraSample* samples, std::size_t n, CameraRay* out, ExactRayBatch& b) const {
+    b.sampleOf.clear();
     if (!modes_.usesExact()) {
         Camera::generateRays(samples, n, out);
         return;
     }
     // Thick-lens samples are made one by one; the exact ones together, each stage one loop over
     // them in structure-of-arrays form so that it vectorises.
-    thread_local ExactRayBatch b;
     b.filmX.resize(n);
     b.filmY.resize(n);
     b.u1.resize(n);
     b.u2.resize(n);
     b.sampleOf.resize(n);
     b.bands.resize(n);
+    b.nm.resize(n);
     std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const CameraSample& s = samples[i];
@@ -253,11 +268,19 @@ void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, C
         b.filmY[m] = fy;
         b.u1[m] = s.u1;
         b.u2[m] = s.u2;
-        if (params_.spectral) b.bands[m] = etas_.band(s.wavelengthNm > 0 ? s.wavelengthNm : analysis_.lens.wavelength);
+        if (params_.spectral) {
+            b.nm[m] = s.wavelengthNm > 0 ? s.wavelengthNm : analysis_.lens.wavelength;
+            b.bands[m] = etas_.band(b.nm[m]);
+        }
         b.sampleOf[m++] = i;
     }
+    b.sampleOf.resize(m);
     if (m == 0) return;
-    sampleExitPupils(bounds_, m, b.filmX.data(), b.filmY.data(), b.u1.data(), b.u2.data(), b.pupil);
+    if (params_.spectral)
+        sampleSpectralExitPupils(spectralBounds_, m, b.filmX.data(), b.filmY.data(), b.u1.data(), b.u2.data(), b.nm.data(),
+                                 b.pupil);
+    else
+        sampleExitPupils(bounds_, m, b.filmX.data(), b.filmY.data(), b.u1.data(), b.u2.data(), b.pupil);
     b.rays.resize(m);
     b.weights.resize(m);
     aimExactRays(m, b);
@@ -275,8 +298,10 @@ void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, C
         }
         double weight = b.weights[k];  // a shaped stop is met ray by ray
         const LensSystem& lens = params_.spectral ? bandLenses_[b.bands[k]] : analysis_.lens;
-        const TraceResult r = traceShaped(lens, b.rays.get(k), weight);
+        const TraceResult r = traceShaped(lens, b.rays.get(k), TraceDirection::FilmToScene, weight);
         if (r.ok() && weight > 0) finish(r.ray, weight, o);
+        b.rays.set(k, r.ray);
+        b.rays.blocked[k] = r.ok() && weight > 0 ? BlockReason::None : BlockReason::ClippedByStop;
     }
 }
 
@@ -327,7 +352,7 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
                                                  : "simple (centre = 1)"},
             {"cameraSpaceUnitMm", formatNumber(params_.cameraUnitMm)},
             {"cameraSpaceOrigin", params_.originAtFilm ? "film" : "front vertex"},
-            {"lensWavelengths", params_.spectral ? "each exact ray at its sample's wavelength, 360-830 nm in 1 nm bands"
+            {"lensWavelengths", params_.spectral ? "each exact ray at its sample's wavelengths, 360-830 nm in 1 nm bands"
                                                  : formatNumber(a.lens.wavelength) + " nm"}};
     if (params_.mode == LensMode::Auto) {
         // The prediction behind the split, per radius: the thick lens's worst film error in pixels

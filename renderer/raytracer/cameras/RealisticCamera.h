@@ -70,6 +70,10 @@ public:
                     const std::function<void(double)>& progress = {});
     bool generateRay(double rasterX, double rasterY, float u1, float u2, CameraRay& out) const override;
     void generateRays(const CameraSample* samples, std::size_t n, CameraRay* out) const override;
+    // Each ray made at its sample's own wavelength, then traced back through the lens at the others
+    // (WavelengthLandings.cpp).
+    void generateSpectralRays(const CameraSample* samples, std::size_t n, const double* wavelengthsNm, int perSample,
+                              CameraRay* out, FilmLanding* landings) const override;
     std::map<std::string, std::string> describe() const override;
     bool spectral() const override { return params_.spectral; }
 
@@ -107,14 +111,20 @@ private:
         std::vector<double> filmX, filmY, u1, u2;
         std::vector<std::size_t> sampleOf;  // the caller's index of each exact sample
         std::vector<std::uint16_t> bands;   // spectral: each ray's wavelength band
+        std::vector<double> nm;             // spectral: each ray's wavelength
         PupilSampleBatch pupil;
         RayBatch rays;
         std::vector<double> weights;
     };
     void aimExactRays(std::size_t count, ExactRayBatch& batch) const;
+    // generateRays, leaving the exact samples' batch in b (its rays in lens space, in front of the lens).
+    void makeRays(const CameraSample* samples, std::size_t n, CameraRay* out, ExactRayBatch& b) const;
+    // The landings of the batch's rays that passed, at the sample's wavelengths beyond its own.
+    void landOtherWavelengths(const ExactRayBatch& b, const double* wavelengthsNm, int perSample,
+                              FilmLanding* landings) const;
     // The exact trace through `lens` with the stop's shape applied where the ray crosses the stop;
     // the weight is multiplied by the shape's.
-    TraceResult traceShaped(const LensSystem& lens, const Ray& ray, double& weight) const;
+    TraceResult traceShaped(const LensSystem& lens, const Ray& ray, TraceDirection direction, double& weight) const;
     bool finish(const Ray& lensRay, double weight, CameraRay& out) const;
 
     RealisticParams params_;
@@ -128,8 +138,10 @@ private:
     std::vector<ThickLensFilmError> errors_;
     LensModeMap modes_;
     double thickShare_ = 0;          // auto: thickShareOfCrop() of the allowed bands
-    ExitPupilBounds bounds_;         // for the exact trace's film radii (spectral: every wavelength's)
+    ExitPupilBounds bounds_;         // for the exact trace's film radii (spectral: its own wavelength's band)
+    SpectralExitPupilBounds spectralBounds_;  // spectral: per band of wavelengths
     WavelengthEtas etas_;            // spectral: the lens's index ratios per 1 nm band
+    WavelengthEtas etasBack_;        // the same for tracing from the scene back to the film
     std::vector<LensSystem> bandLenses_;  // spectral with a shaped stop: the lens at each band
     // Exposure time, or 1 / centre weight for simple weighting (each model normalised by its own).
     double weightScaleExact_ = 1, weightScaleThick_ = 1;

@@ -76,6 +76,18 @@ float PixelFilter::Axis::sample(float u, float& weight) const {
     return float((2.0 * x - 1.0) * width);
 }
 
+float PixelFilter::Axis::density(double x, float& weight) const {
+    weight = 0;
+    if (!(std::fabs(x) < width)) return 0;
+    if (uniform) {
+        weight = 1;
+        return float(0.5 / width);
+    }
+    const float t = float(0.5 * (x / width + 1));  // sample()'s position in [0, 1)
+    weight = signedWeight[std::size_t(std::clamp(int(t * float(signedWeight.size())), 0, int(signedWeight.size()) - 1))];
+    return absolute.density(t) * float(0.5 / width);
+}
+
 PixelFilter::PixelFilter(const FilterSpec& spec) : x_(makeAxis(spec, spec.xwidth)), y_(makeAxis(spec, spec.ywidth)) {}
 
 float PixelFilter::sample(float u1, float u2, float& dx, float& dy) const {

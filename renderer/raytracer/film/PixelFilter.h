@@ -18,6 +18,12 @@ public:
     explicit PixelFilter(const FilterSpec& spec);
     // Offsets in pixels for a 2D sample in [0,1)^2; returns the sample's weight (mean 1).
     float sample(float u1, float u2, float& dx, float& dy) const;
+    // The density of sample()'s offset along x (dx, per pixel; 0 beyond the filter) and the factor
+    // of the weight sample() gives there; the same along y. The 2D density is their product.
+    float densityX(double dx, float& weight) const { return x_.density(dx, weight); }
+    float densityY(double dy, float& weight) const { return y_.density(dy, weight); }
+    double radiusX() const { return x_.width; }
+    double radiusY() const { return y_.width; }
     double radius() const;  // the largest offset, pixels
 
     // pbrt-v3's filter value at offset x (pixels) along one axis of half-width `width`.
@@ -31,6 +37,7 @@ private:
         PiecewiseConstant1D absolute;
         std::vector<float> signedWeight;  // sign(f) * integral |f| / integral f, per bin
         float sample(float u, float& weight) const;
+        float density(double x, float& weight) const;
     };
     static Axis makeAxis(const FilterSpec& spec, double width);
     Axis x_, y_;

@@ -12,6 +12,7 @@
 #include "cameras/CameraFactory.h"
 #include "cameras/Shutter.h"
 #include "film/WhiteBalance.h"
+#include "render/HeroWavelengths.h"
 
 namespace lenslab {
 
@@ -25,6 +26,9 @@ constexpr int kCameraBatchRays = 256;  // camera rays made together (a run of pi
 const RenderSettings& checked(const RenderSettings& s) {
     if (s.tileSize < 1 || s.tileSize > 4096) throw SceneError("tile size must lie in [1, 4096] pixels");
     if (s.threads < 0 || s.threads > 1024) throw SceneError("thread count must lie in [0, 1024]");
+    if (s.wavelengthsPerSample < 0 || s.wavelengthsPerSample > kMaxWavelengthsPerSample)
+        throw SceneError("wavelengths per sample must lie in [1, " + std::to_string(kMaxWavelengthsPerSample) +
+                         "] (0: the film's choice)");
     return s;
 }
 
@@ -44,6 +48,21 @@ Vec3f clampLuminance(Vec3f L, double limit) {
 Vec3f clampComponents(Vec3f L, double limit, double scale) {
     const float m = float(scale) * std::max({L.x, L.y, L.z});
     return limit > 0 && m > limit ? float(limit / m) * L : L;
+}
+
+// The white balance the film applies (the identity at 6504 K when it asks for none).
+Rgb3x3 filmWhiteBalance(const FilmSpec& film) {
+    return whiteBalanceMatrix(film.whiteBalanceKelvin > 0 ? film.whiteBalanceKelvin : 6504);
+}
+
+// A pixel's estimate as the film stores it: the exposure scale, then the white balance.
+Vec3f toFilm(Vec3f v, const FilmSpec& film, const Rgb3x3& whiteBalance) {
+    v = float(film.scale) * v;
+    return film.whiteBalanceKelvin > 0 ? applyRgbMatrix(whiteBalance, v) : v;
+}
+
+Vec3f clamped(Vec3f L, const FilmSpec& film) {
+    return clampComponents(clampLuminance(L, film.maxSampleLuminance), film.maxComponentValue, film.scale);
 }
 
 std::string joinLines(const std::vector<std::string>& lines) {
@@ -94,11 +113,30 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     arena_.execute([&] {
         flare_ = makeFlareLayer(*camera_, settings.camera, *geometry_, width_, height_, sensor_, shutter_.moment(0, scene_.transformTimes));
     });
+    const int byFilter = scene_.filter.type == FilterType::Box ? 1 : 3;
+    wavelengths_ = spectral_ ? (settings.wavelengthsPerSample > 0 ? settings.wavelengthsPerSample : byFilter) : 0;
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
+void PreparedFrame::addSplats(const SplatBuffer& splats, Image& image) const {
+    const Rgb3x3 whiteBalance = filmWhiteBalance(scene_.film);
+    const PixelRect& box = splats.box();
+    const std::size_t boxWidth = std::size_t(box.x1 - box.x0);
+    for (int y = std::max(box.y0, area_.y0); y < std::min(box.y1, area_.y1); ++y)
+        for (int x = std::max(box.x0, area_.x0); x < std::min(box.x1, area_.x1); ++x) {
+            const float* s = &splats.rgb()[(std::size_t(y - box.y0) * boxWidth + std::size_t(x - box.x0)) * 3];
+            const Vec3f v = toFilm({s[0], s[1], s[2]}, scene_.film, whiteBalance);
+            float* p = &image.rgb[(std::size_t(y - area_.y0) * std::size_t(image.width) + std::size_t(x - area_.x0)) * 3];
+            // Negative splats (HeroWavelengths.h: a wavelength taken from where it did not land) may
+            // outweigh a pixel; the film clamps at zero as renderRect does.
+            p[0] = std::max(0.0f, p[0] + v.x);
+            p[1] = std::max(0.0f, p[1] + v.y);
+            p[2] = std::max(0.0f, p[2] + v.z);
+        }
+}
+
 bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t rowStride, TileCounters& counters,
-                               const std::atomic<bool>* cancel) const {
+                               SplatBuffer& splats, const std::atomic<bool>* cancel) const {
     _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
     _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
     TileCounters local;
@@ -108,13 +146,19 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
     std::vector<CameraSample> samples(std::size_t(runPixels) * spp_);
     std::vector<CameraRay> rays(samples.size());
     std::vector<float> filterWeights(samples.size());
-    const Rgb3x3 whiteBalance = whiteBalanceMatrix(scene_.film.whiteBalanceKelvin > 0 ? scene_.film.whiteBalanceKelvin : 6504);
-    std::vector<WavelengthSample> wavelengths(spectral_ ? samples.size() : 0);
+    const Rgb3x3 whiteBalance = filmWhiteBalance(scene_.film);
+    // Spectral: each sample's wavelengths (the first its own) and where each lands.
+    const std::size_t spectralSlots = spectral_ ? samples.size() * wavelengths_ : 0;
+    std::vector<WavelengthSample> wavelengths(spectralSlots);
+    std::vector<double> wavelengthsNm(spectralSlots);
+    std::vector<FilmLanding> landings(spectralSlots);
+    SplatBuffer rowSplats;  // a row's, added to `splats` row by row (SplatBuffer.h)
     for (int py = rect.y0; py < rect.y1; ++py) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             counters += local;
             return false;
         }
+        rowSplats.clear();
         float* row = dst + std::size_t(py - rect.y0) * rowStride;
         for (int runStart = rect.x0; runStart < rect.x1; runStart += runPixels) {
             const int runEnd = std::min(rect.x1, runStart + runPixels);
@@ -128,12 +172,24 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                     samples[first + s] = {px + 0.5 + dx, py + 0.5 + dy, u.lensU, u.lensV,
                                           shutter_.moment(u.time, scene_.transformTimes)};
                     if (spectral_) {
-                        wavelengths[first + s] = sensor_.sample(u.wavelength);
-                        samples[first + s].wavelengthNm = wavelengths[first + s].nm;
+                        // The wavelengths lie 1 / n apart in the distribution: the pixel's stratified
+                        // dimension places them within that period, so that its samples' sets together
+                        // fill n x spp strata; which of them the ray is traced at (the hero) is uniform.
+                        const std::size_t slot = (first + s) * wavelengths_;
+                        Pcg32 hero(hashCombine(pixelSeed(settings_.seed, px, py), std::uint64_t(s)), 2);
+                        const float which = std::min(std::floor(hero.uniform() * float(wavelengths_)), float(wavelengths_ - 1));
+                        sensor_.sample((u.wavelength + which) / float(wavelengths_), wavelengths_, &wavelengths[slot]);
+                        for (int k = 0; k < wavelengths_; ++k) wavelengthsNm[slot + k] = wavelengths[slot + k].nm;
+                        samples[first + s].wavelengthNm = wavelengths[slot].nm;
                     }
                 }
             }
-            camera_->generateRays(samples.data(), std::size_t(runEnd - runStart) * spp_, rays.data());
+            const std::size_t runSamples = std::size_t(runEnd - runStart) * spp_;
+            if (spectral_)
+                camera_->generateSpectralRays(samples.data(), runSamples, wavelengthsNm.data(), wavelengths_,
+                                              rays.data(), landings.data());
+            else
+                camera_->generateRays(samples.data(), runSamples, rays.data());
             for (int px = runStart; px < runEnd; ++px) {
                 const std::uint64_t seed = pixelSeed(settings_.seed, px, py);
                 const std::size_t first = std::size_t(px - runStart) * spp_;
@@ -145,13 +201,22 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                         pixel.add(filterWeights[first + s], {});
                         continue;
                     }
-                    Pcg32 rng(hashCombine(seed, std::uint64_t(s)));
-                    const Vec3f L = ray.weight * integrator_->radiance(ray.origin, ray.direction, samples[first + s].time,
-                                                                        rng, local.raysTraced);
-                    pixel.add(filterWeights[first + s],
-                              clampComponents(clampLuminance(spectral_ ? sensor_.toRgb(L, wavelengths[first + s]) : L,
-                                                             scene_.film.maxSampleLuminance),
-                                              scene_.film.maxComponentValue, scene_.film.scale));
+                    const std::uint64_t sampleSeed = hashCombine(seed, std::uint64_t(s));
+                    Pcg32 rng(sampleSeed);
+                    const Vec3f L = integrator_->radiance(ray.origin, ray.direction, samples[first + s].time, rng,
+                                                          local.raysTraced);
+                    if (!spectral_) {
+                        pixel.add(filterWeights[first + s], clamped(ray.weight * L, scene_.film));
+                        continue;
+                    }
+                    const float weight = filterWeights[first + s];
+                    const std::size_t slot = (first + s) * wavelengths_;
+                    // A sample's splats count as one of the target pixel's spp samples; the limits
+                    // of maxsampleluminance and maxcomponentvalue apply to what stays in its own.
+                    const Vec3f own =
+                        heroWavelengthEstimate(sensor_, filter_, area_, px, py, weight, L, &wavelengths[slot],
+                                               &landings[slot], wavelengths_, 1.0f / float(spp_), rowSplats);
+                    pixel.add(weight, clamped(own, scene_.film));
                 }
                 local.cameraRays += spp_;
                 float* out = row + std::size_t(px - rect.x0) * 3;
@@ -161,13 +226,13 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                     const float* f = &flare_.rgb[(std::size_t(py) * width_ + px) * 3];
                     v += Vec3f{f[0], f[1], f[2]};
                 }
-                v = float(scene_.film.scale) * v;
-                if (scene_.film.whiteBalanceKelvin > 0) v = applyRgbMatrix(whiteBalance, v);
+                v = toFilm(v, scene_.film, whiteBalance);
                 out[0] = std::max(0.0f, v.x);
                 out[1] = std::max(0.0f, v.y);
                 out[2] = std::max(0.0f, v.z);
             }
         }
+        splats.add(rowSplats);
     }
     counters += local;
     return true;
@@ -186,8 +251,10 @@ std::map<std::string, std::string> PreparedFrame::metadata() const {
     m["integrator"] = std::string(kIntegrators[int(scene_.integrator.type)]) + " maxdepth " +
                       std::to_string(scene_.integrator.maxDepth);
     m["units"] = "world metres, lens millimetres";
-    m["film"] = spectral_ ? "spectral: a wavelength per sample, RGB radiance to spectrum by Smits (1999), CIE 1931 "
-                            "matching functions (Wyman, Sloan & Shirley 2013 fit), linear Rec. 709"
+    m["film"] = spectral_ ? "spectral: wavelengths per sample " + std::to_string(wavelengths_) +
+                                " (hero-wavelength MIS through the lens), RGB radiance to "
+                                "spectrum by Smits (1999), CIE 1931 matching functions (Wyman, Sloan & Shirley 2013 "
+                                "fit), linear Rec. 709"
                           : "RGB, linear Rec. 709";
     if (!scene_.film.filename.empty()) m["filmFilename"] = scene_.film.filename;
     if (!flare_.description.empty()) m["lensFlare"] = flare_.description;

@@ -22,6 +22,8 @@
 #include "scene/SceneDescription.h"
 #include "geometry/SceneGeometry.h"
 #include "render/FlareLayer.h"
+#include "render/HeroWavelengths.h"
+#include "render/SplatBuffer.h"
 #include "render/TileScheduler.h"
 
 namespace lenslab {
@@ -57,10 +59,16 @@ public:
 
     // Renders the pixels of `rect` (full-image coordinates) into dst: RGB floats, dst[0] is the
     // pixel (rect.x0, rect.y0), rows rowStride floats apart. Safe to call from many threads for
-    // disjoint rects. Stops early (leaving later rows unwritten, returning false) once *cancel
+    // disjoint rects. A spectral frame's samples also leave splats in other pixels, added to
+    // `splats` row by row (before the film's scale and white balance; SplatImage adds them up and
+    // applies those). Stops early (leaving later rows unwritten, returning false) once *cancel
     // turns true.
     bool renderRect(const PixelRect& rect, float* dst, std::size_t rowStride, TileCounters& counters,
-                    const std::atomic<bool>* cancel = nullptr) const;
+                    SplatBuffer& splats, const std::atomic<bool>* cancel = nullptr) const;
+
+    // Adds a frame's splats (every tile's, SplatImage) onto its image, through the film's exposure
+    // scale and white balance as renderRect's pixels.
+    void addSplats(const SplatBuffer& splats, Image& image) const;
 
     bool spectral() const { return spectral_; }
     const FlareStats& flareStats() const { return flare_.stats; }
@@ -80,7 +88,8 @@ private:
     std::unique_ptr<Camera> camera_;
     std::unique_ptr<SceneGeometry> geometry_;
     std::unique_ptr<Integrator> integrator_;
-    bool spectral_ = false;          // a wavelength per sample, the film through SpectralSensor
+    bool spectral_ = false;          // wavelengths per sample, the film through SpectralSensor
+    int wavelengths_ = 0;            // spectral: per sample (RenderSettings::wavelengthsPerSample)
     SpectralSensor sensor_;
     FlareLayer flare_;               // lens flare, added to every pixel; empty: none
     double setupSeconds_ = 0;

@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "render/PreparedFrame.h"
+#include "render/SplatImage.h"
 #include "Render.h"
 
 namespace lenslab {
@@ -24,19 +25,23 @@ RenderOutput renderScene(const RenderSettings& settings, const std::function<voi
 
     const std::vector<PixelRect>& tiles = frame.tiles();
     const PixelRect& area = frame.area();
+    SplatImage splats(tiles.size());
     std::mutex tileMutex;
     TileCounters counters;
     int tilesDone = 0;
     const auto cancelled = [&] { return cancel && cancel->load(std::memory_order_relaxed); };
     const auto renderStart = std::chrono::steady_clock::now();
 
-    const auto renderTile = [&](const PixelRect& tile) {
+    const auto renderTile = [&](std::size_t index) {
+        const PixelRect& tile = tiles[index];
         TileCounters tileCounters;
+        SplatBuffer tileSplats;
         float* dst = &image.rgb[(std::size_t(tile.y0 - area.y0) * image.width + (tile.x0 - area.x0)) * 3];
-        const bool complete = frame.renderRect(tile, dst, std::size_t(image.width) * 3, tileCounters, cancel);
+        const bool complete = frame.renderRect(tile, dst, std::size_t(image.width) * 3, tileCounters, tileSplats, cancel);
         std::lock_guard<std::mutex> lock(tileMutex);
         counters += tileCounters;
         if (!complete) return;
+        splats.tileDone(index, std::move(tileSplats));
         ++tilesDone;
         if (onTile && !cancelled()) {
             const TileUpdate u{tile.x0 - area.x0, tile.y0 - area.y0, tile.x1 - area.x0, tile.y1 - area.y0, tilesDone,
@@ -47,10 +52,11 @@ RenderOutput renderScene(const RenderSettings& settings, const std::function<voi
     frame.arena().execute([&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
             for (std::size_t i = r.begin(); i != r.end(); ++i)
-                if (!cancelled()) renderTile(tiles[i]);
+                if (!cancelled()) renderTile(i);
         });
     });
     if (cancelled()) throw RenderCancelled();
+    frame.addSplats(splats.sum(), image);
 
     out.stats.renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
     out.stats.cameraRays = counters.cameraRays;

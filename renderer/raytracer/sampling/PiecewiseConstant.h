@@ -17,6 +17,7 @@ public:
     // A bin with probability f[bin] / sum(f); pmf receives it.
     std::size_t sampleDiscrete(float u, float& pmf) const;
     float binProbability(std::size_t bin) const;
+    const std::vector<float>& cdf() const { return cdf_; }  // 0, then each bin's end, up to 1
     float density(float x) const;  // pdf of sampleContinuous at x in [0, 1)
 
 private:
