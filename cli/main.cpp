@@ -6,6 +6,7 @@
 
 #include "ArgParser.h"
 #include "Commands.h"
+#include "GlassCatalogFlags.h"
 #include "prescription/LensTable.h"
 #include "prescription/OpticsError.h"
 
@@ -29,6 +30,8 @@ const Subcommand kSubcommands[] = {
 void printUsage(std::ostream& out) {
     out << "usage: lenslab COMMAND [ARGS]   (lenslab COMMAND --help for details)\n\ncommands:\n";
     for (const auto& c : kSubcommands) out << "  " << c.name << std::string(10 - std::strlen(c.name), ' ') << c.summary << "\n";
+    out << "\nevery command: --glass-catalog FILE.agf (repeatable) adds a Zemax glass catalog, searched before the\n"
+           "bundled one; so does every .agf in the folder LENSLAB_GLASS_CATALOGS names\n";
 }
 
 }  // namespace
@@ -42,7 +45,7 @@ int main(int argc, char** argv) {
     for (const auto& c : kSubcommands) {
         if (c.name != std::string(argv[1])) continue;
         try {
-            return c.run(args);
+            return c.run(lenslab::loadGlassCatalogs(args));
         } catch (const lenslab::UsageError& e) {
             std::cerr << "lenslab " << e.what() << "\n";
             return 2;

@@ -10,14 +10,50 @@ namespace {
 
 nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-}  // namespace
+nlohmann::json apertureJson(const SurfaceAperture& a) {
+    return {{"shape", apertureKindName(a.kind)}, {"half_width_x", a.halfWidthX}, {"half_width_y", a.halfWidthY},
+            {"centre_x", a.centreX}, {"centre_y", a.centreY}};
+}
 
-nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
+const char* frameModeName(FrameMode m) {
+    switch (m) {
+        case FrameMode::Basic: return "basic";
+        case FrameMode::DecentreAndReturn: return "decentre and return";
+        case FrameMode::Bend: return "bend";
+        case FrameMode::Reverse: return "reverse";
+    }
+    return "basic";
+}
+
+// The fields added for decentred, tilted, shaped and non-even surfaces: present only where they apply.
+void addSurfaceShape(nlohmann::json& surface, const Surface& s) {
+    if (!s.name.empty()) surface["name"] = s.name;
+    if (s.automaticAperture) surface["automatic_aperture"] = true;
+    if (!s.form.isEvenAsphere()) {
+        surface["kind"] = surfaceKindName(s.form.kind);
+        surface["form_terms"] = std::vector<double>(s.form.terms.begin(), s.form.terms.begin() + s.form.termCount);
+        if (s.form.normalisationRadius > 0) surface["normalisation_radius"] = s.form.normalisationRadius;
+    }
+    if (s.clearShape) surface["clear_aperture"] = apertureJson(*s.clearShape);
+    if (s.obscurationShape) surface["obscuration"] = apertureJson(*s.obscurationShape);
+    if (s.frame)
+        surface["frame"] = {{"decentre", s.frame->decentre},
+                            {"tilt_degrees", s.frame->tiltDegrees},
+                            {"mode", frameModeName(s.frame->mode)},
+                            {"order", s.frame->order == TiltOrder::DecentreThenTilt ? "decentre then tilt" : "tilt then decentre"}};
+}
+
+nlohmann::json designFieldsJson(const LensSystem& lens) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const FieldPoint& p : lens.fields.points) points.push_back({{"x", p.x}, {"y", p.y}, {"weight", p.weight}});
+    return {{"type", fieldTypeName(lens.fields.type)}, {"points", points}};
+}
+
+nlohmann::json surfacesJson(const LensSystem& lens) {
     using nlohmann::json;
-    const FirstOrder& fo = a.firstOrder;
     json surfaces = json::array();
-    for (std::size_t i = 0; i < a.lens.surfaces.size(); ++i) {
-        const Surface& s = a.lens.surfaces[i];
+    for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
+        const Surface& s = lens.surfaces[i];
         const Medium& m = s.mediumAfter;
         json surface = {{"z", s.z},
                         {"radius", s.radius},
@@ -34,20 +70,58 @@ nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
                         {"mirror", s.mirror},
                         {"coating", s.coating.text},
                         {"coating_default", s.coating.isDefault},
-                        {"reflectance", surfaceResponse(a.lens, int(i), true, 1, a.lens.wavelength).reflectance}};
+                        {"reflectance", surfaceResponse(lens, int(i), true, 1, lens.wavelength).reflectance}};
         if (s.obscurationRadius > 0) surface["obscuration_diameter"] = 2 * s.obscurationRadius;
+        addSurfaceShape(surface, s);
         surfaces.push_back(surface);
     }
-    const Chromatic& c = a.chromatic;
-    return {
-        {"name", a.lens.name},
-        {"units", "mm"},
-        {"convention", "origin at the front vertex, +z toward the scene, film at negative z"},
-        {"layout", layoutName(a.lens.layout)},
-        {"format", a.lens.format},
-        {"wavelength_nm", a.lens.wavelength},
-        {"primary_wavelength_nm", a.lens.primaryWavelength},
-        {"dispersive", a.lens.isDispersive()},
+    return surfaces;
+}
+
+// What every lens reports, afocal or not: the prescription and the file's own figures.
+nlohmann::json lensDescriptionJson(const LensSystem& lens) {
+    using nlohmann::json;
+    return {{"name", lens.name},
+            {"units", "mm"},
+            {"convention", "origin at the front vertex, +z toward the scene, film at negative z"},
+            {"layout", layoutName(lens.layout)},
+            {"format", lens.format},
+            {"wavelength_nm", lens.wavelength},
+            {"primary_wavelength_nm", lens.primaryWavelength},
+            {"dispersive", lens.isDispersive()},
+            {"surfaces", surfacesJson(lens)},
+            {"warnings", warningsJson(lens.warnings)},
+            {"rotationally_symmetric", lens.isRotationallySymmetric()},
+            {"design",
+             {{"wavelengths_nm", lens.wavelengths},
+              {"wavelength_weights", lens.wavelengthWeights},
+              {"fields", designFieldsJson(lens)},
+              {"object_distance", finiteOrNull(lens.objectDistance)},
+              {"entrance_pupil_diameter", lens.entrancePupilDiameter ? json(*lens.entrancePupilDiameter) : json(nullptr)},
+              {"f_number", lens.designFNumber ? json(*lens.designFNumber) : json(nullptr)},
+              {"object_numerical_aperture",
+               lens.objectNumericalAperture ? json(*lens.objectNumericalAperture) : json(nullptr)}}}};
+}
+
+}  // namespace
+
+nlohmann::json warningsJson(const std::vector<LensWarning>& warnings) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const LensWarning& w : warnings) list.push_back({{"line", w.line}, {"message", w.message}});
+    return list;
+}
+
+nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
+    using nlohmann::json;
+    json out = lensDescriptionJson(a.lens);
+    out["afocal"] = a.afocal;
+    if (a.afocal) {
+        // Parallel rays leave parallel: no focal points, pupils or focus to report.
+        for (const char* key : {"efl", "efl_front", "back_focal_distance", "front_focal_distance", "fstop"}) out[key] = nullptr;
+        return out;
+    }
+    const FirstOrder& fo = a.firstOrder;
+    out.update(json{
         {"efl", fo.efl},
         {"efl_front", fo.eflFront},
         {"back_focal_distance", fo.backFocalDistance},
@@ -56,6 +130,18 @@ nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
         {"F_prime", {{"z", fo.zFPrime}}},
         {"P", {{"z", fo.zP}}},
         {"P_prime", {{"z", fo.zPPrime}}},
+    });
+    if (!a.incomplete.empty()) {
+        // First order only: the focal lengths at F, d and C, and why there is no aperture or focus.
+        out["incomplete"] = a.incomplete;
+        out["fstop"] = nullptr;
+        out["chromatic"] = {{"efl_F", computeFirstOrder(atWavelength(a.lens, kWavelengthF)).efl},
+                            {"efl_d", computeFirstOrder(atWavelength(a.lens, kWavelengthD)).efl},
+                            {"efl_C", computeFirstOrder(atWavelength(a.lens, kWavelengthC)).efl}};
+        return out;
+    }
+    const Chromatic& c = a.chromatic;
+    out.update(json{
         {"stop", {{"z", a.lens.stop().z}, {"diameter", a.stopDiameter}, {"max_diameter", a.aperture.stopDiameterMax}, {"surface", a.lens.stopIndex}}},
         {"entrance_pupil", {{"z", a.pupils.entrance.z}, {"diameter", a.pupils.entrance.diameter}}},
         {"exit_pupil", {{"z", a.pupils.exit.z}, {"diameter", a.pupils.exit.diameter}}},
@@ -85,8 +171,8 @@ nlohmann::json lensAnalysisJson(const LensAnalysis& a) {
           {"lateral_colour_mm", c.lateral ? json(c.lateral->mm) : json(nullptr)},
           {"lateral_colour_field_deg", c.lateral ? json(c.lateral->fieldDegrees) : json(nullptr)},
           {"lateral_colour_image_height", c.lateral ? json(c.lateral->imageHeight) : json(nullptr)}}},
-        {"surfaces", surfaces},
-    };
+    });
+    return out;
 }
 
 }  // namespace lenslab

@@ -8,4 +8,7 @@ namespace lenslab {
 
 nlohmann::json lensAnalysisJson(const LensAnalysis& analysis);
 
+// A lens's warnings: [{"line": N, "message": "..."}] (line 0: the file as a whole).
+nlohmann::json warningsJson(const std::vector<LensWarning>& warnings);
+
 }  // namespace lenslab

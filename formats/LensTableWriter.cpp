@@ -4,6 +4,7 @@
 
 #include "ExactNumberText.h"
 #include "LineText.h"
+#include "UnwrittenFeatures.h"
 #include "prescription/GlassCatalog.h"
 #include "prescription/NumberText.h"
 
@@ -69,6 +70,7 @@ void refuseWhatATableCannotHold(const LensTable& table, const LensTableRow& row)
 }
 
 void refuseWhatItsHeaderCannotHold(const LensTable& table) {
+    refuseUnwrittenFeatures(table, ".dat");
     for (std::size_t i = 0; i < table.comments.size(); ++i)
         if (const auto problem = lineTextProblem(table.comments[i]))
             refuse(table, 0, "comment " + std::to_string(i + 1) + " with " + *problem);

@@ -15,24 +15,65 @@ void line(std::string& out, const char* label, double v, const char* note = "") 
     out += b;
 }
 
+std::string surfaceTable(const LensSystem& lens) {
+    char b[256];
+    std::string out = "Surfaces\n    #        z (mm)    radius (mm)        N   diameter (mm)  glass\n";
+    for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
+        const Surface& s = lens.surfaces[i];
+        std::string notes = s.mediumAfter.name.empty() ? "" : "  " + s.mediumAfter.name;
+        if (s.isStop) notes += "  stop";
+        if (s.mirror) notes += "  mirror";
+        if (s.conic != 0) notes += "  conic " + formatNumber(s.conic);
+        if (s.isAspheric()) notes += "  asphere";
+        if (s.obscurationRadius > 0) notes += "  obscuration " + formatNumber(2 * s.obscurationRadius) + " mm";
+        if (!s.coating.bare()) notes += "  coat " + s.coating.text + (s.coating.isDefault ? " (default)" : "");
+        if (!s.form.isEvenAsphere()) notes += std::string("  ") + surfaceKindName(s.form.kind);
+        if (s.clearShape) notes += std::string("  ") + apertureKindName(s.clearShape->kind) + " aperture";
+        if (s.frame)
+            notes += "  decentre " + formatNumber(s.frame->decentre[0]) + "," + formatNumber(s.frame->decentre[1]) + "," +
+                     formatNumber(s.frame->decentre[2]) + " mm tilt " + formatNumber(s.frame->tiltDegrees[0]) + "," +
+                     formatNumber(s.frame->tiltDegrees[1]) + "," + formatNumber(s.frame->tiltDegrees[2]) + " deg";
+        std::snprintf(b, sizeof b, "  %3zu  %12.4f  %13.4f  %7.4f  %14.4f", i + 1, s.z, s.radius, s.indexAfter,
+                      2 * s.apertureRadius);
+        out += b + notes + "\n";
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string lensAnalysisText(const LensAnalysis& a) {
     const FirstOrder& fo = a.firstOrder;
     std::string out;
     char b[256];
-    if (a.lens.format == "zmx")
-        std::snprintf(b, sizeof b, "%s  (%zu surfaces, Zemax file)\n", a.lens.name.c_str(), a.lens.surfaces.size());
+    if (a.lens.format == "zmx" || a.lens.format == "seq")
+        std::snprintf(b, sizeof b, "%s  (%zu surfaces, %s file)\n", a.lens.name.c_str(), a.lens.surfaces.size(),
+                      a.lens.format == "zmx" ? "Zemax" : "Code V");
     else
         std::snprintf(b, sizeof b, "%s  (%zu surfaces, %s layout)\n", a.lens.name.c_str(), a.lens.surfaces.size(),
                       layoutName(a.lens.layout));
     out += b;
     for (const auto& c : a.lens.comments) out += "  # " + c + "\n";
+    for (const LensWarning& w : a.lens.warnings)
+        out += "  warning" + (w.line > 0 ? " (line " + std::to_string(w.line) + ")" : std::string()) + ": " + w.message + "\n";
     out += "z in mm: origin at the front vertex, +z toward the scene, film at negative z\n";
     std::snprintf(b, sizeof b, "wavelength %.2f nm%s\n\n", a.lens.wavelength,
                   a.lens.isDispersive() ? "" : " (no dispersion: one index per medium)");
     out += b;
+    if (a.afocal) {
+        out += "Afocal: parallel rays leave parallel (no focal points, f-number or focus)\n";
+        out += surfaceTable(a.lens);
+        return out;
+    }
     out += "First order\n";
+    if (!a.incomplete.empty()) {
+        line(out, "effective focal length", fo.efl);
+        line(out, "back focal distance", fo.backFocalDistance, "rear vertex to F'");
+        line(out, "F'  (rear focal point) z", fo.zFPrime);
+        line(out, "P'  (rear principal) z", fo.zPPrime);
+        out += "\nNo aperture or focus: " + a.incomplete + "\n\n" + surfaceTable(a.lens);
+        return out;
+    }
     line(out, "effective focal length", fo.efl);
     line(out, "back focal distance", fo.backFocalDistance, "rear vertex to F'");
     line(out, "front focal distance", fo.frontFocalDistance, "F to front vertex");
@@ -79,20 +120,7 @@ std::string lensAnalysisText(const LensAnalysis& a) {
     else
         std::snprintf(b, sizeof b, "  %-28s %s\n", "largest field", a.field.source.c_str());
     out += b;
-    out += "\nSurfaces\n    #        z (mm)    radius (mm)        N   diameter (mm)  glass\n";
-    for (std::size_t i = 0; i < a.lens.surfaces.size(); ++i) {
-        const Surface& s = a.lens.surfaces[i];
-        std::string notes = s.mediumAfter.name.empty() ? "" : "  " + s.mediumAfter.name;
-        if (s.isStop) notes += "  stop";
-        if (s.mirror) notes += "  mirror";
-        if (s.conic != 0) notes += "  conic " + formatNumber(s.conic);
-        if (s.isAspheric()) notes += "  asphere";
-        if (s.obscurationRadius > 0) notes += "  obscuration " + formatNumber(2 * s.obscurationRadius) + " mm";
-        if (!s.coating.bare()) notes += "  coat " + s.coating.text + (s.coating.isDefault ? " (default)" : "");
-        std::snprintf(b, sizeof b, "  %3zu  %12.4f  %13.4f  %7.4f  %14.4f", i + 1, s.z, s.radius, s.indexAfter,
-                      2 * s.apertureRadius);
-        out += b + notes + "\n";
-    }
+    out += "\n" + surfaceTable(a.lens);
     return out;
 }
 

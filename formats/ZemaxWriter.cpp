@@ -4,6 +4,7 @@
 
 #include "ExactNumberText.h"
 #include "LineText.h"
+#include "UnwrittenFeatures.h"
 #include "prescription/Wavelength.h"
 
 namespace lenslab {
@@ -82,6 +83,7 @@ std::string wavelengthLines(const LensTable& table) {
 std::string writeZemaxText(const LensTable& table) {
     if (table.layout != TableLayout::GapAfter)
         throw LensTableError(table.name, 0, "a .zmx needs gap-after rows (DISZ is the thickness to the next surface)");
+    refuseUnwrittenFeatures(table, ".zmx");
     std::string out = "VERS 190513 0 0\nMODE SEQ\n" + noteLines(table) + "UNIT MM X W X CM MR CPMM\n";
     if (table.entrancePupilDiameter) out += "ENPD " + exactNumberText(*table.entrancePupilDiameter) + "\n";
     if (table.designFNumber) out += "FNUM " + exactNumberText(*table.designFNumber) + " 0\n";

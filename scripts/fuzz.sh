@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang, ASan + UBSan) in build-fuzz/ and runs each for SECONDS
 # (default 60) on a scratch copy of tests/fuzz/corpus/<target>; new inputs stay in the copy.
-# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   (targets: lens_table trace zemax nanovdb; default all)
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   (targets: lens_table trace zemax codev agf nanovdb; default all)
 # Exits 0 without fuzzing when clang or its libFuzzer runtime is missing; non-zero on a finding,
 # whose reproducer is left in build-fuzz/findings/.
 set -euo pipefail
@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(lens_table trace zemax nanovdb)
+[ ${#targets[@]} -gt 0 ] || targets=(lens_table trace zemax codev agf nanovdb)
 
 if ! command -v clang++ >/dev/null ||
    ! echo 'extern "C" int LLVMFuzzerTestOneInput(const char*, unsigned long) { return 0; }' |

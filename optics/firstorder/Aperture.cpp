@@ -21,17 +21,19 @@ Ray marginalRayFromFPrime(const FirstOrder& fo, double sinTheta) {
 
 // Whether the cone of half-angle theta from F' passes the whole lens (stop at table size). A central
 // obscuration takes out the middle of the cone, not its rim: it sets no f-number.
-bool conePasses(const LensSystem& lens, const FirstOrder& fo, double sinTheta) {
+bool conePasses(const LensSystem& lens, const FirstOrder& fo, double sinTheta, bool stopOnly) {
     TraceOptions options;
     options.ignoreObscurations = true;
+    options.stopApertureOnly = stopOnly;
     return traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options).ok();
 }
 
 // Height at the stop plane of the marginal ray traced from F' through the surfaces behind the stop.
-double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta, bool* blocked) {
+double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta, bool stopOnly, bool* blocked) {
     TraceOptions options;
     options.begin = lens.stopIndex + 1;
     options.ignoreObscurations = true;
+    options.stopApertureOnly = stopOnly;
     const TraceResult r = traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options);
     *blocked = !r.ok();
     return std::fabs(heightAtZ(r.ray, lens.stop().z));
@@ -58,31 +60,32 @@ double narrowestPassingFstop(const LensSystem& lens, const FirstOrder& fo, doubl
 }  // namespace
 
 ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo) {
+    ApertureRange range;
+    range.stopOnly = !conePasses(lens, fo, 1e-9, false) && conePasses(lens, fo, 1e-9, true);
     // Scan outward for the first blocked cone, then bisect; passing cones form [0, theta_max]
     // for real lenses, and the scan guards against an isolated passing band beyond a blocked one.
     constexpr int kScan = 256;
     double lo = 0, hi = 1.0;
     for (int k = 1; k <= kScan; ++k) {
         const double s = static_cast<double>(k) / kScan * 0.999999;
-        if (!conePasses(lens, fo, s)) {
+        if (!conePasses(lens, fo, s, range.stopOnly)) {
             hi = s;
             break;
         }
         lo = s;
     }
-    if (lo == 0 && !conePasses(lens, fo, 1e-9))
+    if (lo == 0 && !conePasses(lens, fo, 1e-9, range.stopOnly))
         throw OpticsError("no ray from the rear focal point passes the lens: check the apertures");
     for (int it = 0; it < 60; ++it) {
         const double mid = 0.5 * (lo + hi);
-        (conePasses(lens, fo, mid) ? lo : hi) = mid;
+        (conePasses(lens, fo, mid, range.stopOnly) ? lo : hi) = mid;
     }
-    ApertureRange range;
     range.fstopMin = 1.0 / (2.0 * lo);
     // A lens slower than kNarrowestFstop at its widest (a micrometre stop, a kilometre focal length) still
     // has that one setting, rather than a range whose ends cross.
     range.fstopMax = std::max(narrowestPassingFstop(lens, fo, lo), range.fstopMin);
     bool blocked = false;
-    range.stopDiameterMax = 2.0 * stopHeight(lens, fo, lo, &blocked);
+    range.stopDiameterMax = 2.0 * stopHeight(lens, fo, lo, range.stopOnly, &blocked);
     return range;
 }
 
@@ -94,7 +97,7 @@ double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const 
                           formatFNumber(range.fstopMin) + " to f/" + formatFNumber(range.fstopMax));
     const double sinTheta = std::min(1.0 / (2.0 * fstop), 1.0 / (2.0 * range.fstopMin));
     bool blocked = false;
-    const double h = stopHeight(lens, fo, sinTheta, &blocked);
+    const double h = stopHeight(lens, fo, sinTheta, range.stopOnly, &blocked);
     if (blocked) throw OpticsError("f/" + formatFNumber(fstop) + ": the marginal ray is blocked behind the stop");
     return std::min(2.0 * h, 2.0 * lens.stop().apertureRadius);
 }
@@ -107,7 +110,7 @@ double fstopForStopDiameter(const LensSystem& lens, const FirstOrder& fo, const 
     for (int it = 0; it < 60; ++it) {
         const double mid = 0.5 * (lo + hi);
         bool blocked = false;
-        (2.0 * stopHeight(lens, fo, mid, &blocked) < diameter ? lo : hi) = mid;
+        (2.0 * stopHeight(lens, fo, mid, range.stopOnly, &blocked) < diameter ? lo : hi) = mid;
     }
     return 1.0 / (2.0 * 0.5 * (lo + hi));
 }

@@ -18,9 +18,13 @@ struct ApertureRange {
     // where its stop closes into the obscuration's shadow (past it no light passes on axis)
     double fstopMax = kNarrowestFstop;
     double stopDiameterMax = 0;   // the stop opening at fstopMin, mm
+    // The cones pass the stop alone: the other apertures block the axis (an off-axis section of a
+    // design used at its off-axis fields), so the stop sets the f-number.
+    bool stopOnly = false;
 };
 
-// Finds the widest cone from F' that passes every surface with the stop at its table diameter.
+// Finds the widest cone from F' that passes every surface with the stop at its table diameter (or,
+// when no cone passes, the stop alone).
 ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo);
 
 // The stop diameter (mm) for a requested f-number: the marginal ray leaving F' at theta =

@@ -2,12 +2,16 @@
 
 #include <cmath>
 
+#include "prescription/AutomaticApertures.h"
 #include "trace/NearAxis.h"
 #include "prescription/OpticsError.h"
 
 namespace lenslab {
 
 FirstOrder computeFirstOrder(const LensSystem& lens) {
+    // No power along the axis (flat surfaces only, or terms from r^4 on): afocal at first order,
+    // whatever rays at a finite height make of the higher terms.
+    if (!std::isfinite(paraxialFocalLength(lens))) throw AfocalError("the lens is afocal: it has no power along its axis");
     const double h = nearAxisHeight(lens);
     // Start the rays beyond the surface caps (a sag never exceeds the aperture radius).
     const double zIn = lens.frontZ() + lens.surfaces.front().apertureRadius + 1.0;
@@ -29,7 +33,7 @@ FirstOrder computeFirstOrder(const LensSystem& lens) {
     fo.backFocalDistance = lens.rearZ() - fo.zFPrime;
     fo.frontFocalDistance = fo.zF - lens.frontZ();
     if (!std::isfinite(fo.efl) || std::fabs(fo.efl) > 1e12)
-        throw OpticsError("the lens is afocal: parallel rays leave parallel");
+        throw AfocalError("the lens is afocal: parallel rays leave parallel");
     return fo;
 }
 

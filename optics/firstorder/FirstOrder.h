@@ -16,7 +16,7 @@ struct FirstOrder {
     double frontFocalDistance = 0;  // F to front vertex
 };
 
-// Throws OpticsError for an afocal system or one a near-axis ray cannot pass.
+// Throws AfocalError for an afocal system, OpticsError for one a near-axis ray cannot pass.
 FirstOrder computeFirstOrder(const LensSystem& lens);
 
 }  // namespace lenslab

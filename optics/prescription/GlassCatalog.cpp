@@ -4,6 +4,8 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <mutex>
+#include <shared_mutex>
 #include <stdexcept>
 #include <string_view>
 #include <tuple>
@@ -91,16 +93,21 @@ DispersionFormula formulaNamed(std::string_view name, std::size_t line) {
     badLine(line, "unknown formula '" + std::string(name) + "'");
 }
 
-GlassNames namesOf(const Medium& glass, std::size_t line) {
+// A glass's names as compared; `prefixes` are its maker's, in preference order (none for a loaded catalog).
+GlassNames namesIn(const Medium& glass, const std::array<std::string_view, 4>& prefixes) {
     GlassNames names;
-    const auto maker = std::find_if(kMakers.begin(), kMakers.end(), [&](const Maker& m) { return m.name == glass.catalog; });
-    if (maker == kMakers.end()) badLine(line, "unknown maker '" + glass.catalog + "'");
-    names.maker = static_cast<std::size_t>(maker - kMakers.begin());
     names.key = nameKey(glass.name);
     const auto [prefix, rest] = splitPrefix(glass.name);
     if (!prefix.empty()) names.base = nameKey(rest);
-    const auto& prefixes = maker->prefixes;
     names.prefixRank = static_cast<std::size_t>(std::find(prefixes.begin(), prefixes.end(), prefix) - prefixes.begin());
+    return names;
+}
+
+GlassNames namesOf(const Medium& glass, std::size_t line) {
+    const auto maker = std::find_if(kMakers.begin(), kMakers.end(), [&](const Maker& m) { return m.name == glass.catalog; });
+    if (maker == kMakers.end()) badLine(line, "unknown maker '" + glass.catalog + "'");
+    GlassNames names = namesIn(glass, maker->prefixes);
+    names.maker = static_cast<std::size_t>(maker - kMakers.begin());
     return names;
 }
 
@@ -136,22 +143,60 @@ const Catalog& catalog() {
     return parsed;
 }
 
-// position[maker]: where the maker comes in the search; preferred catalogs first. A Zemax catalog
-// name names its maker by its start ("SUMITA_AUG2011"); names of no known maker are passed over.
-std::array<std::size_t, kMakers.size()> searchPositions(const std::vector<std::string>& preferredCatalogs) {
-    std::vector<std::size_t> order;
-    auto add = [&](std::size_t maker) {
-        if (std::find(order.begin(), order.end(), maker) == order.end()) order.push_back(maker);
-    };
-    for (const std::string& catalogName : preferredCatalogs) {
-        const std::string key = nameKey(catalogName);
-        for (std::size_t m = 0; m < kMakers.size(); ++m)
-            if (key.compare(0, kMakers[m].name.size(), kMakers[m].name) == 0) add(m);
+// Catalogs loaded at run time (AGF files), in load order: searched before the bundled makers.
+struct LoadedCatalog {
+    std::string name;
+    Catalog glasses;
+};
+struct LoadedCatalogs {
+    std::shared_mutex mutex;
+    std::vector<LoadedCatalog> catalogs;
+};
+LoadedCatalogs& loaded() {
+    static LoadedCatalogs l;
+    return l;
+}
+
+// Where one glass comes from in a search: a loaded catalog or a bundled maker, and its glasses.
+struct Source {
+    std::string name;
+    const Catalog* glasses = nullptr;
+    bool bundled = false;
+    std::size_t maker = 0;  // bundled: index in kMakers
+};
+
+// Every source in search order: preferred catalogs first (a Zemax catalog name names its maker by
+// its start: "SUMITA_AUG2011"; a loaded catalog by its whole name), then the loaded catalogs, then
+// the makers. Names of no known catalog are passed over.
+std::vector<Source> searchOrder(const std::vector<std::string>& preferredCatalogs, const std::vector<LoadedCatalog>& user) {
+    std::vector<Source> all;
+    for (const LoadedCatalog& c : user) all.push_back({c.name, &c.glasses, false, 0});
+    const Catalog& bundled = catalog();
+    for (std::size_t m = 0; m < kMakers.size(); ++m) all.push_back({std::string(kMakers[m].name), &bundled, true, m});
+    std::vector<Source> order;
+    std::vector<bool> taken(all.size(), false);
+    for (const std::string& wanted : preferredCatalogs) {
+        const std::string key = nameKey(wanted);
+        for (std::size_t i = 0; i < all.size(); ++i) {
+            const std::string name = nameKey(all[i].name);
+            const bool named = all[i].bundled ? key.compare(0, name.size(), name) == 0 : key == name;
+            if (named && !taken[i]) {
+                taken[i] = true;
+                order.push_back(all[i]);
+            }
+        }
     }
-    for (std::size_t m = 0; m < kMakers.size(); ++m) add(m);
-    std::array<std::size_t, kMakers.size()> position{};
-    for (std::size_t i = 0; i < order.size(); ++i) position[order[i]] = i;
-    return position;
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (!taken[i]) order.push_back(all[i]);
+    return order;
+}
+
+// The glasses of one source: a loaded catalog's all, a maker's those of the bundled file it made.
+template <class Visit>
+void forEachGlass(const Source& source, Visit visit) {
+    const Catalog& c = *source.glasses;
+    for (std::size_t i = 0; i < c.glasses.size(); ++i)
+        if (!source.bundled || c.names[i].maker == source.maker) visit(c.glasses[i], c.names[i]);
 }
 
 std::size_t editDistance(std::string_view a, std::string_view b) {
@@ -170,15 +215,14 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 }
 
 // The names nearest to a key (with or without their prefix), ties in search order, then by name.
-std::vector<std::string> nearestNames(const std::string& key, const std::array<std::size_t, kMakers.size()>& position) {
-    const Catalog& c = catalog();
+std::vector<std::string> nearestNames(const std::string& key, const std::vector<Source>& order) {
     std::vector<std::tuple<std::size_t, std::size_t, std::string_view>> ranked;
-    for (std::size_t i = 0; i < c.glasses.size(); ++i) {
-        const GlassNames& n = c.names[i];
-        std::size_t distance = editDistance(key, n.key);
-        if (!n.base.empty()) distance = std::min(distance, editDistance(key, n.base));
-        ranked.emplace_back(distance, position[n.maker], c.glasses[i].name);
-    }
+    for (std::size_t position = 0; position < order.size(); ++position)
+        forEachGlass(order[position], [&](const Medium& glass, const GlassNames& n) {
+            std::size_t distance = editDistance(key, n.key);
+            if (!n.base.empty()) distance = std::min(distance, editDistance(key, n.base));
+            ranked.emplace_back(distance, position, glass.name);
+        });
     std::sort(ranked.begin(), ranked.end());
     std::vector<std::string> names;
     for (const auto& entry : ranked) {
@@ -191,36 +235,67 @@ std::vector<std::string> nearestNames(const std::string& key, const std::array<s
 
 }  // namespace
 
-// The makers are searched one after the other, preferred ones first, as a .zmx GCAT line asks.
+// The catalogs are searched one after the other, preferred ones first, as a .zmx GCAT line asks.
 // Within a maker a glass whose whole name matches comes before one that matches without its
 // prefix, so a name that exists as written is taken as written: SF5 is Schott's lead SF5, not
 // N-SF5, because the design was made with that glass's dispersion. Old names therefore map to
 // new ones only where the old glass is not in the data (BK7 -> N-BK7, SK16 -> N-SK16), never
 // new to old (N-SF5 never finds SF5). Then the maker's prefix order (Hikari J- before E-) decides.
 GlassLookup findGlass(const std::string& name, const std::vector<std::string>& preferredCatalogs) {
-    const Catalog& c = catalog();
-    const auto position = searchPositions(preferredCatalogs);
+    LoadedCatalogs& user = loaded();
+    std::shared_lock lock(user.mutex);
+    const std::vector<Source> order = searchOrder(preferredCatalogs, user.catalogs);
     GlassLookup lookup;
-    lookup.searched.resize(kMakers.size());
-    for (std::size_t m = 0; m < kMakers.size(); ++m) lookup.searched[position[m]] = kMakers[m].name;
+    for (const Source& source : order) lookup.searched.push_back(source.name);
 
     if (name.size() > kMaxGlassNameLength) return lookup;
     const std::string key = nameKey(name);
-    std::optional<std::size_t> best;
+    const Medium* best = nullptr;
     std::tuple<std::size_t, int, std::size_t, std::string_view> bestRank;
-    for (std::size_t i = 0; i < c.glasses.size(); ++i) {
-        const GlassNames& n = c.names[i];
-        const int tier = key == n.key ? 0 : (!n.base.empty() && key == n.base) ? 1 : -1;
-        if (tier < 0) continue;
-        const auto rank = std::make_tuple(position[n.maker], tier, n.prefixRank, std::string_view(c.glasses[i].name));
-        if (!best || rank < bestRank) {
-            best = i;
-            bestRank = rank;
-        }
-    }
-    if (best) lookup.glass = c.glasses[*best];
-    else lookup.suggestions = nearestNames(key, position);
+    for (std::size_t position = 0; position < order.size(); ++position)
+        forEachGlass(order[position], [&](const Medium& glass, const GlassNames& n) {
+            const int tier = key == n.key ? 0 : (!n.base.empty() && key == n.base) ? 1 : -1;
+            if (tier < 0) return;
+            const auto rank = std::make_tuple(position, tier, n.prefixRank, std::string_view(glass.name));
+            if (!best || rank < bestRank) {
+                best = &glass;
+                bestRank = rank;
+            }
+        });
+    if (best) lookup.glass = *best;
+    else lookup.suggestions = nearestNames(key, order);
     return lookup;
+}
+
+void addGlassCatalog(const std::string& name, std::vector<Medium> glasses) {
+    LoadedCatalog c;
+    c.name = name;
+    for (Medium& glass : glasses) {
+        glass.catalog = name;
+        c.glasses.names.push_back(namesIn(glass, {}));
+        c.glasses.glasses.push_back(std::move(glass));
+    }
+    LoadedCatalogs& user = loaded();
+    std::unique_lock lock(user.mutex);
+    const std::string key = nameKey(name);
+    const auto same = std::find_if(user.catalogs.begin(), user.catalogs.end(),
+                                   [&](const LoadedCatalog& l) { return nameKey(l.name) == key; });
+    if (same != user.catalogs.end()) *same = std::move(c);
+    else user.catalogs.push_back(std::move(c));
+}
+
+void clearLoadedGlassCatalogs() {
+    LoadedCatalogs& user = loaded();
+    std::unique_lock lock(user.mutex);
+    user.catalogs.clear();
+}
+
+std::vector<std::string> loadedGlassCatalogNames() {
+    LoadedCatalogs& user = loaded();
+    std::shared_lock lock(user.mutex);
+    std::vector<std::string> names;
+    for (const LoadedCatalog& c : user.catalogs) names.push_back(c.name);
+    return names;
 }
 
 std::vector<std::string> glassCatalogNames() {

@@ -24,9 +24,16 @@ constexpr std::size_t kMaxGlassNameLength = 32;
 
 // Finds a catalog glass by name: case, spaces, underscores and hyphens do not matter, and a name
 // without its maker prefix ("BK7", "LAH64", "LAK02") finds the prefixed glass. preferredCatalogs
-// (a .zmx GCAT line: "SCHOTT", "OHARA", "SUMITA_AUG2011", ...) are searched first, then the rest.
+// (a .zmx GCAT line: "SCHOTT", "OHARA", "SUMITA_AUG2011", ...) are searched first, then the
+// catalogs loaded at run time (addGlassCatalog), then the bundled makers.
 GlassLookup findGlass(const std::string& name, const std::vector<std::string>& preferredCatalogs = {});
-std::vector<std::string> glassCatalogNames();  // the makers, in the default search order
+std::vector<std::string> glassCatalogNames();  // the bundled makers, in the default search order
+
+// Adds a catalog loaded at run time (an AGF file's glasses, GlassCatalogFile.h), searched before the
+// bundled makers; a catalog of the same name replaces the one loaded before. Thread-safe.
+void addGlassCatalog(const std::string& name, std::vector<Medium> glasses);
+std::vector<std::string> loadedGlassCatalogNames();  // in load order
+void clearLoadedGlassCatalogs();
 std::size_t glassCount();
 const std::vector<Medium>& catalogGlasses();   // every glass, maker by maker
 

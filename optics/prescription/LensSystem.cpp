@@ -5,7 +5,10 @@
 #include <limits>
 #include <sstream>
 
-#include "prescription/GlassCatalog.h"
+#include "prescription/AutomaticApertures.h"
+#include "prescription/EdgeOverlap.h"
+#include "prescription/FormSag.h"
+#include "prescription/RowMedium.h"
 
 namespace lenslab {
 
@@ -16,68 +19,6 @@ std::string mm(double v) {
     s.precision(6);
     s << v << " mm";
     return s.str();
-}
-
-// Surfaces i and i+1 must not cross anywhere both exist; touching at a rim is allowed. Light
-// travels toward -z (`towardFilm`) or, between an odd number of mirrors, back toward +z.
-void checkNoOverlap(const LensSystem& lens, const std::vector<LensTableRow>& rows, int i, bool towardFilm) {
-    const Surface& a = lens.surfaces[i];
-    const Surface& b = lens.surfaces[i + 1];
-    const double hMax = std::min(a.apertureRadius, b.apertureRadius);
-    const double tolerance = 1e-9 * std::max(1.0, std::fabs(a.z));
-    const double way = towardFilm ? 1.0 : -1.0;
-    constexpr int kSamples = 64;
-    for (int k = 0; k <= kSamples; ++k) {
-        const double h = hMax * k / kSamples;
-        const double zA = a.z - sag(a, h), zB = b.z - sag(b, h);
-        if (way * (zA - zB) < -tolerance) {
-            std::ostringstream msg;
-            msg << "surface overlaps the one before it: at height " << mm(h) << " its sag puts it "
-                << mm(way * (zB - zA)) << (towardFilm ? " in front of" : " behind") << " line " << rows[i].line
-                << "'s surface (gap " << mm(way * (a.z - b.z)) << ")";
-            throw LensTableError(lens.name, rows[i + 1].line, msg.str());
-        }
-    }
-}
-
-std::string joined(const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out;
-}
-
-// The medium on the film side of a row: a catalog glass, a model glass (N and Vd), or the plain index.
-Medium mediumOf(const LensTable& table, const LensTableRow& r) {
-    if (!r.glass.empty()) {
-        const GlassLookup found = findGlass(r.glass, table.catalogs);
-        if (!found.glass) {
-            if (r.glass.size() > kMaxGlassNameLength)
-                throw LensTableError(table.name, r.line, "a glass name of " + std::to_string(r.glass.size()) +
-                                                             " characters: catalog names have at most " +
-                                                             std::to_string(kMaxGlassNameLength));
-            std::string msg = "unknown glass '" + r.glass + "' (searched " + joined(found.searched) + ")";
-            if (!found.suggestions.empty()) msg += "; nearest: " + joined(found.suggestions);
-            msg += "; give its nd and Vd instead to use a model glass";
-            throw LensTableError(table.name, r.line, msg);
-        }
-        // A table's N that disagrees with the glass named beside it is a typo in one of them. A .zmx
-        // file's GLAS line carries whatever nd its writer left there (often a placeholder): its name rules.
-        constexpr double kIndexTolerance = 2e-3;
-        if (table.format != "zmx" && r.index > 1 && std::fabs(r.index - found.glass->nd) > kIndexTolerance) {
-            std::ostringstream msg;
-            msg.precision(6);
-            msg << "N " << r.index << " contradicts " << found.glass->name << " (" << found.glass->catalog
-                << "), whose nd is " << found.glass->nd << ": correct the index or the glass name";
-            throw LensTableError(table.name, r.line, msg.str());
-        }
-        return *found.glass;
-    }
-    if (r.abbe > 0) {
-        if (!(r.index > 1))
-            throw LensTableError(table.name, r.line, "an Abbe number needs a refractive index above 1 beside it");
-        return modelGlass(r.index, r.abbe);
-    }
-    return r.index == 0 || r.index == 1 ? air() : constantIndex(r.index);
 }
 
 void checkSagDefined(const LensTable& table, const LensTableRow& r, const Surface& s) {
@@ -92,6 +33,68 @@ void checkSagDefined(const LensTable& table, const LensTableRow& r, const Surfac
         msg << "clear diameter " << mm(2 * s.apertureRadius) << " reaches past where the conic surface (radius "
             << mm(s.radius) << ", conic " << s.conic << ") is defined: at most " << mm(2 * limit);
     throw LensTableError(table.name, r.line, msg.str());
+}
+
+void checkForm(const LensTable& table, const LensTableRow& r) {
+    const SurfaceForm& f = r.form;
+    if (f.termCount < 0 || f.termCount > kFormTerms)
+        throw LensTableError(table.name, r.line, "a surface form has at most " + std::to_string(kFormTerms) + " terms");
+    const bool q = f.kind == SurfaceKind::Qbfs || f.kind == SurfaceKind::Qcon;
+    if (q && !(f.normalisationRadius > 0 && std::isfinite(f.normalisationRadius)))
+        throw LensTableError(table.name, r.line, std::string(surfaceKindName(f.kind)) +
+                                                     " needs a positive normalisation radius, found " +
+                                                     mm(f.normalisationRadius));
+    if (f.kind == SurfaceKind::Qbfs && r.conic != 0)
+        throw LensTableError(table.name, r.line, "a Qbfs surface departs from a sphere (Forbes 2007): its conic must be 0");
+}
+
+// The surface a row describes, before its medium and its place among the others are known.
+Surface surfaceOf(const LensTableRow& r, double z) {
+    Surface s;
+    s.z = z;
+    s.radius = r.radius;
+    s.curvature = r.radius == 0 ? 0.0 : 1.0 / r.radius;
+    s.conic = r.conic;
+    s.aspheric = r.aspheric;
+    s.form = r.form;
+    s.mirror = r.mirror;
+    s.apertureRadius = 0.5 * r.diameter;
+    s.automaticAperture = r.automaticDiameter;
+    s.obscurationRadius = 0.5 * r.obscurationDiameter;
+    s.clearShape = r.clearShape;
+    s.obscurationShape = r.obscurationShape;
+    // A shaped clear aperture is held by the circle that reaches its far corner.
+    if (r.clearShape) s.apertureRadius = std::max(s.apertureRadius, r.clearShape->reach());
+    s.isStop = r.isStop();
+    s.line = r.line;
+    s.name = r.name;
+    return s;
+}
+
+// Coordinates mirrored across the plane z = z0 (an odd number of mirrors: the image space turned so
+// the light leaves toward the film at -z like every other lens's).
+RigidMotion mirrorAcross(double z0) {
+    RigidMotion m;
+    m.rotation = {1, 0, 0, 0, 1, 0, 0, 0, -1};
+    m.shift = {0, 0, 2 * z0};
+    return m;
+}
+
+// The .seq and .zmx figures the table keeps for the analysis above.
+void copyFileFacts(const LensTable& table, LensSystem& lens) {
+    lens.name = table.name;
+    lens.comments = table.comments;
+    lens.layout = table.layout;
+    lens.format = table.format;
+    lens.wavelength = lens.primaryWavelength = table.primaryWavelength;
+    lens.designFNumber = table.designFNumber;
+    lens.entrancePupilDiameter = table.entrancePupilDiameter;
+    lens.objectNumericalAperture = table.objectNumericalAperture;
+    lens.wavelengths = table.wavelengths;
+    lens.wavelengthWeights = table.wavelengthWeights;
+    lens.fields = table.fields;
+    lens.objectDistance = table.objectDistance;
+    lens.warnings = table.warnings;
 }
 
 // The row's coating, or the default for a real lens: MgF2 on surfaces between air and glass.
@@ -115,22 +118,52 @@ Coating coatingOf(const LensTable& table, const LensTableRow& r, const LensSyste
 }  // namespace
 
 bool Surface::isAspheric() const {
-    return std::any_of(aspheric.begin(), aspheric.end(), [](double a) { return a != 0; });
+    return std::any_of(aspheric.begin(), aspheric.end(), [](double a) { return a != 0; }) || !form.isEvenAsphere();
+}
+
+double Surface::vertexCurvature() const {
+    switch (form.kind) {
+        case SurfaceKind::EvenAsphere: return curvature + 2 * aspheric[0];
+        case SurfaceKind::OddAsphere: return curvature + 2 * form.terms[1];
+        case SurfaceKind::Qcon: return curvature;
+        case SurfaceKind::Toroidal: return curvature + 2 * form.terms[1];  // in the y-z plane
+        case SurfaceKind::Qbfs: {
+            // x (1 - x) phi sum a_m Q_m(x) ~ (r^2 / r_norm^2) sum a_m Q_m(0) near the vertex.
+            double sum = 0, slope = 0;
+            qSum(FormConstants<double>::of(form), 0.0, sum, slope);
+            return curvature + 2 * sum / (form.normalisationRadius * form.normalisationRadius);
+        }
+    }
+    return curvature;
 }
 
 bool LensSystem::isDispersive() const {
     return std::any_of(surfaces.begin(), surfaces.end(), [](const Surface& s) { return lenslab::isDispersive(s.mediumAfter); });
 }
 
+// Mirrors turn the light back along z; so does a motion that turns z around (the mirrored image
+// space of an odd number of mirrors).
 double LensSystem::zDirectionAfter(int i) const {
     double direction = -1;
-    for (int k = 0; k <= i; ++k)
-        if (surfaces[k].mirror) direction = -direction;
+    for (int k = 0; k <= i; ++k) {
+        const Surface& s = surfaces[k];
+        if (s.before.rotation[8] < 0) direction = -direction;
+        if (s.mirror) direction = -direction;
+        if (s.after.rotation[8] < 0) direction = -direction;
+    }
     return direction;
 }
 
 bool LensSystem::hasMirrors() const {
     return std::any_of(surfaces.begin(), surfaces.end(), [](const Surface& s) { return s.mirror; });
+}
+
+bool LensSystem::hasMovedSurfaces() const {
+    return std::any_of(surfaces.begin(), surfaces.end(), [](const Surface& s) { return s.isMoved(); });
+}
+
+bool LensSystem::isRotationallySymmetric() const {
+    return !decentred && std::none_of(surfaces.begin(), surfaces.end(), [](const Surface& s) { return s.needsGeneralStep(); });
 }
 
 double sag(const Surface& s, double h) {
@@ -141,6 +174,16 @@ double sag(const Surface& s, double h) {
     if (u < 0) {
         if (u < -1e-12) return std::numeric_limits<double>::quiet_NaN();
         u = 0;
+    }
+    if (s.form.kind == SurfaceKind::Toroidal) {  // the y-z profile
+        double value, gx, gy, unused;
+        toroidSag(FormConstants<double>::of(s.form), c, 1.0 + s.conic, 0.0, h, value, gx, gy, unused);
+        return value;
+    }
+    if (!s.form.isEvenAsphere()) {
+        double value, g, unused;
+        formSag(FormConstants<double>::of(s.form), c, 1.0 + s.conic, rho, value, g, unused);
+        return value;
     }
     double poly = 0;
     for (int i = kAsphericTerms - 1; i >= 0; --i) poly = poly * rho + s.aspheric[i];
@@ -161,66 +204,76 @@ LensSystem atWavelength(const LensSystem& lens, double wavelength) {
 
 LensSystem buildLensSystem(const LensTable& table) {
     LensSystem lens;
-    lens.name = table.name;
-    lens.comments = table.comments;
-    lens.layout = table.layout;
-    lens.format = table.format;
-    lens.wavelength = lens.primaryWavelength = table.primaryWavelength;
-    lens.designFNumber = table.designFNumber;
-    lens.entrancePupilDiameter = table.entrancePupilDiameter;
+    copyFileFacts(table, lens);
     const auto& rows = table.rows;
     const int n = static_cast<int>(rows.size());
 
     int stops = 0;
     double z = 0;
+    RigidMotion pending;  // coordinate breaks not yet met by a surface
+    std::vector<const LensTableRow*> surfaceRows;  // each surface's row (coordinate breaks have none)
+    Medium medium = air();
     for (int i = 0; i < n; ++i) {
         const LensTableRow& r = rows[i];
         if (table.layout == TableLayout::GapBefore) z -= r.gap;
         else if (i > 0) z -= rows[i - 1].gap;
-        Surface s;
-        s.z = z;
-        s.radius = r.radius;
-        s.curvature = r.radius == 0 ? 0.0 : 1.0 / r.radius;
-        s.conic = r.conic;
-        s.aspheric = r.aspheric;
-        s.mirror = r.mirror;
+        lens.decentred |= r.frame.has_value();
+        if (r.coordinateBreak) {
+            if (r.frame) pending = pending.then(surfaceMotions(*r.frame, z).before);
+            continue;
+        }
+        checkForm(table, r);
+        Surface s = surfaceOf(r, z);
         // A mirror sends the ray back through the medium it came from.
-        s.mediumAfter = r.mirror ? (i == 0 ? air() : lens.surfaces[i - 1].mediumAfter) : mediumOf(table, r);
-        s.apertureRadius = 0.5 * r.diameter;
-        s.obscurationRadius = 0.5 * r.obscurationDiameter;
-        s.isStop = r.isStop();
-        s.line = r.line;
+        s.mediumAfter = r.mirror ? medium : rowMedium(table, r, lens.warnings);
+        medium = s.mediumAfter;
+        s.frame = r.frame;
+        if (r.frame) {
+            const SurfaceMotions m = surfaceMotions(*r.frame, z);
+            s.before = m.before;
+            s.after = m.after;
+        }
+        s.before = pending.then(s.before);
+        pending = RigidMotion{};
         if (s.isStop) {
             if (++stops > 1)
                 throw LensTableError(table.name, r.line,
                                      "a second aperture stop; the first is on line " +
-                                         std::to_string(rows[lens.stopIndex].line));
-            lens.stopIndex = i;
+                                         std::to_string(lens.surfaces[lens.stopIndex].line));
+            lens.stopIndex = static_cast<int>(lens.surfaces.size());
         }
-        if (s.obscurationRadius >= s.apertureRadius)
+        if (!s.automaticAperture && s.obscurationRadius >= s.apertureRadius)
             throw LensTableError(table.name, r.line, "the central obscuration (" + mm(r.obscurationDiameter) +
                                                          ") covers the whole clear diameter (" + mm(r.diameter) + ")");
-        checkSagDefined(table, r, s);
+        if (!s.automaticAperture && !s.clearShape) checkSagDefined(table, r, s);
         lens.surfaces.push_back(s);
+        surfaceRows.push_back(&r);
     }
+    if (lens.surfaces.empty())
+        throw LensTableError(table.name, rows.empty() ? 0 : rows.front().line, "no surfaces: only coordinate breaks");
     if (stops == 0)
         throw LensTableError(table.name, rows.front().line,
-                             table.format == "zmx" ? "no aperture stop: no surface is marked STOP"
-                                                   : "no aperture stop: one row must have radius 0 and N 0");
+                             table.format == "table" ? "no aperture stop: one row must have radius 0 and N 0"
+                                                     : "no aperture stop: no surface is marked STOP");
+    lens.surfaces.back().after = lens.surfaces.back().after.then(pending);
+    double imageZ = z - (table.layout == TableLayout::GapAfter ? rows.back().gap : 0);
     lens = atWavelength(lens, lens.wavelength);
-    for (int i = 0; i < n; ++i) lens.surfaces[i].coating = coatingOf(table, rows[i], lens, i);
+    for (std::size_t i = 0; i < lens.surfaces.size(); ++i)
+        lens.surfaces[i].coating = coatingOf(table, *surfaceRows[i], lens, static_cast<int>(i));
     if (lens.surfaces.back().indexAfter != 1.0)
         throw LensTableError(table.name, rows.back().line,
                              "the last surface must leave the ray in air (N 0 or 1) before the film");
-    bool towardFilm = true;
-    for (int i = 0; i + 1 < n; ++i) {
-        towardFilm ^= lens.surfaces[i].mirror;
-        checkNoOverlap(lens, rows, i, towardFilm);
+    // After an odd number of mirrors the light runs back toward the scene: the image space is
+    // mirrored so that it leaves toward the film at -z.
+    if (lens.zDirectionAfter(static_cast<int>(lens.surfaces.size()) - 1) > 0) {
+        Surface& rear = lens.surfaces.back();
+        rear.after = rear.after.then(mirrorAcross(rear.z));
+        imageZ = 2 * rear.z - imageZ;
     }
-    if (!towardFilm ^ lens.surfaces.back().mirror)
-        throw LensTableError(table.name, rows.back().line,
-                             "after the last surface the light travels back toward the scene: a camera lens needs an "
-                             "even number of mirrors");
+    if (table.imageFrame) lens.imageFrame = surfaceMotions(*table.imageFrame, imageZ).before;
+    lens.decentred |= table.imageFrame.has_value();
+    setAutomaticApertures(lens, table);
+    clipOverlappingEdges(lens);
     return lens;
 }
 

@@ -1,12 +1,16 @@
 #include "prescription/LensTable.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "prescription/CodeVFile.h"
+#include "prescription/SubstitutionFile.h"
+#include "prescription/TextEncoding.h"
 #include "prescription/ZemaxFile.h"
 
 namespace lenslab {
@@ -137,20 +141,35 @@ TableLayout decideLayout(const LensTable& t, std::optional<TableLayout> override
                          "(gap-after) is 0; pass --layout gap-before or gap-after");
 }
 
-// A .zmx file's thickness is always the gap to the next surface.
-LensTable parseZemaxTable(const std::string& bytes, const std::string& name, std::optional<TableLayout> layout) {
+// A .zmx or .seq file's thickness is always the gap to the next surface.
+LensTable parseDesignFile(const std::string& bytes, const std::string& name, std::optional<TableLayout> layout,
+                         bool codeV) {
     if (layout == TableLayout::GapBefore)
-        throw LensTableError(name, 0, "a Zemax file's DISZ is the gap to the next surface: the gap-before layout does not apply");
-    LensTable table = parseZemax(bytes, name);
+        throw LensTableError(name, 0, std::string(codeV ? "a Code V file's thickness" : "a Zemax file's DISZ") +
+                                          " is the gap to the next surface: the gap-before layout does not apply");
+    LensTable table = codeV ? parseCodeV(bytes, name) : parseZemax(bytes, name);
     table.layoutDetected = !layout.has_value();
     return table;
+}
+
+// The text as UTF-8 when it is UTF-16 (design programs on Windows save it), else unchanged; a
+// broken UTF-16 file is left to the reader that names its line.
+std::string decodedForDetection(const std::string& bytes) {
+    if (!startsWithUtf16ByteOrderMark(bytes)) return bytes;
+    try {
+        return toUtf8Text(bytes, "");
+    } catch (const LensTableError&) {
+        return "";
+    }
 }
 
 }  // namespace
 
 LensTable parseLensTable(const std::string& text, const std::string& name,
                          std::optional<TableLayout> layout) {
-    if (looksLikeZemax(text)) return parseZemaxTable(text, name, layout);
+    const std::string decoded = decodedForDetection(text);
+    if (looksLikeCodeV(decoded)) return parseDesignFile(text, name, layout, true);
+    if (looksLikeZemax(text)) return parseDesignFile(text, name, layout, false);
     LensTable table;
     table.name = name;
     std::istringstream in(text);
@@ -191,13 +210,19 @@ LensTable parseLensTable(const std::string& text, const std::string& name,
 
 namespace {
 
+// Whether a name ends with a suffix, letters in any case (US08427765-1.ZMX).
 bool endsWith(const std::string& s, const std::string& suffix) {
-    return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+    if (s.size() <= suffix.size()) return false;
+    for (std::size_t i = 0; i < suffix.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])) != suffix[i]) return false;
+    return true;
 }
 
 }  // namespace
 
-bool isLensFileName(const std::string& name) { return endsWith(name, ".dat") || endsWith(name, ".zmx"); }
+bool isLensFileName(const std::string& name) {
+    return endsWith(name, ".dat") || endsWith(name, ".zmx") || endsWith(name, ".seq");
+}
 
 std::string lensFileStem(const std::string& name) {
     std::string base = name.substr(name.find_last_of('/') + 1);
@@ -211,7 +236,17 @@ LensTable readLensTable(const std::string& path, std::optional<TableLayout> layo
     std::ostringstream ss;
     ss << f.rdbuf();
     if (f.bad()) throw LensTableError(path, 0, "cannot read the file");
-    return parseLensTable(ss.str(), path, layout);
+    LensTable table = parseLensTable(ss.str(), path, layout);
+    // A substitution table beside the file (ray-optics' NAME.smx) is the file's own.
+    if (const auto smx = substitutionFileFor(path)) {
+        std::ifstream s(*smx, std::ios::binary);
+        std::ostringstream text;
+        text << s.rdbuf();
+        if (!s) throw LensTableError(*smx, 0, "cannot read the file");
+        const auto substitutes = parseSubstitutionFile(text.str(), *smx);
+        table.substitutes.insert(table.substitutes.end(), substitutes.begin(), substitutes.end());
+    }
+    return table;
 }
 
 }  // namespace lenslab

@@ -2,10 +2,17 @@
 // The lens table as written in a .dat file, before any geometry is derived from it.
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "prescription/SurfaceAperture.h"
+#include "prescription/DesignFields.h"
+#include "prescription/FrameChange.h"
+#include "prescription/Medium.h"
+#include "prescription/SurfaceForm.h"
 
 namespace lenslab {
 
@@ -45,15 +52,41 @@ struct LensTableRow {
     // A real prescription's medium on the film side: a catalog glass name, or an Abbe number Vd that
     // makes (index, abbe) a model glass. Neither: the index holds at every wavelength.
     std::string glass;
+    std::string glassCatalog;  // the catalog the row names with its glass (Code V's N-BK7_SCHOTT), if any
     double abbe = 0;
     double conic = 0;                  // conic constant k (0 sphere, -1 paraboloid)
     AsphericCoefficients aspheric{};   // even-asphere terms, all 0 for a conic or sphere
     bool mirror = false;               // reflects instead of refracting
     double obscurationDiameter = 0;    // central obscuration (mm); rays inside it are blocked
+    SurfaceForm form;                  // odd and Q-type aspheres; EvenAsphere: `aspheric` above
+    std::optional<SurfaceAperture> clearShape;        // a clear aperture other than `diameter`'s circle
+    std::optional<SurfaceAperture> obscurationShape;  // an obscuration other than a central circle
+    std::optional<FrameChange> frame;  // this surface's decentre and tilt
+    // A Zemax coordinate break: no surface, only `frame` (Basic) and `gap` (along the new axis).
+    bool coordinateBreak = false;
+    // The file gives no clear aperture: one is derived from its aperture and fields at build time.
+    bool automaticDiameter = false;
+    std::string name;                  // the file's label for the surface (Code V SLB, Zemax COMM)
     // The coating as written (prescription/Coating.h); empty: the file says nothing, and
     // buildLensSystem applies the default (a real lens's air-glass surfaces are coated).
     std::string coating;
     bool isStop() const { return stop; }
+};
+
+// Something the reader or builder let through that the designer should look at: the lens still
+// reads (a moulded glass taken as its base glass, edges overlapping at the stated diameters).
+struct LensWarning {
+    int line = 0;          // in the prescription; 0: the file as a whole
+    std::string message;   // names the surfaces, glasses and heights concerned
+};
+
+// A file-level glass substitution (ray-optics' .smx beside a prescription, Code V's private
+// catalog): the name as the prescription writes it, and what to use for it.
+struct GlassSubstitute {
+    std::string name;
+    std::string glass, catalog;    // a catalog glass to use instead (catalog may be empty), or
+    std::optional<Medium> medium;  // a medium given outright (a constant index, a table of indices)
+    std::string source;            // "file.smx", "file.seq:12": where the substitution is stated
 };
 
 struct LensTable {
@@ -62,12 +95,20 @@ struct LensTable {
     std::vector<LensTableRow> rows;
     TableLayout layout = TableLayout::GapBefore;
     bool layoutDetected = true;  // false when an explicit override decided it
-    std::string format = "table";            // "table" (.dat) or "zmx"
+    std::string format = "table";            // "table" (.dat), "zmx" or "seq" (Code V)
     double primaryWavelength = kWavelengthD; // nm: the file's primary wavelength, else the d line
     std::vector<double> wavelengths;         // nm, as the file lists them (may be empty)
     std::vector<std::string> catalogs;       // glass catalogs the file names (.zmx GCAT), searched first
-    std::optional<double> designFNumber;     // .zmx FNUM
-    std::optional<double> entrancePupilDiameter;  // .zmx ENPD, mm
+    std::optional<double> designFNumber;     // .zmx FNUM, .seq FNO
+    std::optional<double> entrancePupilDiameter;  // .zmx ENPD, .seq EPD, mm
+    std::optional<double> objectNumericalAperture;  // .zmx OBNA, .seq NAO
+    std::vector<double> wavelengthWeights;   // parallel to wavelengths (1 where the file gives none)
+    DesignFields fields;                     // the file's own field list
+    // Distance from the first surface back to the object (the object surface's thickness), mm.
+    double objectDistance = std::numeric_limits<double>::infinity();
+    std::optional<FrameChange> imageFrame;   // the image surface's own decentre and tilt
+    std::vector<GlassSubstitute> substitutes;  // searched before the catalogs
+    std::vector<LensWarning> warnings;         // from reading; building adds its own
 };
 
 // Every problem with a table: the message names the file, the line and the problem.
@@ -88,8 +129,8 @@ private:
 LensTable parseLensTable(const std::string& text, const std::string& name,
                          std::optional<TableLayout> layout = std::nullopt);
 
-// Whether a file name is a lens prescription lenslab reads (".dat" tables, ".zmx" Zemax files), and
-// its name without that extension ("lenses/dgauss.50mm.dat" -> "dgauss.50mm").
+// Whether a file name is a lens prescription lenslab reads (".dat" tables, ".zmx" Zemax files, ".seq"
+// Code V files), and its name without that extension ("lenses/dgauss.50mm.dat" -> "dgauss.50mm").
 bool isLensFileName(const std::string& name);
 std::string lensFileStem(const std::string& name);
 

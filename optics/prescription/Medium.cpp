@@ -12,6 +12,30 @@ namespace {
 
 double squaredMicrometres(double wavelengthNm) { return (wavelengthNm * 1e-3) * (wavelengthNm * 1e-3); }
 
+// A natural cubic spline through the table (nm ascending), held at its ends.
+double tableIndex(const std::vector<std::array<double, 2>>& t, double nm) {
+    const std::size_t n = t.size();
+    if (nm <= t.front()[0]) return t.front()[1];
+    if (nm >= t.back()[0]) return t.back()[1];
+    // Second derivatives by the tridiagonal solve (zero at both ends).
+    std::vector<double> second(n, 0.0), u(n, 0.0);
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        const double h0 = t[i][0] - t[i - 1][0], h1 = t[i + 1][0] - t[i][0];
+        const double sig = h0 / (h0 + h1);
+        const double p = sig * second[i - 1] + 2;
+        second[i] = (sig - 1) / p;
+        const double slopes = (t[i + 1][1] - t[i][1]) / h1 - (t[i][1] - t[i - 1][1]) / h0;
+        u[i] = (6 * slopes / (h0 + h1) - sig * u[i - 1]) / p;
+    }
+    for (std::size_t k = n - 1; k-- > 1;) second[k] = second[k] * second[k + 1] + u[k];
+    std::size_t hi = 1;
+    while (t[hi][0] < nm) ++hi;
+    const std::size_t lo = hi - 1;
+    const double h = t[hi][0] - t[lo][0];
+    const double a = (t[hi][0] - nm) / h, b = 1 - a;
+    return a * t[lo][1] + b * t[hi][1] + ((a * a * a - a) * second[lo] + (b * b * b - b) * second[hi]) * h * h / 6;
+}
+
 // The formula as written, anywhere; NaN where it has no real value.
 double formulaIndex(const Medium& m, double wavelengthNm) {
     const auto& c = m.coefficients;
@@ -27,8 +51,21 @@ double formulaIndex(const Medium& m, double wavelengthNm) {
     case DispersionFormula::SchottPolynomial: {
         const double y = 1 / x;
         const double inverse = y * (c[3] + y * (c[4] + y * (c[5] + y * (c[6] + y * (c[7] + y * c[8])))));
-        return std::sqrt(c[0] + x * (c[1] + x * c[2]) + inverse);
+        return std::sqrt(c[0] + x * (c[1] + x * (c[2] + x * c[9])) + inverse);
     }
+    case DispersionFormula::Herzberger: {
+        const double m = 1 / (x - 0.028);
+        return c[0] + m * (c[1] + m * c[2]) + x * (c[3] + x * (c[4] + x * c[5]));
+    }
+    case DispersionFormula::Conrady: {
+        const double l = std::sqrt(x);
+        return c[0] + c[1] / l + c[2] / std::pow(l, 3.5);
+    }
+    case DispersionFormula::SellmeierTwo:
+        return std::sqrt(1 + c[0] + c[1] * x / (x - c[2] * c[2]) + c[3] / (x - c[4] * c[4]));
+    case DispersionFormula::HandbookOne: return std::sqrt(c[0] + c[1] / (x - c[2]) - c[3] * x);
+    case DispersionFormula::HandbookTwo: return std::sqrt(c[0] + c[1] * x / (x - c[2]) - c[3] * x);
+    case DispersionFormula::Tabulated: return tableIndex(m.table, wavelengthNm);
     }
     return c[0];
 }
@@ -105,7 +142,32 @@ double refractiveIndex(const Medium& m, double wavelengthNm) {
     return m.nd;
 }
 
-bool isDispersive(const Medium& m) { return m.formula != DispersionFormula::Constant; }
+Medium tabulatedMedium(const std::string& name, std::vector<std::array<double, 2>> pairs) {
+    if (pairs.size() < 2) throw std::invalid_argument(name + ": a table of indices needs at least two wavelengths");
+    for (const auto& p : pairs)
+        if (!(std::isfinite(p[0]) && p[0] > 0 && std::isfinite(p[1]) && p[1] > 0))
+            throw std::invalid_argument(name + ": wavelength " + formatNumber(p[0]) + " nm, index " + formatNumber(p[1]) +
+                                        " is not a finite positive pair");
+    std::sort(pairs.begin(), pairs.end());
+    for (std::size_t i = 1; i < pairs.size(); ++i)
+        if (pairs[i][0] == pairs[i - 1][0])
+            throw std::invalid_argument(name + ": wavelength " + formatNumber(pairs[i][0]) + " nm is listed twice");
+    Medium m;
+    m.name = name;
+    m.formula = DispersionFormula::Tabulated;
+    m.table = std::move(pairs);
+    m.minNm = m.table.front()[0];
+    m.maxNm = m.table.back()[0];
+    m.nd = refractiveIndex(m, kWavelengthD);
+    m.vd = abbeNumber(m);
+    return m;
+}
+
+bool isDispersive(const Medium& m) {
+    if (m.formula == DispersionFormula::Tabulated)
+        return std::any_of(m.table.begin(), m.table.end(), [&](const auto& p) { return p[1] != m.table.front()[1]; });
+    return m.formula != DispersionFormula::Constant;
+}
 
 double abbeNumber(const Medium& m) {
     if (!isDispersive(m)) return 0;

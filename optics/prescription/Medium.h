@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace lenslab {
 
@@ -16,8 +17,17 @@ enum class DispersionFormula : std::uint8_t {
     // Schott, Ohara, CDGM and Hikari's crystals; also the model glass (one term, A = 0).
     Sellmeier,
     // The Schott polynomial and the makers' extended forms of it (Hoya, Sumita, Hikari, Ohara,
-    // CDGM): n^2 = a0 + a1 L^2 + a2 L^4 + a3 L^-2 + a4 L^-4 + ... + a8 L^-12.
+    // CDGM; Code V's Laurent): n^2 = a0 + a1 L^2 + a2 L^4 + a9 L^6 + a3 L^-2 + a4 L^-4 + ... + a8 L^-12.
     SchottPolynomial,
+    // The rest of Zemax's catalog formulas (GlassCatalogFile.h gives their numbers):
+    Herzberger,      // n = A + B M + C M^2 + D L^2 + E L^4 + F L^6, M = 1 / (L^2 - 0.028)
+    Conrady,         // n = n0 + A / L + B / L^3.5
+    SellmeierTwo,    // n^2 = 1 + A + B1 L^2 / (L^2 - l1^2) + B2 / (L^2 - l2^2)
+    HandbookOne,     // n^2 = A + B / (L^2 - C) - D L^2
+    HandbookTwo,     // n^2 = A + B L^2 / (L^2 - C) - D L^2
+    // Measured indices at listed wavelengths (Code V private catalogs, tables of a maker's data
+    // sheet), interpolated by a natural cubic spline in the wavelength; held at the ends.
+    Tabulated,
 };
 
 struct Medium {
@@ -27,6 +37,7 @@ struct Medium {
     std::array<double, 12> coefficients{};  // formula-specific (Constant: coefficients[0] = the index)
     double minNm = 0, maxNm = 0;            // the data's valid range (0, 0: any)
     double nd = 1, vd = 0;                  // the maker's published nd, Vd (vd 0: no dispersion)
+    std::vector<std::array<double, 2>> table;  // Tabulated: (nm, index), nm ascending
 };
 
 Medium air();
@@ -37,6 +48,10 @@ Medium constantIndex(double n);
 // one-term Sellmeier with n(d) = nd and nF - nC = (nd - 1) / Vd exactly (ModelGlass.cpp).
 // Throws std::invalid_argument unless nd > 1 and Vd > 0, both finite.
 Medium modelGlass(double nd, double vd);
+
+// A tabulated medium: (nm, index) pairs in any order, at least two, all finite and positive, no
+// wavelength twice. Throws std::invalid_argument otherwise.
+Medium tabulatedMedium(const std::string& name, std::vector<std::array<double, 2>> pairs);
 
 // The index at a wavelength in nm. Outside the data's valid range the formula is extrapolated,
 // as lens design programs do; where that leaves the formula's domain (past a Sellmeier pole, or

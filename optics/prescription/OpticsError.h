@@ -17,4 +17,10 @@ public:
     using OpticsError::OpticsError;
 };
 
+// The lens is afocal (parallel rays leave parallel): it has no focal points, no f-number, no focus.
+class AfocalError : public OpticsError {
+public:
+    using OpticsError::OpticsError;
+};
+
 }  // namespace lenslab

@@ -1,8 +1,10 @@
 #include "prescription/ZemaxFile.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -16,7 +18,7 @@ namespace lenslab {
 namespace {
 
 const char* const kSupported =
-    "lenslab reads sequential, rotationally symmetric systems of STANDARD and EVENASPH surfaces";
+    "lenslab reads sequential systems of STANDARD, EVENASPH, ODDASPH, QTYPE/QED_TYPE, TOROIDAL and COORDBRK surfaces";
 
 // Zemax writes every one of its 24 wavelength slots; the unused ones hold this default.
 constexpr int kWavelengthSlots = 24;
@@ -51,10 +53,22 @@ struct RawSurface {
     double apertureRadius = 0;     // CLAP/FLAP maximum radius; 0: none
     double obscurationRadius = 0;  // OBSC, or CLAP's minimum radius
     int stopLine = 0;
+    std::vector<Term> extra;       // XDAT lines (Q-type data)
+    std::optional<SurfaceAperture> clearShape, obscurationShape;  // SQAP/ELAP, SQOB/ELOB (file units)
+    double apertureCentreX = 0, apertureCentreY = 0;            // OBDC
+    std::optional<FrameChange> tilt;  // SCBD: this surface's own decentre and tilt
+    std::string comment;              // COMM
     std::string coating;           // COAT, as written
 };
 
 struct Wavelength { double micrometres; double weight; int line; };
+
+struct Fields {
+    int type = 0;
+    int count = -1;        // FTYP's field count; -1: no FTYP
+    int wavelengths = -1;  // FTYP's wavelength count
+    std::vector<double> x, y, weights;
+};
 
 struct Reader {
     std::string name;
@@ -63,7 +77,8 @@ struct Reader {
     std::vector<std::string> notes;
     std::vector<Wavelength> wavelengths;
     int primarySlot = 1, primaryLine = 0;
-    double enpd = 0, fnum = 0;
+    double enpd = 0, fnum = 0, obna = 0;
+    Fields fields;
     std::vector<std::string> catalogs;
     std::vector<RawSurface> surfaces;
     int stopLine = 0;
@@ -133,6 +148,23 @@ void readNote(Reader& r, const Line& l) {
 
 void readEnpd(Reader& r, const Line& l) { r.enpd = r.number(l, 0); }
 void readFnum(Reader& r, const Line& l) { r.fnum = r.number(l, 0); }
+void readObna(Reader& r, const Line& l) { r.obna = r.number(l, 0); }
+
+// FTYP type ? fields wavelengths ...: type 0 angle, 1 object height, 2 paraxial and 3 real image height.
+void readFtyp(Reader& r, const Line& l) {
+    r.fields.type = r.integer(l, 0);
+    if (r.fields.type < 0 || r.fields.type > 3)
+        r.fail(l.number, "FTYP " + l.fields[0] + ": lenslab reads field types 0 to 3 (angle, object height, paraxial "
+                                                 "and real image height)");
+    if (l.fields.size() > 2) r.fields.count = r.integer(l, 2);
+    if (l.fields.size() > 3) r.fields.wavelengths = r.integer(l, 3);
+}
+
+void readFieldValues(Reader& r, const Line& l) {
+    std::vector<double> v;
+    for (std::size_t i = 0; i < l.fields.size(); ++i) v.push_back(r.number(l, i));
+    (l.keyword == "XFLN" ? r.fields.x : l.keyword == "YFLN" ? r.fields.y : r.fields.weights) = v;
+}
 void readGcat(Reader& r, const Line& l) { r.catalogs.insert(r.catalogs.end(), l.fields.begin(), l.fields.end()); }
 
 // WAVM slot micrometres weight
@@ -164,17 +196,14 @@ void readSurf(Reader& r, const Line& l) {
 // ---- surface lines -----------------------------------------------------------------------------
 
 void readType(Reader& r, const Line& l) {
-    const std::string& type = r.field(l, 0);
-    if (type == "COORDBRK")
-        r.fail(l.number, "coordinate breaks (TYPE COORDBRK: tilts and decenters) are not supported; " +
-                             std::string(kSupported) + " on one axis");
+    std::string type = r.field(l, 0);
     if (type.rfind("GRIN", 0) == 0)
         r.fail(l.number, "gradient-index surfaces (TYPE " + type + ") are not supported; " + kSupported +
                              " with homogeneous glass");
-    if (type == "ODDASPHE")
-        r.fail(l.number, "odd aspheres (TYPE ODDASPHE) are not supported; " + std::string(kSupported) +
-                             " (even aspheres: r^2 .. r^16)");
-    if (type != "STANDARD" && type != "EVENASPH")
+    if (type == "ODDASPHE") type = "ODDASPH";
+    if (type == "QTYPE") type = "QED_TYPE";
+    if (type != "STANDARD" && type != "EVENASPH" && type != "ODDASPH" && type != "QED_TYPE" && type != "COORDBRK" &&
+        type != "TOROIDAL")
         r.fail(l.number, "surface type " + type + " is not supported; " + kSupported);
     r.surface(l).type = type;
 }
@@ -195,6 +224,8 @@ void readDisz(Reader& r, const Line& l) {
 void readConi(Reader& r, const Line& l) { r.surface(l).conic = r.number(l, 0); }
 
 void readParm(Reader& r, const Line& l) { r.surface(l).parms.push_back({r.integer(l, 0), r.number(l, 1), l.number}); }
+void readXdat(Reader& r, const Line& l) { r.surface(l).extra.push_back({r.integer(l, 0), r.number(l, 1), l.number}); }
+void readComm(Reader& r, const Line& l) { r.surface(l).comment = trimmed(l.rest); }
 
 // GLAS name solve pickup nd vd ...: solve 1 makes (nd, vd) a model glass, as does the name ___BLANK
 // (Zemax's model glass, also when picked up, solve 2); otherwise the name is a catalog glass and nd
@@ -257,33 +288,64 @@ void readObsc(Reader& r, const Line& l) {
     if (s.obscurationRadius < 0) r.fail(l.number, "OBSC radius must not be negative, found " + l.fields[1]);
 }
 
-// Lines that move a surface or its aperture off the axis: refused unless every value is 0.
-void refuseIfNonZero(Reader& r, const Line& l, std::size_t firstValue, const std::string& what) {
+// The old form of surface tilts (DECX, DECY, TILT): refused unless every value is 0.
+void readDecenterOrTilt(Reader& r, const Line& l) {
     r.surface(l);
-    for (std::size_t i = firstValue; i < l.fields.size(); ++i)
+    for (std::size_t i = 0; i < l.fields.size(); ++i)
         if (r.number(l, i) != 0)
-            r.fail(l.number, what + " (" + l.keyword + ") are not supported; " + kSupported + " on one axis");
+            r.fail(l.number, "tilts and decenters in the old form (" + l.keyword +
+                                 ") are not supported; give them as SCBD or coordinate breaks (COORDBRK)");
 }
 
-void readDecenterOrTilt(Reader& r, const Line& l) { refuseIfNonZero(r, l, 0, "tilts and decenters"); }
-// SCBD flag order decenters... tilts...
-void readScbd(Reader& r, const Line& l) { refuseIfNonZero(r, l, 2, "surface tilts and decenters"); }
-void readObdc(Reader& r, const Line& l) { refuseIfNonZero(r, l, 0, "decentered apertures"); }
+// SCBD 1 order ? dx dy tiltx tilty tiltz: the surface's own decentre and tilt, before it (the
+// coordinates return after it). Other SCBD lines (the after-surface data) must be all zero.
+void readScbd(Reader& r, const Line& l) {
+    RawSurface& s = r.surface(l);
+    const int which = r.integer(l, 0);
+    std::array<double, 5> v{};
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = l.fields.size() > 3 + i ? r.number(l, 3 + i) : 0;
+    if (which != 1) {
+        for (double x : v)
+            if (x != 0) r.fail(l.number, "SCBD " + l.fields[0] + ": only the before-surface tilt and decentre (SCBD 1) is read");
+        return;
+    }
+    FrameChange f;
+    f.decentre = {v[0], v[1], 0};
+    f.tiltDegrees = {v[2], v[3], v[4]};
+    f.mode = FrameMode::DecentreAndReturn;
+    f.order = l.fields.size() > 1 && r.integer(l, 1) != 0 ? TiltOrder::TiltThenDecentre : TiltOrder::DecentreThenTilt;
+    if (!f.isIdentity()) s.tilt = f;
+}
+
+// OBDC x y: the aperture's decentre in the surface's plane.
+void readObdc(Reader& r, const Line& l) {
+    RawSurface& s = r.surface(l);
+    s.apertureCentreX = r.number(l, 0);
+    s.apertureCentreY = l.fields.size() > 1 ? r.number(l, 1) : 0;
+}
 
 void refuseGrin(Reader& r, const Line& l) {
     r.fail(l.number,
            "gradient-index media (GRIN) are not supported; " + std::string(kSupported) + " with homogeneous glass");
 }
 
-void refuseNonCircularAperture(Reader& r, const Line& l) {
-    r.fail(l.number, "rectangular and elliptical apertures (" + l.keyword +
-                         ") are not supported; apertures are circular (DIAM, CLAP, FLAP, OBSC)");
+// SQAP/ELAP xhalf yhalf: a rectangular or elliptical clear aperture; SQOB/ELOB the obscuration.
+void readShapedAperture(Reader& r, const Line& l) {
+    RawSurface& s = r.surface(l);
+    SurfaceAperture a;
+    a.kind = l.keyword[0] == 'S' ? ApertureKind::Rectangular : ApertureKind::Elliptical;
+    a.halfWidthX = r.number(l, 0);
+    a.halfWidthY = r.number(l, 1);
+    if (!(a.halfWidthX > 0 && a.halfWidthY > 0))
+        r.fail(l.number, l.keyword + " needs two positive half widths, found " + l.fields[0] + " " + l.fields[1]);
+    (l.keyword[2] == 'A' ? s.clearShape : s.obscurationShape) = a;
 }
 
 using Handler = void (*)(Reader&, const Line&);
 
-// Every keyword that changes what lenslab builds; all others (FIMP, HIDE, MIRR, SLAB, POPS, COFN,
-// display and optimisation settings, pickups whose values Zemax also writes resolved) are ignored.
+// Every keyword that changes what lenslab builds or the file's own analysis (its fields); all others
+// (FIMP, HIDE, MIRR, SLAB, POPS, COFN, display and optimisation settings, pickups whose values Zemax
+// also writes resolved) are ignored.
 const std::unordered_map<std::string, Handler>& handlers() {
     static const std::unordered_map<std::string, Handler> table = {
         {"MODE", readMode}, {"UNIT", readUnit}, {"NAME", readName}, {"NOTE", readNote},
@@ -293,8 +355,11 @@ const std::unordered_map<std::string, Handler>& handlers() {
         {"DIAM", readDiam}, {"MEMA", readMema}, {"STOP", readStop}, {"CLAP", readCircularAperture},
         {"FLAP", readCircularAperture}, {"OBSC", readObsc}, {"DECX", readDecenterOrTilt},
         {"DECY", readDecenterOrTilt}, {"TILT", readDecenterOrTilt}, {"SCBD", readScbd},
-        {"OBDC", readObdc}, {"GRIN", refuseGrin}, {"SQAP", refuseNonCircularAperture},
-        {"ELAP", refuseNonCircularAperture}, {"COAT", readCoat},
+        {"OBDC", readObdc}, {"GRIN", refuseGrin}, {"SQAP", readShapedAperture},
+        {"ELAP", readShapedAperture}, {"SQOB", readShapedAperture}, {"ELOB", readShapedAperture},
+        {"XDAT", readXdat}, {"COMM", readComm}, {"OBNA", readObna}, {"FTYP", readFtyp},
+        {"XFLN", readFieldValues}, {"YFLN", readFieldValues}, {"FWGN", readFieldValues},
+        {"COAT", readCoat},
     };
     return table;
 }
@@ -328,10 +393,63 @@ AsphericCoefficients asphericTerms(const Reader& r, const RawSurface& s) {
     return a;
 }
 
-// The medium after surface s: a mirror sends the ray back through the medium it came from.
+// ODDASPH PARM i multiplies r^i (i = 1..8): in mm it scales as length^(1-i). A Q-type surface's
+// XDAT 1 is its kind (0 Qcon, 1 Qbfs; ASL5040-UV's conic base fixes 0 as Qcon, which Qbfs has not),
+// XDAT 2 the number of terms, XDAT 3 the normalisation radius, XDAT 4.. the terms a_m (lengths).
+SurfaceForm surfaceForm(const Reader& r, const RawSurface& s) {
+    const double u = r.millimetresPerUnit;
+    SurfaceForm f;
+    if (s.type == "ODDASPH") {
+        f.kind = SurfaceKind::OddAsphere;
+        for (const auto& t : s.parms) {
+            if (t.index < 1 || t.index > kFormTerms) {
+                if (t.value != 0) r.fail(t.line, "ODDASPH has PARM 1..16 (r^1 .. r^16); PARM " + std::to_string(t.index) + " is not one");
+                continue;
+            }
+            f.terms[t.index - 1] = t.value * std::pow(u, 1 - t.index);
+            f.termCount = std::max(f.termCount, t.value != 0 ? t.index : 0);
+        }
+    } else if (s.type == "TOROIDAL") {
+        // PARM 1 the radius of rotation, PARM 2.. the y^2, y^4, ... terms; XDAT 1 counts extra terms.
+        f.kind = SurfaceKind::Toroidal;
+        for (const auto& t : s.parms) {
+            if (t.index < 1 || t.index > kFormTerms) {
+                if (t.value != 0) r.fail(t.line, "TOROIDAL has PARM 1..16; PARM " + std::to_string(t.index) + " is not one");
+                continue;
+            }
+            f.terms[t.index - 1] = t.value * std::pow(u, t.index == 1 ? 1 : 1 - 2 * (t.index - 1));
+            f.termCount = std::max(f.termCount, t.index);
+        }
+        for (const auto& t : s.extra)
+            if (t.index == 1 && t.value != 0)
+                r.fail(t.line, "the toroid's extra polynomial terms (XDAT 1 " + std::to_string(int(t.value)) + ") are not supported");
+    } else if (s.type == "QED_TYPE") {
+        std::array<double, 3 + kFormTerms> x{};
+        int count = 0;
+        for (const auto& t : s.extra) {
+            if (t.index < 1 || t.index > int(x.size()))
+                r.fail(t.line, "XDAT " + std::to_string(t.index) + " lies beyond the " + std::to_string(kFormTerms) +
+                                   " Q terms lenslab reads");
+            x[t.index - 1] = t.value;
+            count = std::max(count, t.index);
+        }
+        if (x[0] != 0 && x[0] != 1) r.fail(s.line, "the Q-type surface's XDAT 1 must be 0 (Qcon) or 1 (Qbfs)");
+        f.kind = x[0] == 0 ? SurfaceKind::Qcon : SurfaceKind::Qbfs;
+        f.termCount = std::min(int(x[1]), std::max(count - 3, 0));
+        if (x[1] > kFormTerms) r.fail(s.line, "a Q-type surface has at most " + std::to_string(kFormTerms) + " terms here");
+        f.normalisationRadius = x[2] * u;
+        for (int m = 0; m < f.termCount; ++m) f.terms[m] = x[3 + m] * u;
+    }
+    for (double v : f.terms)
+        if (!std::isfinite(v)) r.fail(s.line, "a surface term is not finite in millimetres");
+    return f;
+}
+
+// The medium after surface s: a mirror sends the ray back through the medium it came from, and a
+// coordinate break leaves it as it was.
 void setMedium(LensTableRow& row, const RawSurface& s, const LensTableRow* before) {
     row.mirror = s.mirror;
-    if (s.mirror) {
+    if (s.mirror || s.type == "COORDBRK") {
         if (before) {
             row.index = before->index;
             row.glass = before->glass;
@@ -344,11 +462,41 @@ void setMedium(LensTableRow& row, const RawSurface& s, const LensTableRow* befor
     row.abbe = s.modelGlass ? s.vd : 0;
 }
 
+// PARM 1, 2 decentre x, y; 3, 4, 5 tilt about x, y, z (degrees); 6 the order (0: decentre first).
+FrameChange coordinateBreak(const Reader& r, const RawSurface& s) {
+    FrameChange f;
+    for (const auto& t : s.parms) {
+        if (t.index == 1 || t.index == 2) f.decentre[t.index - 1] = t.value * r.millimetresPerUnit;
+        else if (t.index >= 3 && t.index <= 5) f.tiltDegrees[t.index - 3] = t.value;
+        else if (t.index == 6) f.order = t.value != 0 ? TiltOrder::TiltThenDecentre : TiltOrder::DecentreThenTilt;
+        else if (t.value != 0) r.fail(t.line, "COORDBRK has PARM 1..6; PARM " + std::to_string(t.index) + " is not one");
+    }
+    return f;
+}
+
+// A surface's own decentre, in millimetres.
+std::optional<FrameChange> surfaceTilt(const Reader& r, const RawSurface& s) {
+    if (!s.tilt) return std::nullopt;
+    FrameChange f = *s.tilt;
+    for (double& d : f.decentre) d *= r.millimetresPerUnit;
+    return f;
+}
+
 LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const LensTableRow* before, bool reversed) {
     const double u = r.millimetresPerUnit;
     LensTableRow row;
     row.line = s.line;
     row.stop = s.stopLine != 0;
+    row.name = s.comment;
+    if (s.type == "COORDBRK") {
+        if (s.stopLine) r.fail(s.stopLine, "a coordinate break cannot be the stop");
+        row.coordinateBreak = true;
+        row.frame = coordinateBreak(r, s);
+        row.gap = s.thickness * u;
+        if (!s.thicknessLine) r.fail(s.line, "SURF " + std::to_string(number) + " has no DISZ (thickness to the next surface)");
+        setMedium(row, s, before);
+        return row;
+    }
     if (s.curvature != 0) row.radius = static_cast<double>(u / s.curvature);
     if (!std::isfinite(row.radius)) r.fail(s.curvatureLine, "CURV is too small: the radius is not a finite number of mm");
     if (!s.thicknessLine) r.fail(s.line, "SURF " + std::to_string(number) + " has no DISZ (thickness to the next surface)");
@@ -361,14 +509,32 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const Len
     setMedium(row, s, before);
     row.conic = s.conic;
     row.aspheric = asphericTerms(r, s);
+    row.form = surfaceForm(r, s);
+    row.frame = surfaceTilt(r, s);
     row.coating = s.coating;
     // The clear aperture is DIAM (Zemax's semi-diameter); a circular aperture overrides it, and the
-    // mechanical semi-diameter stands in where DIAM is 0.
+    // mechanical semi-diameter stands in where DIAM is 0. A rectangle or ellipse (SQAP, ELAP), or
+    // any aperture decentred by OBDC, travels as a shape.
     const double semi = s.apertureRadius > 0 ? s.apertureRadius
                         : s.semiDiameter > 0 ? s.semiDiameter
                                              : s.mechanicalSemiDiameter;
     row.diameter = 2 * semi * u;
     row.obscurationDiameter = 2 * s.obscurationRadius * u;
+    const bool decentred = s.apertureCentreX != 0 || s.apertureCentreY != 0;
+    auto placed = [&](SurfaceAperture a) {
+        a.halfWidthX *= u, a.halfWidthY *= u;
+        a.centreX = s.apertureCentreX * u, a.centreY = s.apertureCentreY * u;
+        return a;
+    };
+    if (s.clearShape) {
+        row.clearShape = placed(*s.clearShape);
+    } else if (decentred) {
+        SurfaceAperture circle;
+        circle.halfWidthX = circle.halfWidthY = semi;
+        row.clearShape = placed(circle);
+    }
+    if (s.obscurationShape) row.obscurationShape = placed(*s.obscurationShape);
+    if (row.clearShape) row.diameter = 2 * row.clearShape->reach();
     if (!(row.diameter > 0) || !std::isfinite(row.diameter))
         r.fail(s.line, "SURF " + std::to_string(number) + " has no positive semi-diameter (DIAM, MEMA, CLAP or FLAP)");
     if (row.obscurationDiameter >= row.diameter)
@@ -376,14 +542,34 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const Len
     return row;
 }
 
-// Zemax lists all 24 wavelength slots; trailing default slots past the primary are unused ones.
+// Zemax lists all 24 wavelength slots: FTYP says how many are used; without it, trailing default
+// slots past the primary are taken as unused.
 std::vector<Wavelength> usedWavelengths(const Reader& r) {
     std::vector<Wavelength> w = r.wavelengths;
+    if (r.fields.wavelengths > 0 && r.fields.wavelengths <= int(w.size())) {
+        w.resize(std::max(r.fields.wavelengths, r.primarySlot));
+        return w;
+    }
     if (int(w.size()) == kWavelengthSlots)
         while (int(w.size()) > std::max(r.primarySlot, 1) && w.back().micrometres == kDefaultSlotMicrometres &&
                w.back().weight == 1)
             w.pop_back();
     return w;
+}
+
+// XFLN/YFLN/FWGN list all 12 slots; FTYP says how many are fields.
+void setFields(const Reader& r, LensTable& t) {
+    const Fields& f = r.fields;
+    static const FieldType kTypes[] = {FieldType::ObjectAngle, FieldType::ObjectHeight, FieldType::ParaxialImageHeight,
+                                       FieldType::RealImageHeight};
+    t.fields.type = kTypes[f.type];
+    const std::size_t n = f.count >= 0 ? std::size_t(f.count) : std::max(f.x.size(), f.y.size());
+    const double u = f.type == 0 ? 1 : r.millimetresPerUnit;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i >= f.x.size() && i >= f.y.size()) break;
+        t.fields.points.push_back({i < f.x.size() ? f.x[i] * u : 0, i < f.y.size() ? f.y[i] * u : 0,
+                                   i < f.weights.size() ? f.weights[i] : 1});
+    }
 }
 
 void setHeader(const Reader& r, LensTable& t) {
@@ -399,6 +585,7 @@ void setHeader(const Reader& r, LensTable& t) {
     for (const Wavelength& w : usedWavelengths(r)) {
         if (const auto problem = wavelengthProblem(w.micrometres * 1000)) r.fail(w.line, "WAVM: " + *problem);
         t.wavelengths.push_back(w.micrometres * 1000);
+        t.wavelengthWeights.push_back(w.weight);
     }
     if (!t.wavelengths.empty()) {
         if (r.primarySlot < 1 || r.primarySlot > int(t.wavelengths.size()))
@@ -409,6 +596,8 @@ void setHeader(const Reader& r, LensTable& t) {
     t.catalogs = r.catalogs;
     if (r.fnum > 0) t.designFNumber = r.fnum;
     if (r.enpd > 0) t.entrancePupilDiameter = r.enpd * r.millimetresPerUnit;
+    if (r.obna > 0) t.objectNumericalAperture = r.obna;
+    setFields(r, t);
 }
 
 LensTable assemble(const Reader& r, int lastLine) {
@@ -430,6 +619,9 @@ LensTable assemble(const Reader& r, int lastLine) {
         reversed ^= r.surfaces[i].mirror;
         t.rows.push_back(lensRow(r, r.surfaces[i], i, t.rows.empty() ? nullptr : &t.rows.back(), reversed));
     }
+    if (image.type == "COORDBRK") r.fail(image.line, "the image surface cannot be a coordinate break");
+    t.imageFrame = surfaceTilt(r, image);
+    if (object.thicknessLine && std::fabs(object.thickness) < 1e10) t.objectDistance = object.thickness * r.millimetresPerUnit;
     return t;
 }
 

@@ -5,6 +5,7 @@
 
 #include "prescription/OpticsError.h"
 #include "prescription/Wavelength.h"
+#include "trace/AxisRay.h"
 
 namespace lenslab {
 
@@ -37,7 +38,8 @@ LensSystem atRequestedWavelength(const LensSystem& lens, const std::optional<Set
 LensAnalysis analyzeLens(const LensSystem& lensAsBuilt, const LensSettings& s) {
     refuseBoth(s.fstop, s.stopDiameter, "aperture");
     refuseBoth(s.focusDistance, s.filmDistance, "focus");
-    const LensSystem table = atRequestedWavelength(lensAsBuilt, s.wavelength);
+    // A decentred or tilted lens is measured along its axis ray (trace/AxisRay.h).
+    const LensSystem table = alongAxisRay(atRequestedWavelength(lensAsBuilt, s.wavelength));
     LensAnalysis a;
     a.firstOrder = computeFirstOrder(table);
     a.aperture = computeApertureRange(table, a.firstOrder);
@@ -70,6 +72,25 @@ LensAnalysis analyzeLens(const LensSystem& lensAsBuilt, const LensSettings& s) {
     a.chromatic = computeChromatic(a.lens, a.focus.infinity ? std::numeric_limits<double>::infinity() : a.focus.objectZ,
                                    a.field.largestDegrees);
     return a;
+}
+
+LensAnalysis describeLens(const LensSystem& lens, const LensSettings& settings) {
+    try {
+        return analyzeLens(lens, settings);
+    } catch (const SettingError&) {
+        throw;
+    } catch (const AfocalError&) {
+        LensAnalysis a;
+        a.lens = alongAxisRay(atRequestedWavelength(lens, settings.wavelength));
+        a.afocal = true;
+        return a;
+    } catch (const OpticsError& e) {
+        LensAnalysis a;
+        a.lens = alongAxisRay(atRequestedWavelength(lens, settings.wavelength));
+        a.firstOrder = computeFirstOrder(a.lens);
+        a.incomplete = e.what();
+        return a;
+    }
 }
 
 LensAnalysis analyzeLens(const LensSystem& lens, std::optional<double> fstop, double focusDistance) {

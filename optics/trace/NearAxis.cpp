@@ -14,7 +14,7 @@ double nearAxisHeight(const LensSystem& lens) {
 }
 
 double zAtHeight(const Ray& r, double y) {
-    if (r.direction.y == 0) throw OpticsError("the ray leaves parallel to the axis (afocal system)");
+    if (r.direction.y == 0) throw AfocalError("the ray leaves parallel to the axis (afocal system)");
     return r.origin.z + (y - r.origin.y) * r.direction.z / r.direction.y;
 }
 

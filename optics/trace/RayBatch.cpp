@@ -95,7 +95,7 @@ void stepAsphere(std::size_t count, const BatchArrays& a, const SurfaceConstants
     // One Newton step of ray r unless it is done: converged (2), or stalled on a non-finite t (1,
     // which finishAsphere reports as a miss).
     const auto advance = [&](std::size_t r) {
-        const double step = asphereNewtonStep(a.px[r], a.py[r], a.pz[r] - s.zVertex, a.vx[r], a.vy[r], a.vz[r], tt[r], s);
+        const double step = asphereNewtonStep(a.px[r], a.py[r], a.pz[r] - s.zVertex, a.vx[r], a.vy[r], a.vz[r], tt[r], EvenSag<double>{s});
         const bool moving = dn[r] == 0;
         const double next = tt[r] + step;
         tt[r] = moving ? next : tt[r];
@@ -128,8 +128,38 @@ void stepAsphere(std::size_t count, const BatchArrays& a, const SurfaceConstants
 #pragma GCC ivdep
     for (std::size_t r = 0; r < count; ++r) {
         double x = a.px[r], y = a.py[r], z = a.pz[r], u = a.vx[r], v = a.vy[r], w = a.vz[r];
-        const BlockReason b = finishAsphere(x, y, z, u, v, w, tt[r], z - s.zVertex, dn[r] == 2, s, etaOf(r));
+        const BlockReason b = finishAsphere(x, y, z, u, v, w, tt[r], z - s.zVertex, dn[r] == 2, s, etaOf(r), EvenSag<double>{s});
         keep(a, r, x, y, z, u, v, w, b, index);
+    }
+}
+
+// A surface the general step takes (a form beyond the even asphere, a shaped aperture), ray by ray.
+template <class EtaOf>
+void stepGeneral(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s,
+                 const GeneralSurface<double>& g, EtaOf etaOf, std::int16_t index) {
+    for (std::size_t r = 0; r < count; ++r) {
+        if (a.why[r] != 0) continue;
+        double x = a.px[r], y = a.py[r], z = a.pz[r], u = a.vx[r], v = a.vy[r], w = a.vz[r];
+        const BlockReason b = stepThroughGeneral<double>(x, y, z, u, v, w, s, g, etaOf(r));
+        keep(a, r, x, y, z, u, v, w, b, index);
+    }
+}
+
+// A decentre or tilt: the coordinates of every ray still travelling move with it.
+void moveRays(std::size_t count, const BatchArrays& a, const RigidMotion& m) {
+    if (m.isIdentity()) return;
+    const auto& q = m.rotation;
+    const auto& t = m.shift;
+#pragma GCC ivdep
+    for (std::size_t r = 0; r < count; ++r) {
+        const bool alive = a.why[r] == 0;
+        const double x = a.px[r], y = a.py[r], z = a.pz[r], u = a.vx[r], v = a.vy[r], w = a.vz[r];
+        a.px[r] = alive ? q[0] * x + q[1] * y + q[2] * z + t[0] : x;
+        a.py[r] = alive ? q[3] * x + q[4] * y + q[5] * z + t[1] : y;
+        a.pz[r] = alive ? q[6] * x + q[7] * y + q[8] * z + t[2] : z;
+        a.vx[r] = alive ? q[0] * u + q[1] * v + q[2] * w : u;
+        a.vy[r] = alive ? q[3] * u + q[4] * v + q[5] * w : v;
+        a.vz[r] = alive ? q[6] * u + q[7] * v + q[8] * w : w;
     }
 }
 
@@ -146,12 +176,21 @@ void traceBatchWith(const LensSystem& lens, RayBatch& batch, TraceDirection dire
     // Surface-major order: each surface's constants stay in registers across the ray loop.
     for (int k = 0; k < n; ++k) {
         const int i = toFilm ? k : n - 1 - k;
+        const Surface& surface = lens.surfaces[i];
         const SurfaceConstants<double> s = surfaceConstants<double>(lens, i, direction);
         const auto index = static_cast<std::int16_t>(i);
         const auto etaOf = etaOfSurface(i, s);
-        if (s.asphericTerms > 0) stepAsphere(batch.size(), arrays, s, etaOf, index);
+        moveRays(batch.size(), arrays, motionInto(surface, direction));
+        if (isDummy(lens, i)) {
+            moveRays(batch.size(), arrays, motionOutOf(surface, direction));
+            continue;
+        }
+        if (takesGeneralStep(lens, surface))
+            stepGeneral(batch.size(), arrays, s, generalSurface<double>(lens, surface), etaOf, index);
+        else if (s.asphericTerms > 0) stepAsphere(batch.size(), arrays, s, etaOf, index);
         else if (s.conicFactor != 1) stepQuadric<true>(batch.size(), arrays, s, etaOf, index);
         else stepQuadric<false>(batch.size(), arrays, s, etaOf, index);
+        moveRays(batch.size(), arrays, motionOutOf(surface, direction));
     }
 }
 

@@ -19,8 +19,8 @@ struct RayBatch {
     Ray get(std::size_t i) const;
 };
 
-// Traces every ray of the batch through the whole lens in place. Blocked rays keep the state they
-// had in front of the surface that stopped them.
+// Traces every ray of the batch through the whole lens in place (coordinates as traceRay's). Blocked
+// rays keep the state they had in front of the surface that stopped them, in that surface's frame.
 void traceBatch(const LensSystem& lens, RayBatch& batch, TraceDirection direction);
 
 struct WavelengthEtas;

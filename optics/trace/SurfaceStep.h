@@ -1,11 +1,15 @@
 #pragma once
-// One ray meeting one surface: a sphere, a conic or an even asphere. Intersection with the cap at
-// the vertex, the clear-aperture and obscuration tests, and vector refraction (or reflection at a
-// mirror). Written once, on plain scalars, so that the scalar trace, the structure-of-arrays batch
+// One ray meeting one surface: a sphere, a conic, an even asphere or another form (FormSag.h).
+// Intersection with the cap at the vertex, the clear-aperture and obscuration tests (circles about
+// the vertex, or shapes), and vector refraction (or reflection at a mirror). Written once, on plain scalars, so that the scalar trace, the structure-of-arrays batch
 // trace and the float variant share the exact same math.
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+
+#include "prescription/SurfaceAperture.h"
+#include "prescription/FormSag.h"
 
 namespace lenslab {
 
@@ -43,8 +47,10 @@ struct SurfaceConstants {
 // The nearest intersection ahead of the ray with the quadric's cap at the vertex (where the normal
 // c q + K c qz e_z + e_z points toward +z). Both roots are formed without cancellation (one from
 // Vieta's product). For a sphere (K = 1) the far root needs no division per ray: q * radius.
-// Returns the parameter t; `missed` when no root on the cap lies ahead.
-template <class T, bool kConic>
+// Returns the parameter t; `missed` when no root on the cap lies ahead. kVirtual: the root on the
+// cap wherever it lies along the ray's line, behind the ray too (a decentred or folded system's
+// surfaces may lie behind it: design programs propagate the ray back to them, "virtually").
+template <class T, bool kConic, bool kVirtual = false>
 inline T intersectQuadric(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConstants<T>& s, bool& missed) {
     const T c = s.curvature, K = kConic ? s.conicFactor : T(1);
     const T b = dz + c * (px * dx + py * dy + K * qz * dz);
@@ -58,6 +64,16 @@ inline T intersectQuadric(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConst
     // NaN, which farOk rejects.
     const T tFar = kConic ? q / a : q * s.radius;
     const T tMin = T(-1e-9);
+    if constexpr (kVirtual) {
+        // The nearest root on the cap ahead; without one, the nearest behind.
+        const bool nearCap = (std::fabs(tNear) < T(1e30)) & (T(1) + K * c * (qz + tNear * dz) > T(0));
+        const bool farCap = (std::fabs(tFar) < T(1e30)) & (T(1) + K * c * (qz + tFar * dz) > T(0));
+        const bool nearAhead = nearCap & (tNear >= tMin), farAhead = farCap & (tFar >= tMin);
+        const T t = (nearAhead | farAhead) ? (nearAhead & (!farAhead | (tNear <= tFar)) ? tNear : tFar)
+                                           : (nearCap & (!farCap | (tNear >= tFar)) ? tNear : tFar);
+        missed = !(disc >= T(0)) | !(nearCap | farCap);
+        return t;
+    }
     const bool nearOk = (tNear >= tMin) & (T(1) + K * c * (qz + tNear * dz) > T(0));
     const bool farOk = (tFar >= tMin) & (tFar < T(1e30)) & (T(1) + K * c * (qz + tFar * dz) > T(0));
     const T t = nearOk & (!farOk | (tNear <= tFar)) ? tNear : tFar;
@@ -81,15 +97,58 @@ inline void asphereSag(T rho, const SurfaceConstants<T>& s, T& sag, T& g, T& u) 
     g = c / (root > T(0) ? root : std::numeric_limits<T>::min()) + slope;
 }
 
-// One Newton step toward the asphere along the ray from t: F(t) = qz(t) + sag(r(t)), F' = dz + g (x dx + y dy).
-// Returns the step taken (0 once F' vanishes; the caller's convergence test then fails).
+// The slope of a surface at (x, y): its gradient is (gx, gy, 1). A surface of revolution keeps the
+// one number g = sag'(r) / r (the even asphere's arithmetic, unchanged by the others).
 template <class T>
-inline T asphereNewtonStep(T px, T py, T qz, T dx, T dy, T dz, T t, const SurfaceConstants<T>& s) {
+struct RadialSlope {
+    T g;
+    T along(T x, T y, T dx, T dy) const { return g * (x * dx + y * dy); }
+    void normal(T x, T y, T& nx, T& ny) const { nx = g * x, ny = g * y; }
+};
+template <class T>
+struct PlaneSlope {
+    T gx, gy;
+    T along(T, T, T dx, T dy) const { return gx * dx + gy * dy; }
+    void normal(T, T, T& nx, T& ny) const { nx = gx, ny = gy; }
+};
+
+// The sag functions Newton walks on: the even asphere of the constants, or a form of FormSag.h.
+// Each gives the sag and u (>= 0 where the surface is defined) at (x, y), and the slope there.
+template <class T>
+struct EvenSag {
+    const SurfaceConstants<T>& s;
+    RadialSlope<T> operator()(T x, T y, T& sag, T& u) const {
+        T g;
+        asphereSag(x * x + y * y, s, sag, g, u);
+        return {g};
+    }
+};
+template <class T>
+struct FormSagOf {
+    const FormConstants<T>& form;
+    T curvature, conicFactor;
+    PlaneSlope<T> operator()(T x, T y, T& sag, T& u) const {
+        if (form.kind == SurfaceKind::Toroidal) {
+            T gx, gy;
+            toroidSag(form, curvature, conicFactor, x, y, sag, gx, gy, u);
+            return {gx, gy};
+        }
+        T g;
+        formSag(form, curvature, conicFactor, x * x + y * y, sag, g, u);
+        return {g * x, g * y};
+    }
+};
+
+// One Newton step toward the asphere along the ray from t: F(t) = qz(t) + sag(x(t), y(t)), F' = dz +
+// the gradient along (dx, dy). Returns the step taken (0 once F' vanishes; the caller's convergence
+// test then fails).
+template <class T, class Sag>
+inline T asphereNewtonStep(T px, T py, T qz, T dx, T dy, T dz, T t, const Sag& sagOf) {
     const T x = px + t * dx, y = py + t * dy, z = qz + t * dz;
-    T sag, g, u;
-    asphereSag(x * x + y * y, s, sag, g, u);
+    T sag, u;
+    const auto slopeAt = sagOf(x, y, sag, u);
     const T f = z + sag;
-    const T slope = dz + g * (x * dx + y * dy);
+    const T slope = dz + slopeAt.along(x, y, dx, dy);
     return slope != T(0) ? -f / slope : T(0);
 }
 
@@ -103,10 +162,10 @@ constexpr int kMaxAsphereIterations = 32;
 
 // Newton's start on an asphere: the base quadric's hit, or where the ray crosses the vertex plane
 // when the quadric has none.
-template <class T>
+template <class T, bool kVirtual = false>
 inline T asphereStart(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConstants<T>& s) {
     bool missed = false;
-    const T t = intersectQuadric<T, true>(px, py, qz, dx, dy, dz, s, missed);
+    const T t = intersectQuadric<T, true, kVirtual>(px, py, qz, dx, dy, dz, s, missed);
     return missed ? -qz / dz : t;
 }
 
@@ -148,49 +207,95 @@ inline BlockReason bendAtHit(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz
 }
 
 // A quadric (sphere when kConic is false): intersection and bend in one step.
-template <class T, bool kConic = false>
+template <class T, bool kConic = false, bool kVirtual = false>
 inline BlockReason stepThroughQuadric(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s,
                                       T rayEta) {
     const T qz = pz - s.zVertex;
     bool missed = false;
-    const T t = intersectQuadric<T, kConic>(px, py, qz, dx, dy, dz, s, missed);
+    const T t = intersectQuadric<T, kConic, kVirtual>(px, py, qz, dx, dy, dz, s, missed);
     const T c = s.curvature, K = kConic ? s.conicFactor : T(1);
     const T hx = px + t * dx, hy = py + t * dy, hqz = qz + t * dz;
     return bendAtHit(px, py, pz, dx, dy, dz, t, qz, missed, c * hx, c * hy, T(1) + K * c * hqz, s, rayEta);
 }
 
 // The asphere's bend once Newton has its t (shared by the scalar and the batch trace).
-template <class T>
+template <class T, class Sag, bool kVirtual = false>
 inline BlockReason finishAsphere(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz, bool converged,
-                                 const SurfaceConstants<T>& s, T rayEta) {
+                                 const SurfaceConstants<T>& s, T rayEta, const Sag& sagOf) {
     const T hx = px + t * dx, hy = py + t * dy;
-    T sag, g, u;
-    asphereSag(hx * hx + hy * hy, s, sag, g, u);
-    const bool missed = !converged | !(t >= T(-1e-9)) | !(u >= T(0)) | !(t < T(1e30));
-    return bendAtHit(px, py, pz, dx, dy, dz, t, qz, missed, g * hx, g * hy, T(1), s, rayEta);
+    T sag, u, nx, ny;
+    sagOf(hx, hy, sag, u).normal(hx, hy, nx, ny);
+    const bool ahead = kVirtual ? std::fabs(t) < T(1e30) : (t >= T(-1e-9)) & (t < T(1e30));
+    const bool missed = !converged | !ahead | !(u >= T(0));
+    return bendAtHit(px, py, pz, dx, dy, dz, t, qz, missed, nx, ny, T(1), s, rayEta);
 }
 
-// An even asphere: Newton from the base quadric's hit, converged per ray; a ray that does not
-// converge, or ends where the sag is undefined, missed the surface.
-template <class T>
-inline BlockReason stepThroughAsphere(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s) {
+// An asphere: Newton from the base quadric's hit, converged per ray; a ray that does not converge,
+// or ends where the sag is undefined, missed the surface.
+template <class T, class Sag, bool kVirtual = false>
+inline BlockReason stepThroughAsphere(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s,
+                                      T rayEta, const Sag& sagOf) {
     const T qz = pz - s.zVertex;
-    T t = asphereStart(px, py, qz, dx, dy, dz, s);
+    T t = asphereStart<T, kVirtual>(px, py, qz, dx, dy, dz, s);
     bool converged = false;
     for (int i = 0; i < kMaxAsphereIterations && !converged && std::isfinite(t); ++i) {
-        const T step = asphereNewtonStep(px, py, qz, dx, dy, dz, t, s);
+        const T step = asphereNewtonStep(px, py, qz, dx, dy, dz, t, sagOf);
         t += step;
         converged = asphereStepConverged(step, t);
     }
-    return finishAsphere(px, py, pz, dx, dy, dz, t, qz, converged, s, s.eta);
+    return finishAsphere<T, Sag, kVirtual>(px, py, pz, dx, dy, dz, t, qz, converged, s, rayEta, sagOf);
 }
 
-// Any surface, for one ray.
+// Any centred, circular, even surface, for one ray.
+template <class T, bool kVirtual = false>
+inline BlockReason stepThroughSurface(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s,
+                                      T rayEta) {
+    if (s.asphericTerms > 0)
+        return stepThroughAsphere<T, EvenSag<T>, kVirtual>(px, py, pz, dx, dy, dz, s, rayEta, EvenSag<T>{s});
+    if (s.conicFactor != T(1)) return stepThroughQuadric<T, true, kVirtual>(px, py, pz, dx, dy, dz, s, rayEta);
+    return stepThroughQuadric<T, false, kVirtual>(px, py, pz, dx, dy, dz, s, rayEta);
+}
 template <class T>
 inline BlockReason stepThroughSurface(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s) {
-    if (s.asphericTerms > 0) return stepThroughAsphere(px, py, pz, dx, dy, dz, s);
-    if (s.conicFactor != T(1)) return stepThroughQuadric<T, true>(px, py, pz, dx, dy, dz, s, s.eta);
-    return stepThroughQuadric<T, false>(px, py, pz, dx, dy, dz, s, s.eta);
+    return stepThroughSurface<T>(px, py, pz, dx, dy, dz, s, s.eta);
+}
+
+// What only the general step reads: the surface's form and its shaped apertures (the constants'
+// circles are then opened to infinity and none), and whether the ray may meet it behind itself (a
+// decentred or tilted lens, intersectQuadric's kVirtual).
+template <class T>
+struct GeneralSurface {
+    FormConstants<T> form;
+    std::optional<SurfaceAperture> clear, obscuration;
+    bool virtualPropagation = false;
+};
+
+template <class T, bool kVirtual>
+inline BlockReason stepThroughForm(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s,
+                                   const GeneralSurface<T>& g, T rayEta) {
+    if (g.form.kind == SurfaceKind::EvenAsphere) return stepThroughSurface<T, kVirtual>(px, py, pz, dx, dy, dz, s, rayEta);
+    const FormSagOf<T> sagOf{g.form, s.curvature, s.conicFactor};
+    return stepThroughAsphere<T, FormSagOf<T>, kVirtual>(px, py, pz, dx, dy, dz, s, rayEta, sagOf);
+}
+
+// A surface with a form beyond the even asphere, a shaped aperture, or in a decentred lens. A ray
+// the shapes block keeps the state it arrived with, as bendAtHit keeps it.
+template <class T>
+inline BlockReason stepThroughGeneral(T& px, T& py, T& pz, T& dx, T& dy, T& dz, const SurfaceConstants<T>& s,
+                                      const GeneralSurface<T>& g, T rayEta) {
+    const T x0 = px, y0 = py, z0 = pz, u0 = dx, v0 = dy, w0 = dz;
+    const BlockReason why = g.virtualPropagation ? stepThroughForm<T, true>(px, py, pz, dx, dy, dz, s, g, rayEta)
+                                                 : stepThroughForm<T, false>(px, py, pz, dx, dy, dz, s, g, rayEta);
+    if (why != BlockReason::None) return why;
+    const double hx = double(px), hy = double(py);
+    const BlockReason shaped = g.clear && !g.clear->contains(hx, hy)
+                                   ? (s.isStop ? BlockReason::ClippedByStop : BlockReason::OutsideAperture)
+                               : g.obscuration && g.obscuration->contains(hx, hy) ? BlockReason::Obscured
+                                                                                  : BlockReason::None;
+    if (shaped != BlockReason::None) {
+        px = x0, py = y0, pz = z0, dx = u0, dy = v0, dz = w0;
+    }
+    return shaped;
 }
 
 }  // namespace lenslab

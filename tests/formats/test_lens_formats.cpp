@@ -64,3 +64,52 @@ TEST(LensFormats, TextLinesHoldTheirOwnNumbers) {
     EXPECT_NEAR(textValue(text, "front focal distance"), expected.front, 1e-4);
     EXPECT_NEAR(textValue(text, "object distance"), 1000, 1e-4);
 }
+
+// Edges crossing inside their stated apertures: the lens reads, and the warning (line, message)
+// reaches the JSON and the text.
+TEST(LensFormats, WarningsReachTheJsonAndTheText) {
+    const LensSystem lens = buildLensSystem(parseLensTable("50 0 1.5 20\n-20 1 1 20\n0 5 0 10\n", "edge.dat"));
+    const LensAnalysis a = describeLens(lens, LensSettings{});
+    const nlohmann::json j = lensAnalysisJson(a);
+    ASSERT_EQ(j["warnings"].size(), 1u);
+    EXPECT_EQ(j["warnings"][0]["line"].get<int>(), 2);
+    EXPECT_NE(j["warnings"][0]["message"].get<std::string>().find("cross at height"), std::string::npos);
+    EXPECT_NE(lensAnalysisText(a).find("warning (line 2): surfaces on lines 1 and 2 cross"), std::string::npos);
+    EXPECT_TRUE(lensAnalysisJson(analysis())["warnings"].empty());
+}
+
+// A plate between flats has no focal points: described as afocal, its prescription still listed.
+TEST(LensFormats, AnAfocalLensIsDescribedNotRefused) {
+    const LensSystem plate = buildLensSystem(parseLensTable("rdm\nso 0 1e10\ns 0 5 1.5,60\nsto\ns 0 10\nepd 4; wl 587.56\n", "plate.seq"));
+    const nlohmann::json j = lensAnalysisJson(describeLens(plate, LensSettings{}));
+    EXPECT_TRUE(j["afocal"].get<bool>());
+    EXPECT_TRUE(j["efl"].is_null());
+    EXPECT_EQ(j["format"], "seq");
+    ASSERT_EQ(j["surfaces"].size(), 2u);
+    EXPECT_FALSE(j.contains("incomplete"));
+    EXPECT_FALSE(lensAnalysisJson(analysis())["afocal"].get<bool>());
+}
+
+// A tilted, decentred surface (Code V DAR) and the file's own fields and wavelength weights, under
+// new names; a centred surface has no frame.
+TEST(LensFormats, FramesFieldsAndWeightsUnderTheirOwnNames) {
+    const LensSystem lens = buildLensSystem(parseLensTable(
+        "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ns -60 10\ns 0 20\nyde 0.5; ade 3; dar\n"
+        "epd 10; wl 656.27 587.56 486.13; ref 2; wtw 1 2 1; yan 0 10 20; wtf 1 1 0.5\n", "tilt.seq"));
+    const nlohmann::json j = lensAnalysisJson(describeLens(lens, LensSettings{}));
+    EXPECT_FALSE(j["rotationally_symmetric"].get<bool>());
+    EXPECT_FALSE(j["surfaces"][0].contains("frame"));
+    const nlohmann::json& frame = j["surfaces"][2]["frame"];
+    EXPECT_DOUBLE_EQ(frame["decentre"][1].get<double>(), 0.5);
+    EXPECT_DOUBLE_EQ(frame["tilt_degrees"][0].get<double>(), 3);
+    EXPECT_EQ(frame["mode"], "decentre and return");
+    const nlohmann::json& design = j["design"];
+    EXPECT_EQ(design["wavelengths_nm"], nlohmann::json({656.27, 587.56, 486.13}));
+    EXPECT_EQ(design["wavelength_weights"], nlohmann::json({1.0, 2.0, 1.0}));
+    EXPECT_DOUBLE_EQ(j["primary_wavelength_nm"].get<double>(), 587.56);
+    EXPECT_EQ(design["fields"]["type"], "object angle");
+    ASSERT_EQ(design["fields"]["points"].size(), 3u);
+    EXPECT_DOUBLE_EQ(design["fields"]["points"][2]["y"].get<double>(), 20);
+    EXPECT_DOUBLE_EQ(design["fields"]["points"][2]["weight"].get<double>(), 0.5);
+    EXPECT_DOUBLE_EQ(design["entrance_pupil_diameter"].get<double>(), 10);
+}

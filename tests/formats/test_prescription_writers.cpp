@@ -6,8 +6,10 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <tuple>
 #include <filesystem>
 
+#include "firstorder/FirstOrder.h"
 #include "settings/LensAnalysis.h"
 #include "prescription/GlassCatalog.h"
 #include "prescription/LensSystem.h"
@@ -125,6 +127,33 @@ TEST(PrescriptionWriters, ADatRefusesAConicNamingItsRow) {
         EXPECT_EQ(e.line(), t.rows[2].line);
         EXPECT_NE(e.problem().find(".zmx"), std::string::npos) << e.problem();
     }
+}
+
+// What a Code V or Zemax file brings and the writers do not write (a decentre, an aperture left to
+// the program) is refused naming its row, by both writers: never written as a different lens.
+TEST(PrescriptionWriters, FeaturesTheWritersDoNotHoldAreRefusedNamingTheRow) {
+    const std::string tilted = "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ncir 10\ns -60 10\ncir 10\ns 0 20\ncir 10\n"
+                               "yde 0.5; ade 3; dar\nepd 10; wl 587.5618\n";
+    const std::string automatic = "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ncir 10\ns -60 10\nepd 10; wl 587.5618\n";
+    const std::function<std::string(const LensTable&)> writers[] = {writeZemaxText, writeLensTableText};
+    for (const auto& write : writers) {
+        for (const auto& [text, line, feature] : {std::make_tuple(tilted, 8, "a decentre or tilt"),
+                                                  std::make_tuple(automatic, 6, "a clear aperture the file leaves to the program")}) {
+            const LensTable t = parseLensTable(text, "in.seq");
+            try {
+                write(t);
+                FAIL() << feature << " was written";
+            } catch (const LensTableError& e) {
+                EXPECT_EQ(e.line(), line) << e.what();
+                EXPECT_NE(e.problem().find(feature), std::string::npos) << e.what();
+            }
+        }
+    }
+    // Without them the same lens is written and reads back with its first order.
+    const LensTable plain = parseLensTable(
+        "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ncir 10\ns -60 10\ncir 10\nepd 10; wl 587.5618\n", "plain.seq");
+    const double efl = computeFirstOrder(buildLensSystem(plain)).efl;
+    EXPECT_NEAR(computeFirstOrder(buildLensSystem(parseLensTable(writeZemaxText(plain), "plain.zmx"))).efl, efl, 1e-9 * efl);
 }
 
 // A prescription's coatings (bare, a stack, a layer in nm) come back from every writer, and rows

@@ -24,6 +24,10 @@ void checkTable(const LensTable& t) {
         mirrors += r.mirror;
         check(std::isfinite(r.radius) && std::isfinite(r.gap) && std::isfinite(r.conic), "finite geometry");
         for (double a : r.aspheric) check(std::isfinite(a), "finite aspheric terms");
+        if (r.coordinateBreak) {
+            check(r.frame.has_value() && r.diameter == 0, "a coordinate break carries a frame, no aperture");
+            continue;
+        }
         check(r.diameter > 0 && std::isfinite(r.diameter), "positive finite diameter");
         check(r.obscurationDiameter >= 0 && r.obscurationDiameter < r.diameter, "obscuration inside the aperture");
         check(r.index == 0 || r.index >= 1, "index 0 (air) or >= 1");

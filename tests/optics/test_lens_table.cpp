@@ -1,6 +1,8 @@
 // The lens-table parser: both layouts, line endings, comments, and every error with its message.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -9,6 +11,7 @@
 #include "firstorder/FirstOrder.h"
 #include "prescription/LensSystem.h"
 #include "prescription/LensTable.h"
+#include "trace/ExactTrace.h"
 
 using namespace lenslab;
 
@@ -128,9 +131,29 @@ TEST(LensTableErrors, TwoStops) {
 TEST(LensTableErrors, DiameterLargerThanSphere) {
     expectError("8 0 1.5 20\n-50 5 1 20\n0 5 0 10\n", 1, "larger than the sphere of radius 8 mm allows");
 }
-TEST(LensTableErrors, OverlappingSurfaces) {
-    // Two strongly convex-toward-each-other surfaces 1 mm apart at the axis cross near the rim.
-    expectError("50 0 1.5 20\n-20 1 1 20\n0 5 0 10\n", 2, "surface overlaps the one before it");
+// Two strongly convex-toward-each-other surfaces 1 mm apart at the axis cross near the rim: the
+// lens reads, with a warning naming both lines and the height, and both apertures end there.
+TEST(LensTable, OverlappingEdgesWarnAndClip) {
+    const LensSystem lens = buildLensSystem(parseLensTable("50 0 1.5 20\n-20 1 1 20\n0 5 0 10\n", "edge.dat"));
+    // Where 50 - sqrt(50^2 - h^2) + 20 - sqrt(20^2 - h^2) = 1: bisected here on the closed form.
+    double lo = 0, hi = 10;
+    for (int i = 0; i < 200; ++i) {
+        const double h = 0.5 * (lo + hi);
+        (50 - std::sqrt(2500 - h * h) + 20 - std::sqrt(400 - h * h) < 1 ? lo : hi) = h;
+    }
+    ASSERT_EQ(lens.warnings.size(), 1u);
+    EXPECT_EQ(lens.warnings[0].line, 2);
+    const std::string& w = lens.warnings[0].message;
+    EXPECT_NE(w.find("lines 1 and 2"), std::string::npos) << w;
+    char height[32];
+    std::snprintf(height, sizeof height, "%.6g mm", lo);
+    EXPECT_NE(w.find(std::string("cross at height ") + height), std::string::npos) << w;
+    // The builder lets surfaces touch within 1e-9 mm (rounding): the crossing moves by that over the slope.
+    EXPECT_NEAR(lens.surfaces[0].apertureRadius, lo, 1e-8);
+    EXPECT_NEAR(lens.surfaces[1].apertureRadius, lo, 1e-8);
+    // A ray beyond the crossing is clipped where the two solids would cut into each other.
+    EXPECT_EQ(traceRay(lens, {{0, lo + 0.05, 5}, {0, 0, -1}}, TraceDirection::SceneToFilm).blocked,
+              BlockReason::OutsideAperture);
 }
 TEST(LensTableErrors, AmbiguousLayoutWithoutZeroGaps) {
     expectError("50 2 1.5 20\n-50 5 1 20\n0 5 0 10\n", 1, "cannot tell the layout");

@@ -11,8 +11,10 @@
 #include "prescription/LensSystem.h"
 #include "prescription/LensTable.h"
 #include "prescription/ZemaxFile.h"
+#include "Utf16.h"
 
 using namespace lenslab;
+using lenslab::test::toUtf16;
 
 namespace {
 
@@ -27,31 +29,6 @@ std::string readBytes(const std::string& path) {
 }
 
 LensTable readData(const std::string& file) { return readLensTable(dataPath(file)); }
-
-// UTF-8 -> UTF-16 with a byte order mark, as Windows programs save text.
-std::string toUtf16(const std::string& utf8, bool littleEndian) {
-    std::string out;
-    const auto put = [&](std::uint32_t u) {
-        const char hi = char(u >> 8), lo = char(u & 0xff);
-        out += littleEndian ? lo : hi;
-        out += littleEndian ? hi : lo;
-    };
-    put(0xfeff);
-    for (std::size_t i = 0; i < utf8.size();) {
-        const auto b = std::uint8_t(utf8[i]);
-        const int extra = b < 0x80 ? 0 : b < 0xe0 ? 1 : b < 0xf0 ? 2 : 3;
-        std::uint32_t c = extra == 0 ? b : b & (0x3f >> extra);
-        for (int k = 1; k <= extra; ++k) c = (c << 6) | (std::uint8_t(utf8[i + k]) & 0x3f);
-        i += extra + 1;
-        if (c >= 0x10000) {
-            put(0xd800 + ((c - 0x10000) >> 10));
-            put(0xdc00 + ((c - 0x10000) & 0x3ff));
-        } else {
-            put(c);
-        }
-    }
-    return out;
-}
 
 void expectSameRows(const LensTable& a, const LensTable& b, double tolerance) {
     ASSERT_EQ(a.rows.size(), b.rows.size());
@@ -312,6 +289,62 @@ TEST(Zemax, DispatchIsByContentNotByName) {
     EXPECT_EQ(parseLensTable("50 0 1.5 20\n0 5 0 10\n", "t.dat").format, "table");
 }
 
+// A folded, decentred, shaped file: coordinate breaks as rows of their own, the surface forms, shaped
+// and decentred apertures, the file's fields, wavelength weights and surface comments.
+TEST(Zemax, CoordinateBreaksFormsAperturesAndFields) {
+    const std::string text =
+        "VERS 1\nMODE SEQ\nUNIT CM\n"                                               // 1-3
+        "FTYP 1 0 2 2 0 0 0\nXFLN 0 0.5 0 0\nYFLN 0 1.5 0 0\nFWGN 1 2 1 1\nOBNA 0.1 0\n"  // 4-8
+        "WAVM 1 0.5 2\nWAVM 2 0.6 1\nWAVM 3 0.55 1\nPWAV 1\n"                       // 9-12
+        "SURF 0\n  CURV 0\n  DISZ 30\n"                                             // 13-15
+        "SURF 1\n  STOP\n  TYPE ODDASPH\n  COMM front\n  CURV 0.02\n  PARM 1 0.001\n  PARM 3 -2e-5\n"  // 16-22
+        "  DISZ 0.5\n  GLAS N-BK7 0 0 1.5168 64.17\n  DIAM 1\n"                    // 23-25
+        "SURF 2\n  TYPE COORDBRK\n  CURV 0\n  PARM 1 0.1\n  PARM 2 -0.2\n  PARM 3 10\n  PARM 6 1\n  DISZ 0\n"  // 26-33
+        "SURF 3\n  TYPE QED_TYPE\n  CURV -0.01\n  CONI -0.5\n  XDAT 1 0\n  XDAT 2 2\n  XDAT 3 1.2\n"  // 34-40
+        "  XDAT 4 0.01\n  XDAT 5 -0.002\n  DISZ 4\n  DIAM 1\n  SQAP 0.8 0.5 0\n  OBDC 0.1 0.2\n"  // 41-46
+        "SURF 4\n  TYPE TOROIDAL\n  CURV 0.001\n  PARM 1 50\n  DISZ 2\n  DIAM 1\n  ELOB 0.2 0.1\n"  // 47-53
+        "SURF 5\n  CURV 0\n  DISZ 0\n";
+    const LensTable t = parseZemax(text, "folded.zmx");
+    ASSERT_EQ(t.rows.size(), 4u);
+    const LensTableRow &odd = t.rows[0], &cb = t.rows[1], &q = t.rows[2], &toroid = t.rows[3];
+    EXPECT_EQ(odd.name, "front");
+    EXPECT_EQ(odd.form.kind, SurfaceKind::OddAsphere);
+    EXPECT_NEAR(odd.form.terms[0], 0.001, 1e-18);                 // r^1: dimensionless
+    EXPECT_NEAR(odd.form.terms[2], -2e-5 / 100, 1e-20);           // r^3: cm^-2 -> mm^-2
+    EXPECT_EQ(odd.form.termCount, 3);
+    EXPECT_TRUE(cb.coordinateBreak);
+    ASSERT_TRUE(cb.frame);
+    EXPECT_EQ(cb.frame->decentre, (std::array<double, 3>{1, -2, 0}));  // cm -> mm
+    EXPECT_EQ(cb.frame->tiltDegrees, (std::array<double, 3>{10, 0, 0}));
+    EXPECT_EQ(cb.frame->order, TiltOrder::TiltThenDecentre);
+    EXPECT_EQ(cb.glass, "N-BK7");  // a coordinate break leaves the medium as it was
+    EXPECT_EQ(q.form.kind, SurfaceKind::Qcon);
+    EXPECT_DOUBLE_EQ(q.form.normalisationRadius, 12);
+    EXPECT_EQ(q.form.termCount, 2);
+    EXPECT_DOUBLE_EQ(q.form.terms[1], -0.02);
+    ASSERT_TRUE(q.clearShape);
+    EXPECT_EQ(q.clearShape->kind, ApertureKind::Rectangular);
+    EXPECT_DOUBLE_EQ(q.clearShape->halfWidthY, 5);
+    EXPECT_DOUBLE_EQ(q.clearShape->centreY, 2);
+    EXPECT_EQ(toroid.form.kind, SurfaceKind::Toroidal);
+    EXPECT_DOUBLE_EQ(toroid.form.terms[0], 500);
+    ASSERT_TRUE(toroid.obscurationShape);
+    EXPECT_EQ(toroid.obscurationShape->kind, ApertureKind::Elliptical);
+    EXPECT_EQ(t.fields.type, FieldType::ObjectHeight);
+    ASSERT_EQ(t.fields.points.size(), 2u);  // FTYP's count
+    EXPECT_DOUBLE_EQ(t.fields.points[1].x, 5);
+    EXPECT_DOUBLE_EQ(t.fields.points[1].y, 15);
+    EXPECT_DOUBLE_EQ(t.fields.points[1].weight, 2);
+    EXPECT_EQ(t.wavelengths, (std::vector<double>{500, 600}));  // FTYP's wavelength count
+    EXPECT_EQ(t.wavelengthWeights, (std::vector<double>{2, 1}));
+    EXPECT_DOUBLE_EQ(*t.objectNumericalAperture, 0.1);
+    EXPECT_DOUBLE_EQ(t.objectDistance, 300);
+    const LensSystem lens = buildLensSystem(t);
+    ASSERT_EQ(lens.surfaces.size(), 3u);  // the coordinate break is no surface
+    EXPECT_TRUE(lens.decentred);
+    EXPECT_FALSE(lens.surfaces[1].before.isIdentity());
+}
+
 TEST(ZemaxErrors, GapBeforeLayoutDoesNotApply) {
     try {
         parseLensTable(singlet(), "x.zmx", TableLayout::GapBefore);
@@ -321,19 +354,21 @@ TEST(ZemaxErrors, GapBeforeLayoutDoesNotApply) {
     }
 }
 
-TEST(ZemaxErrors, CoordinateBreak) { expectError(singlet("  TYPE COORDBRK"), 13, "coordinate breaks (TYPE COORDBRK"); }
-TEST(ZemaxErrors, Decenter) { expectError(singlet("  DECY 0.5"), 13, "tilts and decenters (DECY) are not supported"); }
-TEST(ZemaxErrors, Tilt) { expectError(singlet("  TILT 3"), 13, "tilts and decenters (TILT)"); }
-TEST(ZemaxErrors, SurfaceTiltData) { expectError(singlet("  SCBD 1 0 0 0 0 90 0 0"), 13, "(SCBD)"); }
-TEST(ZemaxErrors, DecenteredAperture) { expectError(singlet("  OBDC 0 190.6"), 13, "decentered apertures (OBDC)"); }
+TEST(ZemaxErrors, CoordinateBreakAsTheStop) { expectError(singlet("  TYPE COORDBRK"), 8, "a coordinate break cannot be the stop"); }
+TEST(ZemaxErrors, OldFormDecenter) { expectError(singlet("  DECY 0.5"), 13, "tilts and decenters in the old form (DECY)"); }
+TEST(ZemaxErrors, OldFormTilt) { expectError(singlet("  TILT 3"), 13, "tilts and decenters in the old form (TILT)"); }
+TEST(ZemaxErrors, SurfaceTiltAfterTheSurface) {
+    expectError(singlet("  SCBD 2 0 0 0 0 90 0 0"), 13, "only the before-surface tilt and decentre (SCBD 1)");
+}
 TEST(ZemaxErrors, GradientIndexType) { expectError(singlet("  TYPE GRINSUR1"), 13, "gradient-index surfaces (TYPE GRINSUR1)"); }
 TEST(ZemaxErrors, GradientIndexLine) { expectError(singlet("  GRIN 1 2 3"), 13, "gradient-index media (GRIN)"); }
-TEST(ZemaxErrors, OddAsphere) { expectError(singlet("  TYPE ODDASPHE"), 13, "odd aspheres (TYPE ODDASPHE) are not supported"); }
 TEST(ZemaxErrors, OtherTypeIsNamedWithWhatIsSupported) {
-    expectError(singlet("  TYPE TOROIDAL"), 13, "surface type TOROIDAL is not supported; lenslab reads sequential, "
-                                                "rotationally symmetric systems of STANDARD and EVENASPH surfaces");
+    expectError(singlet("  TYPE SZERNSAG"), 13, "surface type SZERNSAG is not supported; lenslab reads sequential "
+                                                "systems of STANDARD, EVENASPH, ODDASPH, QTYPE/QED_TYPE, TOROIDAL and "
+                                                "COORDBRK surfaces");
 }
-TEST(ZemaxErrors, RectangularAperture) { expectError(singlet("  SQAP 4 2 0"), 13, "rectangular and elliptical apertures (SQAP)"); }
+TEST(ZemaxErrors, QTypeKind) { expectError(singlet("  TYPE QED_TYPE\n  XDAT 1 2"), 7, "XDAT 1 must be 0 (Qcon) or 1 (Qbfs)"); }
+TEST(ZemaxErrors, RectangularApertureSizes) { expectError(singlet("  SQAP 4 0 0"), 13, "SQAP needs two positive half widths"); }
 TEST(ZemaxErrors, AnnularObscuration) { expectError(singlet("  OBSC 1 2 0"), 13, "annular obscurations"); }
 TEST(ZemaxErrors, ObscurationCoveringTheAperture) { expectError(singlet("  OBSC 0 10 0"), 7, "covers the whole clear aperture"); }
 TEST(ZemaxErrors, NonSequential) { expectError(singlet("  CONI 0", "MODE NSC"), 2, "only sequential files (MODE SEQ)"); }

@@ -1,0 +1,226 @@
+// Tilts, decentres and folds: coordinate breaks that undo each other leave every ray as it was, a
+// fold mirror leaves first-order data as the unfolded system has them, a tilted plate shifts a ray
+// by the closed form, and the batch trace through moved surfaces equals the scalar one to the bit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "firstorder/FirstOrder.h"
+#include "prescription/CodeVFile.h"
+#include "prescription/FrameChange.h"
+#include "prescription/LensSystem.h"
+#include "trace/AxisRay.h"
+#include "trace/ExactTrace.h"
+#include "trace/RayBatch.h"
+
+using namespace lenslab;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+LensTableRow row(double radius, double gap, double index, double diameter, int line) {
+    LensTableRow r;
+    r.radius = radius;
+    r.gap = gap;
+    r.index = index;
+    r.diameter = diameter;
+    r.line = line;
+    return r;
+}
+
+LensTableRow coordinateBreak(std::array<double, 3> decentre, std::array<double, 3> tilt, TiltOrder order, int line) {
+    LensTableRow r;
+    r.coordinateBreak = true;
+    r.frame = FrameChange{decentre, tilt, FrameMode::Basic, order};
+    r.line = line;
+    return r;
+}
+
+// A gap-after singlet focusing at about 50 mm, the stop on its front.
+LensTable singlet() {
+    LensTable t;
+    t.name = "singlet";
+    t.layout = TableLayout::GapAfter;
+    t.format = "zmx";
+    t.rows = {row(40, 5, 1.6, 20, 1), row(-60, 30, 0, 20, 2), row(0, 20, 0, 30, 3)};
+    t.rows[0].stop = true;
+    return t;
+}
+
+std::vector<Ray> testRays() {
+    std::vector<Ray> rays;
+    for (double y : {-6.0, -2.0, 0.0, 3.0, 7.0})
+        for (double slope : {-0.05, 0.0, 0.08}) rays.push_back({{0.7 * slope * 10, y, 10}, normalize({0.01, slope, -1})});
+    return rays;
+}
+
+void expectSameRay(const Ray& a, const Ray& b, double tolerance) {
+    EXPECT_NEAR(a.origin.x, b.origin.x, tolerance);
+    EXPECT_NEAR(a.origin.y, b.origin.y, tolerance);
+    EXPECT_NEAR(a.origin.z, b.origin.z, tolerance);
+    EXPECT_NEAR(a.direction.x, b.direction.x, tolerance);
+    EXPECT_NEAR(a.direction.y, b.direction.y, tolerance);
+    EXPECT_NEAR(a.direction.z, b.direction.z, tolerance);
+}
+
+// The ray's line where it crosses the plane at lens z.
+Ray onPlane(const Ray& r, double z) {
+    const double t = (z - r.origin.z) / r.direction.z;
+    return {{r.origin.x + t * r.direction.x, r.origin.y + t * r.direction.y, z}, r.direction};
+}
+
+}  // namespace
+
+// Zemax undoes a coordinate break with one of the opposite values and the other order flag.
+TEST(Frames, DecentredThenRecentredCoordinateBreaksAreTheIdentity) {
+    const FrameChange there{{1.3, -0.7, 0}, {5, -3, 20}, FrameMode::Basic, TiltOrder::DecentreThenTilt};
+    const FrameChange back{{-1.3, 0.7, 0}, {-5, 3, -20}, FrameMode::Basic, TiltOrder::TiltThenDecentre};
+    const RigidMotion both = surfaceMotions(there, -7.5).before.then(surfaceMotions(back, -7.5).before);
+    for (int i = 0; i < 9; ++i) EXPECT_NEAR(both.rotation[i], i % 4 == 0 ? 1 : 0, 1e-15);
+    for (double s : both.shift) EXPECT_NEAR(s, 0, 1e-14);
+
+    const LensTable plain = singlet();
+    LensTable broken = plain;
+    broken.rows.insert(broken.rows.begin() + 1, {coordinateBreak(there.decentre, there.tiltDegrees, there.order, 10),
+                                                 coordinateBreak(back.decentre, back.tiltDegrees, back.order, 11)});
+    const LensSystem a = buildLensSystem(plain), b = buildLensSystem(broken);
+    ASSERT_EQ(b.surfaces.size(), a.surfaces.size());  // a coordinate break is no surface
+    EXPECT_TRUE(b.hasMovedSurfaces());
+    for (const Ray& ray : testRays()) {
+        const TraceResult ra = traceRay(a, ray, TraceDirection::SceneToFilm);
+        const TraceResult rb = traceRay(b, ray, TraceDirection::SceneToFilm);
+        ASSERT_EQ(ra.blocked, rb.blocked);
+        expectSameRay(ra.ray, rb.ray, 1e-12);
+    }
+}
+
+// Code V's DAR moves one surface only: a tilted, decentred flat between equal media changes no ray.
+TEST(Frames, DecentreAndReturnMovesOnlyItsSurface) {
+    const std::string text = "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ns -60 10\ns 0 20\nyde 3; ade 12; xde -1; dar\n"
+                             "s 0 20\nepd 10; wl 587.56\n";
+    const std::string plainText = "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ns -60 10\ns 0 20\ns 0 20\nepd 10; wl 587.56\n";
+    const LensSystem moved = buildLensSystem(parseCodeV(text, "dar.seq"));
+    const LensSystem plain = buildLensSystem(parseCodeV(plainText, "plain.seq"));
+    for (const Ray& ray : testRays()) {
+        const TraceResult rm = traceRay(moved, ray, TraceDirection::SceneToFilm);
+        const TraceResult rp = traceRay(plain, ray, TraceDirection::SceneToFilm);
+        ASSERT_EQ(rm.ok(), rp.ok());
+        // A decentred lens's flats between equal media move coordinates, not rays: its ray ends at the
+        // last real surface. Both lines then cross the last flat's plane (z = -35) at one point.
+        expectSameRay(onPlane(rm.ray, -35), onPlane(rp.ray, -35), 1e-12);
+    }
+}
+
+// A flat mirror at 45 degrees (Code V ADE 45 with BEN) between a singlet and its image: the first-
+// order data are the unfolded singlet's, to rounding.
+TEST(Frames, FoldMirrorAt45DegreesLeavesFirstOrderAsUnfolded) {
+    const std::string unfolded = "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ns -60 30\ns 0 40\nsi 0 0\nepd 10; wl 587.56\n";
+    const std::string folded = "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ns -60 30\ns 0 -40 refl\nade 45; ben\nsi 0 0\n"
+                               "epd 10; wl 587.56\n";
+    const LensSystem u = buildLensSystem(parseCodeV(unfolded, "u.seq"));
+    const LensSystem f = buildLensSystem(parseCodeV(folded, "f.seq"));
+    const FirstOrder a = computeFirstOrder(u), b = computeFirstOrder(f);
+    EXPECT_NEAR(b.efl, a.efl, 1e-9 * a.efl);
+    EXPECT_NEAR(b.zFPrime, a.zFPrime, 1e-9 * a.efl);
+    EXPECT_NEAR(b.zPPrime, a.zPPrime, 1e-9 * a.efl);
+    EXPECT_NEAR(b.zF, a.zF, 1e-9 * a.efl);
+    EXPECT_NEAR(b.zP, a.zP, 1e-9 * a.efl);
+    // The real layout: the axis turns by 90 degrees at the mirror, 35 mm behind the front vertex.
+    std::vector<Vec3> path;
+    TraceOptions options;
+    options.path = &path;
+    const TraceResult r = traceRay(f, {{0, 0, 10}, {0, 0, -1}}, TraceDirection::SceneToFilm, options);
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(path.size(), 4u);
+    EXPECT_NEAR(path[3].z, -35, 1e-12);
+    EXPECT_NEAR(path[3].y, 0, 1e-12);
+    // In image space the ray runs along the axis toward the film, as through the unfolded lens.
+    EXPECT_NEAR(r.ray.direction.z, -1, 1e-15);
+}
+
+// A plate of thickness t and index n tilted by theta shifts a ray across by t sin(theta - theta') /
+// cos theta', sin theta' = sin theta / n, and leaves it parallel.
+TEST(Frames, TiltedPlateShiftsARayByTheClosedForm) {
+    const double t = 8, theta = 25;
+    const std::string text = "rdm\nso 0 1e10\ns 0 20\nsto\ns 0 8 1.7,50\nade 25\ns 0 30\nade 25; rev\nepd 10; wl 587.56\n";
+    const LensSystem lens = buildLensSystem(parseCodeV(text, "plate.seq"));
+    // The model glass at 587.56 nm, a little off the d line its 1.7 is stated at.
+    const double n = lens.surfaces[1].indexAfter;
+    ASSERT_NEAR(n, 1.7, 1e-6);
+    const double th = theta * kPi / 180, thPrime = std::asin(std::sin(th) / n);
+    const double expected = t * std::sin(th - thPrime) / std::cos(thPrime);
+    // The ray's line before and after, in object-space coordinates.
+    RigidMotion toImage;
+    for (const Surface& s : lens.surfaces) toImage = toImage.then(s.before).then(s.after);
+    const RigidMotion toObject = toImage.inverse();
+    for (double y : {-2.0, 0.0, 3.0}) {
+        const Ray in{{0, y, 10}, {0, 0, -1}};
+        const TraceResult r = traceRay(lens, in, TraceDirection::SceneToFilm);
+        ASSERT_TRUE(r.ok());
+        // REV turns the axis back after the plate: in image-space coordinates the ray leaves along z.
+        EXPECT_NEAR(r.ray.direction.y, 0, 1e-14);
+        EXPECT_NEAR(r.ray.direction.z, -1, 1e-14);
+        const auto p = toObject.applyToPoint({r.ray.origin.x, r.ray.origin.y, r.ray.origin.z});
+        const auto d = toObject.applyToDirection({r.ray.direction.x, r.ray.direction.y, r.ray.direction.z});
+        EXPECT_NEAR(d[0], 0, 1e-14);
+        EXPECT_NEAR(d[1], 0, 1e-14);
+        EXPECT_NEAR(d[2], -1, 1e-14);
+        EXPECT_NEAR(std::fabs(p[1] - y), expected, 1e-12);
+        EXPECT_NEAR(p[0], 0, 1e-14);
+    }
+}
+
+// The batch trace takes the same steps as the scalar one through frames, shapes and forms.
+TEST(Frames, BatchEqualsScalarThroughMovedShapedSurfaces) {
+    const std::string text = "rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ncir 9\ns -60 10\nyde 0.4; ade 2; dar\n"
+                             "rex 8; rey 6; ady 0.5\ns 0 -20 refl\nade 30; ben\ns 0 -5\ncir obs 1; ady 0.3\nepd 10; wl 587.56\n";
+    const LensSystem lens = buildLensSystem(parseCodeV(text, "b.seq"));
+    const std::vector<Ray> rays = testRays();
+    RayBatch batch;
+    batch.resize(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) batch.set(i, rays[i]);
+    traceBatch(lens, batch, TraceDirection::SceneToFilm);
+    int passed = 0, blocked = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const TraceResult r = traceRay(lens, rays[i], TraceDirection::SceneToFilm);
+        ASSERT_EQ(batch.blocked[i], r.blocked) << i;
+        if (!r.ok()) {
+            ++blocked;
+            continue;
+        }
+        ++passed;
+        const Ray b = batch.get(i);
+        EXPECT_EQ(b.origin.x, r.ray.origin.x);
+        EXPECT_EQ(b.origin.y, r.ray.origin.y);
+        EXPECT_EQ(b.origin.z, r.ray.origin.z);
+        EXPECT_EQ(b.direction.y, r.ray.direction.y);
+        EXPECT_EQ(b.direction.z, r.ray.direction.z);
+    }
+    EXPECT_GT(passed, 3);
+    EXPECT_GT(blocked, 0);  // the rectangle and the decentred obscuration stop some
+}
+
+// An off-axis paraboloid (a decentred section, the stop on the beam): the axis ray through the
+// stop's centre meets the mirror 50 mm off the parent axis and is turned onto z.
+TEST(Frames, OffAxisParaboloidIsMeasuredAlongItsAxisRay) {
+    const std::string text = "rdm\nso 0 1e10\ns 0 100\nsto\ncir 5\ns -200 -100 refl\ncon; k -1\nyde -50\nsi 0 0\n"
+                             "epd 10; wl 550\n";
+    const LensSystem lens = buildLensSystem(parseCodeV(text, "oap.seq"));
+    const auto axis = axisRay(lens);
+    ASSERT_TRUE(axis);
+    EXPECT_NEAR(axis->origin.y, 0, 1e-12);
+    const LensSystem aligned = alongAxisRay(lens);
+    const TraceResult r = traceRay(aligned, *axis, TraceDirection::SceneToFilm);
+    ASSERT_TRUE(r.ok());
+    EXPECT_NEAR(r.ray.direction.x, 0, 1e-12);
+    EXPECT_NEAR(r.ray.direction.y, 0, 1e-12);
+    EXPECT_NEAR(r.ray.direction.z, -1, 1e-12);
+    EXPECT_NEAR(r.ray.origin.y, 0, 1e-9);
+    // A paraboloid focuses a beam parallel to its axis at its focus, f + h^2 / (4 f) from the zone
+    // at height h: the focal length along the axis ray, and where the back focal point lies on it.
+    const double f = 100, h = 50, toFocus = f + h * h / (4 * f);
+    const FirstOrder fo = computeFirstOrder(aligned);
+    EXPECT_NEAR(fo.efl, toFocus, 1e-6 * toFocus);
+    EXPECT_NEAR(fo.zFPrime, r.ray.origin.z - toFocus, 1e-6 * toFocus);
+}
