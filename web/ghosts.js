@@ -49,6 +49,7 @@ export function showGhosts(body) {
     `beside the direct image of a source ${body.source_diameter_deg}° across (the sun).`;
   $("ghost-plot").replaceChildren(ghosts.length ? ghostPlot(ghosts) : "");
   const rows = $("ghost-table").tBodies[0];
+  $("ghost-table").dataset.lens = body.id;  // which lens the rows are of
   rows.replaceChildren();
   ghosts.forEach((g, i) => {
     const tr = rows.insertRow();

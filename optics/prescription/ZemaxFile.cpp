@@ -82,6 +82,7 @@ struct Reader {
     std::vector<std::string> catalogs;
     std::vector<RawSurface> surfaces;
     int stopLine = 0;
+    std::vector<LensWarning> warnings;
 
     [[noreturn]] void fail(int line, const std::string& problem) const { throw LensTableError(name, line, problem); }
 
@@ -247,7 +248,8 @@ void readGlas(Reader& r, const Line& l) {
 }
 
 // COAT name: lenslab's coating text (prescription/Coating.h), which covers the names of single
-// materials Zemax uses (MGF2); coatings defined only in a COATING.DAT file are refused by name.
+// materials Zemax uses (MGF2). A coating defined only in a COATING.DAT file (a vendor's THORC)
+// leaves the surface with the default coating and a warning: it changes ghosts, not the image.
 void readCoat(Reader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     s.coating = trimmed(l.rest);
@@ -255,7 +257,9 @@ void readCoat(Reader& r, const Line& l) {
     try {
         parseCoating(s.coating);
     } catch (const CoatingError& e) {
-        r.fail(l.number, std::string(e.what()) + "; lenslab does not read Zemax's COATING.DAT");
+        r.warnings.push_back({l.number, "coating " + s.coating.substr(0, 40) + " is not one lenslab knows (" + e.what() +
+                                            "; it does not read Zemax's COATING.DAT): the default coating stands in"});
+        s.coating.clear();
     }
 }
 
@@ -622,6 +626,7 @@ LensTable assemble(const Reader& r, int lastLine) {
     if (image.type == "COORDBRK") r.fail(image.line, "the image surface cannot be a coordinate break");
     t.imageFrame = surfaceTilt(r, image);
     if (object.thicknessLine && std::fabs(object.thickness) < 1e10) t.objectDistance = object.thickness * r.millimetresPerUnit;
+    t.warnings.insert(t.warnings.begin(), r.warnings.begin(), r.warnings.end());
     return t;
 }
 

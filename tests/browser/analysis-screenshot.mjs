@@ -36,7 +36,7 @@ async function main() {
     if (upload) {
       before = await shownCount(page);
       await page.setInputFiles("#lens-file", upload);
-      await page.waitForFunction(() => document.querySelector("#lens-title").textContent.startsWith("upload-"));
+      await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
       await analysisShown(page, before);
       await (await page.$("#analysis")).screenshot({ path: join(outDir, `web-analysis-${basename(upload, extname(upload))}.png`) });
       before = await shownCount(page);

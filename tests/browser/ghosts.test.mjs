@@ -57,12 +57,14 @@ async function checkEditedCoating(page, base, before) {
   await page.press(cell, "Tab");
   await page.fill("#editor-name", "dgauss-bare-front");
   await page.click("#editor-save");
-  await page.waitForFunction(() => document.querySelector("#lens-title").textContent.startsWith("upload-"));
+  await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
   await page.waitForFunction(() => document.querySelector("#lens-surfaces tbody tr td:nth-child(11)").textContent === "");
   const surfaces = await tableRows(page, "#lens-surfaces");
   check(surfaces[0][10] === "" && Math.abs(Number(surfaces[0][11]) - BARE_FRONT_PERCENT) < 0.001,
         `saved bare front: R ${surfaces[0][11]} % (Fresnel: ${BARE_FRONT_PERCENT.toFixed(4)} %)`);
-  await page.waitForFunction(() => document.querySelectorAll("#ghost-table tbody tr").length === 45);
+  const saved = await page.getAttribute("#lens-title", "data-id");
+  await page.waitForFunction((id) => document.querySelector("#ghost-table").dataset.lens === id &&
+                                     document.querySelectorAll("#ghost-table tbody tr").length === 45, saved);
   const after = await tableRows(page, "#ghost-table");
   const intensity = (rows, pair) => Number(rows.find((cells) => cells[1] === pair)[7]);
   check(intensity(after, "10–1") > 5 * intensity(before, "10–1"), `ghost 10–1 brightens ${intensity(before, "10–1")} -> ${intensity(after, "10–1")}`);

@@ -230,9 +230,15 @@ TEST(Zemax, CoatingsAreReadFromCoat) {
     EXPECT_EQ(parseZemax(singlet("  COAT"), "blank.zmx").rows[0].coating, "");
 }
 
-TEST(ZemaxErrors, CoatingDefinedOnlyInACoatingFile) {
-    expectError(singlet("  COAT HEAR1"), 13, "unknown material 'HEAR1'");
-    expectError(singlet("  COAT HEAR1"), 13, "does not read Zemax's COATING.DAT");
+// A vendor's coating defined only in a COATING.DAT file (Thorlabs' THORC): the lens reads, the
+// surface keeps the default coating, and a warning names the line and the coating.
+TEST(Zemax, CoatingDefinedOnlyInACoatingFileIsWarnedAbout) {
+    const LensTable t = parseZemax(singlet("  COAT THORC"), "thorlabs.zmx");
+    EXPECT_EQ(t.rows[0].coating, "");
+    ASSERT_EQ(t.warnings.size(), 1u);
+    EXPECT_EQ(t.warnings[0].line, 13);
+    EXPECT_NE(t.warnings[0].message.find("coating THORC"), std::string::npos) << t.warnings[0].message;
+    EXPECT_NE(t.warnings[0].message.find("COATING.DAT"), std::string::npos) << t.warnings[0].message;
 }
 
 TEST(ZemaxErrors, CoatingOnAMirror) {

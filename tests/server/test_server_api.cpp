@@ -9,6 +9,7 @@
 #include <future>
 #include <thread>
 
+#include "RawConnection.h"
 #include "ServerProcess.h"
 
 using namespace lenslab::test;
@@ -167,11 +168,18 @@ TEST_F(ServerApi, UploadNamesNeverBecomePaths) {
         EXPECT_EQ(entry.path().filename().string().find("evil"), std::string::npos) << entry.path();
 }
 
+// The server may answer 413 as soon as it reads the Content-Length and close while the body is
+// still on its way, so the body is sent on a raw connection that tolerates the close.
 TEST_F(ServerApi, RefusesOversizedBodies) {
+    RawConnection connection(server_->port());
+    const std::size_t size = 2 << 20;
+    connection.send("POST /api/lenses HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: text/plain\r\nContent-Length: " +
+                    std::to_string(size) + "\r\n\r\n");
+    connection.send(std::string(size, '1'));
+    const std::string reply = connection.readReply(10);
+    EXPECT_EQ(statusOf(reply), 413) << reply.substr(0, 400);
+    EXPECT_NE(reply.find("\"error\""), std::string::npos) << reply.substr(0, 400);
     auto c = client();
-    const Reply big = postRaw(c, "/api/lenses", std::string(2 << 20, '1'));
-    EXPECT_EQ(big.status, 413);
-    EXPECT_TRUE(big.body.contains("error")) << big.raw;
     EXPECT_EQ(get(c, "/api/health").status, 200);
 }
 
