@@ -13,11 +13,18 @@ export function showMessage(text, kind = "error") {
 
 export function clearMessage() { $("message").hidden = true; }
 
-// fetch() with the API token; a 401 is also shown next to the token field.
+// fetch() with the API token; a 401 is also shown next to the token field. A busy service answers
+// 429 with Retry-After (its heavy-work pool or this client's share of it is full, as when a lens's
+// diagram, analysis and ghosts for several settings are on their way): asked again after that wait,
+// up to five times.
 export async function authorizedFetch(path, options = {}) {
-  const response = await fetch(path, { ...options, headers: withToken(options.headers) });
-  if (response.status === 401) tokenRefused();
-  return response;
+  for (let attempt = 1; ; ++attempt) {
+    const response = await fetch(path, { ...options, headers: withToken(options.headers) });
+    if (response.status === 401) tokenRefused();
+    if (response.status !== 429 || attempt === 5) return response;
+    const seconds = Math.min(Math.max(Number(response.headers.get("Retry-After")) || 1, 0.1), 10);
+    await new Promise((resolve) => setTimeout(resolve, seconds * 1000));
+  }
 }
 
 // Fetches JSON; throws an Error carrying the service's {"error"} text (and .status, .body) or a description.
