@@ -14,7 +14,7 @@ round=1
 while [ "$round" -le "$rounds" ]; do
   for b in "$old" "$new"; do
     echo "=== round $round: $b"
-    "$b/bench/optics/bench_trace" --benchmark_counters_tabular=true 2>/dev/null | grep -E '^(BM|Trace|trace)|rays' || true
+    "$b/bench/optics/bench_trace" 2>/dev/null | grep -E 'Trace ' || true
     "$b/bench/renderer/frame_cpu_ratios" 1 2>/dev/null | tail -n 8
     "$b/bench/renderer/lenslab_render_bench" 2 2>/dev/null | grep '^|' || true
   done
