@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "FuzzCheck.h"
+#include "PrescriptionInvariants.h"
 #include "prescription/CodeVFile.h"
 #include "prescription/LensSystem.h"
 #include "prescription/OpticsError.h"
@@ -18,26 +18,21 @@ namespace {
 
 void checkTable(const LensTable& t) {
     check(t.format == "seq" && t.layout == TableLayout::GapAfter, "a .seq is a gap-after seq table");
-    check(!t.rows.empty() && t.rows.size() <= std::size_t(kMaxLensSurfaces), "1..kMaxLensSurfaces rows");
     int stops = 0;
     for (const LensTableRow& r : t.rows) {
         stops += r.stop;
-        check(std::isfinite(r.radius) && std::isfinite(r.gap) && std::isfinite(r.conic), "finite geometry");
-        for (double a : r.aspheric) check(std::isfinite(a), "finite aspheric terms");
+        fuzz::checkRowGeometry(r);
         check(r.automaticDiameter || r.clearShape || (r.diameter > 0 && std::isfinite(r.diameter)),
               "a stated diameter is positive and finite");
         check(r.index == 0 || r.index > 1, "index 0 (air) or > 1");
-        check(r.abbe >= 0 && std::isfinite(r.abbe), "finite Abbe number >= 0");
-        check(r.line >= 1, "rows name their line");
+        fuzz::checkRowMedium(r);
         if (r.frame) {
             for (double d : r.frame->decentre) check(std::isfinite(d), "finite decentres");
             for (double a : r.frame->tiltDegrees) check(std::isfinite(a), "finite tilts");
         }
     }
-    check(stops == 1, "exactly one stop");
+    fuzz::checkTableWhole(t, stops);
     check(t.wavelengths.size() == t.wavelengthWeights.size(), "a weight per wavelength");
-    for (double w : t.wavelengths) check(w > 0 && std::isfinite(w), "positive finite wavelengths");
-    check(t.primaryWavelength > 0 && std::isfinite(t.primaryWavelength), "a positive primary wavelength");
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "FuzzCheck.h"
+#include "PrescriptionInvariants.h"
 #include "prescription/LensTable.h"
 #include "prescription/ZemaxFile.h"
 
@@ -17,13 +17,11 @@ namespace {
 
 void checkTable(const LensTable& t) {
     check(t.format == "zmx" && t.layout == TableLayout::GapAfter, "a .zmx is a gap-after zmx table");
-    check(!t.rows.empty() && t.rows.size() <= std::size_t(kMaxLensSurfaces), "1..kMaxLensSurfaces rows");
     int stops = 0, mirrors = 0;
     for (const LensTableRow& r : t.rows) {
         stops += r.stop;
         mirrors += r.mirror;
-        check(std::isfinite(r.radius) && std::isfinite(r.gap) && std::isfinite(r.conic), "finite geometry");
-        for (double a : r.aspheric) check(std::isfinite(a), "finite aspheric terms");
+        fuzz::checkRowGeometry(r);
         if (r.coordinateBreak) {
             check(r.frame.has_value() && r.diameter == 0, "a coordinate break carries a frame, no aperture");
             continue;
@@ -31,13 +29,10 @@ void checkTable(const LensTable& t) {
         check(r.diameter > 0 && std::isfinite(r.diameter), "positive finite diameter");
         check(r.obscurationDiameter >= 0 && r.obscurationDiameter < r.diameter, "obscuration inside the aperture");
         check(r.index == 0 || r.index >= 1, "index 0 (air) or >= 1");
-        check(r.abbe >= 0 && std::isfinite(r.abbe), "finite Abbe number >= 0");
+        fuzz::checkRowMedium(r);
         check(r.gap >= 0 || mirrors % 2 == 1, "negative gaps only after an odd number of mirrors");
-        check(r.line >= 1, "rows name their line");
     }
-    check(stops == 1, "exactly one stop");
-    for (double w : t.wavelengths) check(w > 0 && std::isfinite(w), "positive finite wavelengths");
-    check(t.primaryWavelength > 0 && std::isfinite(t.primaryWavelength), "a positive primary wavelength");
+    fuzz::checkTableWhole(t, stops);
 }
 
 }  // namespace
