@@ -56,6 +56,14 @@ std::string inputsKey(const DesignAnalysisInputs& in) {
         .dump();
 }
 
+// A cached JSON object answered with the lens's own fields first (the cache is shared by every
+// upload of the same table, so it holds none of them): `head`'s members spliced into it, unparsed.
+void replyCachedObject(httplib::Response& res, const json& head, const std::string& cached) {
+    const std::string text = head.dump(-1, ' ', false, json::error_handler_t::replace);
+    res.status = 200;
+    res.set_content(text.substr(0, text.size() - 1) + "," + cached.substr(1), "application/json");
+}
+
 }  // namespace
 
 void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
@@ -73,9 +81,7 @@ void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
             body.erase("name");
             return textBytes(body.dump(-1, ' ', false, json::error_handler_t::replace));
         });
-        const std::string head = json{{"id", lens->id}, {"name", lens->name}}.dump(-1, ' ', false, json::error_handler_t::replace);
-        res.status = 200;
-        res.set_content(head.substr(0, head.size() - 1) + "," + bytesText(*analysis).substr(1), "application/json");
+        replyCachedObject(res, {{"id", lens->id}, {"name", lens->name}}, bytesText(*analysis));
     });
     server.Get(R"(/api/lenses/([^/]+)/ghosts)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
@@ -89,9 +95,7 @@ void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
                 return textBytes(ghostAnalysisJson(analyzeGhosts(analyzeLens(lens->system, settings)))
                                      .dump(-1, ' ', false, json::error_handler_t::replace));
             });
-        const std::string head = json{{"id", lens->id}}.dump();
-        res.status = 200;
-        res.set_content(head.substr(0, head.size() - 1) + "," + bytesText(*ghosts).substr(1), "application/json");
+        replyCachedObject(res, {{"id", lens->id}}, bytesText(*ghosts));
     });
 }
 
