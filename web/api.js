@@ -16,14 +16,17 @@ export function clearMessage() { $("message").hidden = true; }
 // fetch() with the API token; a 401 is also shown next to the token field. A busy service answers
 // 429 with Retry-After (its heavy-work pool or this client's share of it is full, as when a lens's
 // diagram, analysis and ghosts for several settings are on their way): asked again after that wait,
-// up to five times.
+// for up to a minute, so that a save or upload clicked while the page's own work fills its share
+// waits its turn instead of failing.
+const BUSY_PATIENCE_S = 60;
 export async function authorizedFetch(path, options = {}) {
-  for (let attempt = 1; ; ++attempt) {
+  for (let waited = 0; ; ) {
     const response = await fetch(path, { ...options, headers: withToken(options.headers) });
     if (response.status === 401) tokenRefused();
-    if (response.status !== 429 || attempt === 5) return response;
+    if (response.status !== 429 || waited >= BUSY_PATIENCE_S) return response;
     const seconds = Math.min(Math.max(Number(response.headers.get("Retry-After")) || 1, 0.1), 10);
     await new Promise((resolve) => setTimeout(resolve, seconds * 1000));
+    waited += seconds;
   }
 }
 

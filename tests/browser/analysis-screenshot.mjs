@@ -7,7 +7,7 @@
 import { mkdtempSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { basename, extname, join } from "node:path";
-import { closeAll, openPage } from "./serve.mjs";
+import { closeAll, openPage, waitForUpload } from "./serve.mjs";
 
 const [binary, outDir, upload] = process.argv.slice(2);
 if (!binary || !outDir) {
@@ -36,7 +36,7 @@ async function main() {
     if (upload) {
       before = await shownCount(page);
       await page.setInputFiles("#lens-file", upload);
-      await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
+      await waitForUpload(page);
       await analysisShown(page, before);
       await (await page.$("#analysis")).screenshot({ path: join(outDir, `web-analysis-${basename(upload, extname(upload))}.png`) });
       before = await shownCount(page);

@@ -9,7 +9,7 @@
 import { mkdtempSync, readFileSync } from "node:fs";
 import { cpus, loadavg, tmpdir } from "node:os";
 import { join } from "node:path";
-import { closeAll, openPage } from "./serve.mjs";
+import { closeAll, openPage, waitForUpload } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -153,8 +153,8 @@ async function main() {
     // Save as new: a new lens in the list, selected, with the edited EFL.
     await page.fill("#editor-name", "dgauss-r31");
     await page.click("#editor-save");
-    await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-") &&
-                                     [...document.querySelectorAll("#lens-list button")].some((b) => b.textContent.startsWith("dgauss-r31")));
+    await waitForUpload(page);
+    await page.waitForFunction(() => [...document.querySelectorAll("#lens-list button")].some((b) => b.textContent.startsWith("dgauss-r31")));
     const savedId = await page.getAttribute("#lens-title", "data-id");
     const saved = await (await page.request.get(`${base}api/lenses/${savedId}`)).json();
     check(Math.abs(saved.efl - editedEfl) < 1e-3, `saved as ${savedId} "${saved.name}" with EFL ${saved.efl.toFixed(4)}`);

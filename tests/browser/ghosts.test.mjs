@@ -8,7 +8,7 @@ import { mkdirSync, mkdtempSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { launchBrowser, startServer, closeAll } from "./serve.mjs";
+import { closeAll, openPage, waitForUpload } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -57,7 +57,7 @@ async function checkEditedCoating(page, base, before) {
   await page.press(cell, "Tab");
   await page.fill("#editor-name", "dgauss-bare-front");
   await page.click("#editor-save");
-  await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
+  await waitForUpload(page);
   await page.waitForFunction(() => document.querySelector("#lens-surfaces tbody tr td:nth-child(11)").textContent === "");
   const surfaces = await tableRows(page, "#lens-surfaces");
   check(surfaces[0][10] === "" && Math.abs(Number(surfaces[0][11]) - BARE_FRONT_PERCENT) < 0.001,
@@ -88,13 +88,8 @@ async function checkFlareRender(page, base) {
 }
 
 async function main() {
-  const { server, base } = await startServer(binary, work);
-  const context = await launchBrowser({ width: 1280, height: 900 });
-  const page = context.pages()[0] || await context.newPage();
+  const { server, base, context, page } = await openPage(binary, work, { width: 1280, height: 900 });
   try {
-    page.setDefaultTimeout(30000);
-    await page.goto(base);
-    await page.waitForSelector("body[data-ready]");
     const before = await checkGhostPanel(page, base);
     await checkEditedCoating(page, base, before);
     await checkFlareRender(page, base);

@@ -1,5 +1,6 @@
 // Browser test of the lenslab web page: starts `lenslab serve` on a free loopback port, then in
-// headless Chromium drives it as a user would: uploads (file picker, drag-and-drop, a bad table),
+// headless Chromium drives it as a user would: uploads (file picker, drag-and-drop, a bad table, a
+// busy service),
 // the f-number keys and input, renders of the shared telephoto scene shown at the report's exposure,
 // the exposure control (no new request), the compare view, history after a reload, accessibility
 // at 1280x800 and on a 390-wide phone, the report build, and deleting a render.
@@ -9,7 +10,7 @@ import { mkdtempSync, mkdirSync, copyFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, dirname } from "node:path";
 import { fileURLToPath } from "node:url";
-import { launchBrowser, startServer, closeAll } from "./serve.mjs";
+import { closeAll, launchBrowser, startServer, waitForUpload } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -48,10 +49,20 @@ async function checkLensControls(page, work) {
   await page.waitForSelector('#lens-list button[data-id="dgauss.50mm"]');
   check((await page.title()) === "lenslab", "the page loads with the bundled lenses");
 
+  // The service answers the upload 429 (its work pool busy, Retry-After 1 s) eight times: the
+  // page waits and asks again until it is taken.
   const upload = join(work, "my-wide.dat");
   copyFileSync(join(sourceDir, "lenses", "wide.dat"), upload);
+  let refusals = 0;
+  const busy = (route) => (route.request().method() === "POST" && refusals < 8
+    ? (++refusals, route.fulfill({ status: 429, headers: { "Retry-After": "1" }, contentType: "application/json",
+                                   body: '{"error":"the server is busy with heavy work"}' }))
+    : route.continue());
+  await page.route(/\/api\/lenses(\?[^/]*)?$/, busy);
   await page.setInputFiles("#lens-file", upload);
-  await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
+  await waitForUpload(page);
+  await page.unroute(/\/api\/lenses(\?[^/]*)?$/, busy);
+  check(refusals === 8, "an upload refused 8 times as busy (429, Retry-After 1 s) is asked again until it is taken");
   await page.waitForSelector("#message.info");
   const title = await page.textContent("#lens-title");
   const listed = await page.$eval("#lens-list button[aria-current=true]", (b) => b.firstChild.textContent);

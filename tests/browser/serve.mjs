@@ -55,6 +55,21 @@ export async function openPage(binary, work, viewport) {
   }
 }
 
+// Waits until an uploaded (or saved-as-new) lens is selected. An upload is parsed in the service's
+// work pool, behind whatever the page has asked for already, so this waits up to 120 s; a refusal the
+// page shows (the upload's message, the editor's "Not saved") fails it at once, in the page's words.
+export async function waitForUpload(page) {
+  const outcome = await page.waitForFunction(() => {
+    const status = document.querySelector("#editor-status");
+    if (status && status.classList.contains("bad") && status.textContent.startsWith("Not saved")) return status.textContent;
+    const message = document.querySelector("#message");
+    if (!message.hidden && message.textContent.includes("was not accepted")) return message.textContent;
+    return document.querySelector("#lens-title").dataset.id.startsWith("upload-") ? "selected" : false;
+  }, null, { timeout: 120000 });
+  const value = await outcome.jsonValue();
+  if (value !== "selected") throw new Error("the upload was refused: " + value);
+}
+
 export function launchBrowser(viewport) {
   return chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), "lenslab-chromium-")), {
     executablePath: "/usr/bin/chromium",

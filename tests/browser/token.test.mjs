@@ -8,7 +8,7 @@ import { copyFileSync, mkdirSync, mkdtempSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { launchBrowser, startServer, closeAll } from "./serve.mjs";
+import { closeAll, launchBrowser, startServer, waitForUpload } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -62,7 +62,7 @@ async function main() {
     await page.press("#token-input", "Enter");
     check((await page.textContent("#token-status")) === "Token set for this tab.", "the token is taken");
     await page.setInputFiles("#lens-file", table);
-    await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
+    await waitForUpload(page);
     await page.waitForSelector("#message.info");
     check(uploads.at(-1) === "Bearer " + token, "the upload carried 'Authorization: Bearer TOKEN'");
     check(!(await page.getAttribute("#token-status", "class")).includes("refused"), "and the refusal is gone");

@@ -8,7 +8,7 @@ import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { launchBrowser, startServer, closeAll } from "./serve.mjs";
+import { closeAll, launchBrowser, startServer, waitForUpload } from "./serve.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -52,7 +52,7 @@ async function main() {
     await page.goto(base);
     await page.waitForSelector("body[data-ready]");
     await page.setInputFiles("#lens-file", upload);
-    await page.waitForFunction(() => document.querySelector("#lens-title").dataset.id.startsWith("upload-"));
+    await waitForUpload(page);
     await page.waitForSelector("#message.info");
     // The uploaded lens's own tables (not the previous lens's): its model glasses show.
     await page.waitForFunction(() => document.querySelector("#lens-surfaces tbody").textContent.includes("model 1.58144"));
