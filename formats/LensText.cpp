@@ -66,16 +66,14 @@ std::string lensAnalysisText(const LensAnalysis& a) {
         return out;
     }
     out += "First order\n";
+    line(out, "effective focal length", fo.efl);
+    line(out, "back focal distance", fo.backFocalDistance, "rear vertex to F'");
     if (!a.incomplete.empty()) {
-        line(out, "effective focal length", fo.efl);
-        line(out, "back focal distance", fo.backFocalDistance, "rear vertex to F'");
         line(out, "F'  (rear focal point) z", fo.zFPrime);
         line(out, "P'  (rear principal) z", fo.zPPrime);
         out += "\nNo aperture or focus: " + a.incomplete + "\n\n" + surfaceTable(a.lens);
         return out;
     }
-    line(out, "effective focal length", fo.efl);
-    line(out, "back focal distance", fo.backFocalDistance, "rear vertex to F'");
     line(out, "front focal distance", fo.frontFocalDistance, "F to front vertex");
     line(out, "F   (front focal point) z", fo.zF);
     line(out, "F'  (rear focal point) z", fo.zFPrime);

@@ -199,13 +199,13 @@ function updateAnalysis() {
   else showStoredAnalysis(state.lensId, analysisLensQuery());
 }
 
-// The wavelength box: empty is the lens's own primary wavelength; out-of-range values are marked and
-// nothing is asked for until they are corrected (null).
+// The wavelength box: empty is the lens's own primary wavelength; values outside the box's range
+// (the service's, 180-2500 nm) are marked and nothing is asked for until they are corrected (null).
 function wavelengthParameter() {
   const input = $("wavelength");
   const text = input.value.trim();
   const nm = Number(text);
-  const ok = text === "" || (isFinite(nm) && nm >= 360 && nm <= 830);
+  const ok = text === "" || (isFinite(nm) && nm >= Number(input.min) && nm <= Number(input.max));
   input.setAttribute("aria-invalid", String(!ok));
   $("wavelength-note").classList.toggle("bad", !ok);
   return !ok ? null : text !== "" ? `&wavelength=${nm}` : "";

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "prescription/AutomaticApertures.h"
@@ -213,6 +214,7 @@ LensSystem buildLensSystem(const LensTable& table) {
     RigidMotion pending;  // coordinate breaks not yet met by a surface
     std::vector<const LensTableRow*> surfaceRows;  // each surface's row (coordinate breaks have none)
     Medium medium = air();
+    std::set<std::string> warnedMedia;  // each glass's data checked against the wavelengths once
     for (int i = 0; i < n; ++i) {
         const LensTableRow& r = rows[i];
         if (table.layout == TableLayout::GapBefore) z -= r.gap;
@@ -226,6 +228,8 @@ LensSystem buildLensSystem(const LensTable& table) {
         Surface s = surfaceOf(r, z);
         // A mirror sends the ray back through the medium it came from.
         s.mediumAfter = r.mirror ? medium : rowMedium(table, r, lens.warnings);
+        if (!r.mirror && warnedMedia.insert(s.mediumAfter.name + "/" + s.mediumAfter.catalog).second)
+            if (auto beyond = wavelengthsBeyondData(table, r, s.mediumAfter)) lens.warnings.push_back({r.line, *beyond});
         medium = s.mediumAfter;
         s.frame = r.frame;
         if (r.frame) {

@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "prescription/GlassCatalog.h"
+#include "prescription/NumberText.h"
+#include "prescription/Wavelength.h"
 
 namespace lenslab {
 
@@ -107,6 +109,26 @@ Medium rowMedium(const LensTable& table, const LensTableRow& r, std::vector<Lens
         return modelGlass(r.index, r.abbe);
     }
     return r.index == 0 || r.index == 1 ? air() : constantIndex(r.index);
+}
+
+std::optional<std::string> wavelengthsBeyondData(const LensTable& table, const LensTableRow& row, const Medium& medium) {
+    const bool model = row.glass.empty() && row.abbe > 0;
+    const double first = model ? kVisibleFirstNm : medium.minNm, last = model ? kVisibleLastNm : medium.maxNm;
+    if (!(last > first)) return std::nullopt;
+    std::vector<double> nm = table.wavelengths;
+    nm.push_back(table.primaryWavelength);
+    std::sort(nm.begin(), nm.end());
+    nm.erase(std::unique(nm.begin(), nm.end()), nm.end());
+    std::string outside;
+    for (double w : nm)
+        if (w < first || w > last)
+            outside += (outside.empty() ? "" : ", ") + formatNumber(w) + " nm (n " + formatNumber(refractiveIndex(medium, w), 6) + ")";
+    if (outside.empty()) return std::nullopt;
+    const std::string what = model ? "model glass " + formatNumber(row.index, 6) + "/" + formatNumber(row.abbe, 4) +
+                                         ", fitted to the visible,"
+                                   : medium.name + (medium.catalog.empty() ? "" : " (" + medium.catalog + ")") + "'s data";
+    return what + " cover" + (model ? "s " : " ") + formatNumber(first) + "-" + formatNumber(last) +
+           " nm: its index is extrapolated to " + outside;
 }
 
 }  // namespace lenslab

@@ -281,7 +281,7 @@ TEST(CodeVErrors, EveryRefusalNamesTheLineAndCommand) {
     expectError(achromat("  K 1e999"), 16, "not a finite number");
     expectError(achromat("  S 1"), 16, "S needs a radius");
     expectError(achromat("REF 4"), 16, "REF 4 names no WL wavelength");
-    expectError(achromat("WL 587.56 1550"), 16, "WL: wavelength 1550 nm lies outside 360-830 nm");
+    expectError(achromat("WL 587.56 3390"), 16, "WL: wavelength 3390 nm lies outside 180-2500 nm");
     expectError(achromat("", "DIM Q"), 1, "DIM Q is not one of");
     expectError(achromat("", "STO"), 1, "STO before the first surface");
     expectError("so 0 1\nsi 0 0\n", 2, "no lens surfaces");

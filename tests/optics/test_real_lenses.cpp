@@ -90,14 +90,14 @@ TEST(RealLenses, WavelengthMovesTheFirstOrderDataAsTheGlassesSay) {
     EXPECT_NEAR(atWavelength(lens, 435.8343).surfaces[1].indexAfter, 1.52668, 1e-5);
 }
 
-TEST(RealLenses, WavelengthOutsideTheVisibleIsRefusedNamingItsSource) {
+TEST(RealLenses, WavelengthBeyondGlassDataIsRefusedNamingItsSource) {
     LensSettings s;
-    s.wavelength = Setting{1550, "--wavelength"};
+    s.wavelength = Setting{3390, "--wavelength"};
     try {
         analyzeLens(loadLensSystem(kLenses + "ac254-100-a.dat"), s);
         FAIL();
     } catch (const std::exception& e) {
-        EXPECT_STREQ(e.what(), "--wavelength: wavelength 1550 nm lies outside 360-830 nm");
+        EXPECT_STREQ(e.what(), "--wavelength: wavelength 3390 nm lies outside 180-2500 nm");
     }
 }
 

@@ -11,6 +11,7 @@
 #include "prescription/LensSystem.h"
 #include "prescription/LensTable.h"
 #include "prescription/ZemaxFile.h"
+#include "settings/LensAnalysis.h"
 #include "Utf16.h"
 
 using namespace lenslab;
@@ -406,15 +407,48 @@ TEST(ZemaxErrors, NoSemiDiameter) { expectError(replaced(singlet(), "  DIAM 10\n
 TEST(ZemaxErrors, ModelGlassWithoutAbbeNumber) { expectError(singlet("  GLAS ___BLANK 1 0 1.5"), 13, "a model glass needs nd >= 1 and Vd >= 0"); }
 TEST(ZemaxErrors, IndexBelowOne) { expectError(singlet("  GLAS F2 0 0 0.5 30"), 13, "nd 0.5 is below 1"); }
 TEST(ZemaxErrors, PrimaryWavelengthMissing) { expectError(singlet("  CONI 0", "WAVM 1 0.55 1\nPWAV 3"), 3, "PWAV 3 names no WAVM wavelength (1..1)"); }
-// The wavelengths a file lists are ones lenslab traces (360-830 nm), the primary above all: WAVM 1
-// 0.1 used to give a lens at 100 nm (EFL 6.28 mm), and 1e300 um a wavelength_nm of 1e+303.
+// The wavelengths a file lists are ones lenslab traces (180-2500 nm, where glass data reach), the
+// primary above all: WAVM 1 0.1 used to give a lens at 100 nm (EFL 6.28 mm), and 1e300 um a
+// wavelength_nm of 1e+303.
 TEST(ZemaxErrors, WavelengthsOutsideTheTracedRange) {
-    expectError(singlet("  CONI 0", "WAVM 1 0.1 1"), 2, "WAVM: wavelength 100 nm lies outside 360-830 nm");
+    expectError(singlet("  CONI 0", "WAVM 1 0.1 1"), 2, "WAVM: wavelength 100 nm lies outside 180-2500 nm");
     expectError(singlet("  CONI 0", "WAVM 1 1e300 1"), 2, "wavelength 1e+303 nm lies outside");
     expectError(singlet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 -0.5 1\nPWAV 1"), 3, "wavelength -500 nm");
-    expectError(singlet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 1.064 1\nPWAV 1"), 3, "wavelength 1064 nm");
-    EXPECT_NEAR(parseZemax(singlet("  CONI 0", "WAVM 1 0.36 1\nWAVM 2 0.83 1\nPWAV 2"), "ends.zmx").primaryWavelength, 830, 1e-9);
+    expectError(singlet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 10.6 1\nPWAV 1"), 3, "wavelength 10600 nm");
+    EXPECT_NEAR(parseZemax(singlet("  CONI 0", "WAVM 1 0.18 1\nWAVM 2 2.5 1\nPWAV 2"), "ends.zmx").primaryWavelength, 2500, 1e-9);
 }
+// A telecom lens at 1550 nm and a lithography lens at 248 nm read: N-BK7 at 1550 nm is Schott's
+// Sellmeier formula there (written out below, independent of the catalog), and the singlet's EFL is
+// the thick-lens formula's with that index. Where a glass's data do not reach a listed wavelength
+// the lens reads with a warning: N-BK7 (Schott's data: 300-2500 nm) at 248 nm, a model glass
+// (nd and Vd describe the visible) at 1550 nm; N-BK7 at 1550 nm draws none.
+TEST(ZemaxWavelengths, InfraredAndUltravioletLensesReadWarningWhereGlassDataEnd) {
+    const double l2 = 1.55 * 1.55;
+    const double nBk7 = std::sqrt(1 + 1.03961212 * l2 / (l2 - 0.00600069867) + 0.231792344 * l2 / (l2 - 0.0200179144) +
+                                  1.01046945 * l2 / (l2 - 103.560653));
+    const LensSystem ir = buildLensSystem(parseZemax(singlet("  CONI 0", "WAVM 1 1.55 1\nPWAV 1"), "ir.zmx"));
+    EXPECT_DOUBLE_EQ(ir.primaryWavelength, 1550);
+    EXPECT_NEAR(ir.surfaces[0].mediumAfter.nd, 1.5168, 1e-12);
+    EXPECT_NEAR(refractiveIndex(ir.surfaces[0].mediumAfter, 1550), nBk7, 1e-12);
+    EXPECT_NEAR(nBk7, 1.50066, 1e-5);  // Schott's data sheet: 1.50066 at 1550 nm
+    const double r = 50, d = 5, power = (nBk7 - 1) * (2 / r - (nBk7 - 1) * d / (nBk7 * r * r));  // R1 = r, R2 = -r
+    EXPECT_NEAR(analyzeLens(ir, LensSettings{}).firstOrder.efl, 1 / power, 1e-9);
+    EXPECT_TRUE(ir.warnings.empty()) << ir.warnings.front().message;
+
+    const LensSystem uv = buildLensSystem(parseZemax(singlet("  CONI 0", "WAVM 1 0.248 1\nPWAV 1"), "uv.zmx"));
+    ASSERT_EQ(uv.warnings.size(), 1u);
+    EXPECT_EQ(uv.warnings[0].line, uv.surfaces[0].line);  // the glass's surface
+    EXPECT_EQ(uv.warnings[0].message.rfind("N-BK7 (SCHOTT)'s data cover 300-2500 nm: its index is extrapolated to 248 nm (n 1.5", 0), 0u)
+        << uv.warnings[0].message;
+
+    const LensSystem model = buildLensSystem(parseZemax(
+        replaced(singlet("  CONI 0", "WAVM 1 1.55 1\nWAVM 2 0.5876 1\nPWAV 2"), "GLAS N-BK7 0 0", "GLAS ___BLANK 1 0"), "model.zmx"));
+    ASSERT_EQ(model.warnings.size(), 1u);
+    EXPECT_EQ(model.warnings[0].message.rfind("model glass 1.5168/64.17, fitted to the visible, covers 360-830 nm: its index "
+                                              "is extrapolated to 1550 nm (n 1.5", 0), 0u)
+        << model.warnings[0].message;
+}
+
 TEST(ZemaxErrors, AsphereTermOutOfRange) { expectError(singlet("  TYPE EVENASPH\n  PARM 9 1"), 14, "PARM 9 is not one"); }
 TEST(ZemaxErrors, SurfaceLineBeforeAnySurface) { expectError(singlet("  CONI 0", "CURV 0.5"), 2, "CURV before the first SURF"); }
 

@@ -1,6 +1,6 @@
 // What goes in and what comes out (issue 32, findings 2, 4, 6, 7 and 8): names and numbers are checked
 // at the door (a glass name of a megabyte is refused before any search, a number past a double is 400
-// on every route, a wavelength outside 360-830 nm is refused wherever it enters); the writers refuse
+// on every route, a wavelength outside 180-2500 nm is refused wherever it enters); the writers refuse
 // what a file cannot hold instead of writing another lens; and no answer names a path on the server
 // or echoes a long value. LENSLAB_SERVER_BINARY overrides the binary under test.
 #include <gtest/gtest.h>
@@ -73,7 +73,7 @@ TEST_F(ServerInputAndMessages, NumbersPastADoubleAre400OnEveryRoute) {
     EXPECT_EQ(postRaw(c, "/api/report", "{\"spp\": 1e400}").status, 400);
 }
 
-// Finding 4: a .zmx primary wavelength outside 360-830 nm is refused like ?wavelength=100 (it gave a
+// Finding 4: a .zmx primary wavelength outside 180-2500 nm is refused like ?wavelength=100 (it gave a
 // lens at 100 nm, and one at 1e+303 nm).
 TEST_F(ServerInputAndMessages, AZemaxWavelengthOutsideTheRangeIsRefused) {
     auto c = server_->client();

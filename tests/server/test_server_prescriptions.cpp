@@ -90,12 +90,12 @@ TEST_F(ServerPrescriptions, WavelengthMovesTheLensDataAndTheDiagram) {
 
 TEST_F(ServerPrescriptions, BadWavelengthAndColourAreRefusedNamingTheParameter) {
     auto c = server_->client();
-    const Reply far = get(c, "/api/lenses/ac254-100-a?wavelength=1550");
+    const Reply far = get(c, "/api/lenses/ac254-100-a?wavelength=3000");
     EXPECT_EQ(far.status, 422);
-    EXPECT_EQ(far.body["error"], "query parameter wavelength: wavelength 1550 nm lies outside 360-830 nm");
+    EXPECT_EQ(far.body["error"], "query parameter wavelength: wavelength 3000 nm lies outside 180-2500 nm");
     EXPECT_EQ(get(c, "/api/lenses/ac254-100-a?wavelength=blue").status, 400);
     EXPECT_EQ(get(c, "/api/lenses/ac254-100-a/diagram.png?colour=2").status, 400);
-    EXPECT_EQ(get(c, "/api/lenses/ac254-100-a/diagram.png?wavelength=200").status, 422);
+    EXPECT_EQ(get(c, "/api/lenses/ac254-100-a/diagram.png?wavelength=150").status, 422);
 }
 
 TEST_F(ServerPrescriptions, Utf16ZemaxUploadReadsLikeTheFile) {

@@ -7,6 +7,7 @@
 #include "trace/ExactTrace.h"
 #include "prescription/NumberText.h"
 #include "prescription/OpticsError.h"
+#include "prescription/Wavelength.h"
 #include "firstorder/PbrtPupilBox.h"
 #include "trace/RayBatch.h"
 #include "sampling/Sampling.h"
@@ -17,9 +18,8 @@ namespace {
 
 double cos4(double c) { return (c * c) * (c * c); }
 
-// The wavelengths a spectral camera traces (nm), those of the spectral film, and the bands its
-// exit-pupil bounds are measured for: narrower where glasses disperse most.
-constexpr double kSpectralFirstNm = 360, kSpectralLastNm = 830;
+// The bands a spectral camera's exit-pupil bounds are measured for, over the visible range it
+// traces (that of the spectral film): narrower where glasses disperse most.
 const std::vector<double> kPupilBandEdgesNm = {360, 410, 460, 520, 590, 680, 830};
 
 // A film point's distance from the axis. Film coordinates are millimetres under 10^4: no overflow,
@@ -94,8 +94,8 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         measure.cancel = cancel;
         measure.progress = progress;
         if (params.spectral) {
-            etas_ = tabulateEtas(analysis_.lens, TraceDirection::FilmToScene, kSpectralFirstNm, kSpectralLastNm);
-            etasBack_ = tabulateEtas(analysis_.lens, TraceDirection::SceneToFilm, kSpectralFirstNm, kSpectralLastNm);
+            etas_ = tabulateEtas(analysis_.lens, TraceDirection::FilmToScene, kVisibleFirstNm, kVisibleLastNm);
+            etasBack_ = tabulateEtas(analysis_.lens, TraceDirection::SceneToFilm, kVisibleFirstNm, kVisibleLastNm);
             if (!params.aperture.isCircular())
                 for (int k = 0; k < etas_.bands; ++k) bandLenses_.push_back(atWavelength(analysis_.lens, etas_.bandCentreNm(k)));
         }

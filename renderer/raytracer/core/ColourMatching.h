@@ -2,9 +2,9 @@
 // The CIE 1931 2-degree colour matching functions as sums of piecewise Gaussians: Wyman, Sloan &
 // Shirley, "Simple Analytic Approximations to the CIE XYZ Color Matching Functions", JCGT 2(2),
 // 2013 (the multi-lobe fit, within about 1% of the tabulated functions). Wavelengths in nm.
-namespace lenslab {
+#include "prescription/Wavelength.h"  // kVisibleFirstNm, kVisibleLastNm
 
-constexpr int kVisibleFirstNm = 360, kVisibleLastNm = 830;
+namespace lenslab {
 
 double cieX(double nm);
 double cieY(double nm);
