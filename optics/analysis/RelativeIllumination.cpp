@@ -16,22 +16,27 @@ struct Box {
     double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
 };
 
-// Passing rays from one film point through a grid of aiming-plane points.
+// Passing rays from one film point through a grid of aiming-plane points. A rotationally symmetric
+// lens seen from (r, 0) is symmetric under y -> -y: its grids cover y >= 0 only, each cell standing
+// for its mirror image too (half the rays; the same cells as the whole grid, whose row count is even).
 class FilmPointProbe {
 public:
     // Aims through the plane of surface `aim`'s vertex.
     FilmPointProbe(const LensSystem& lens, double filmZ, int aim)
-        : lens_(lens), filmZ_(filmZ), aimZ_(lens.surfaces[aim].z), aimRadius_(lens.surfaces[aim].apertureRadius) {}
+        : lens_(lens), filmZ_(filmZ), aimZ_(lens.surfaces[aim].z), aimRadius_(lens.surfaces[aim].apertureRadius),
+          halfPlane_(lens.isRotationallySymmetric()) {}
 
     double aimDistance() const { return aimZ_ - filmZ_; }
     double aimRadius() const { return aimRadius_; }  // the clear aperture at the aiming plane
+    bool halfPlane() const { return halfPlane_; }
 
-    // Traces an n x n grid of cell centres over `box` from (r, 0, filmZ); pass[k] for cell k (row-major).
-    const std::vector<BlockReason>& trace(double r, const Box& box, int n) {
-        batch_.resize(static_cast<std::size_t>(n) * n);
-        const double cx = (box.x1 - box.x0) / n, cy = (box.y1 - box.y0) / n;
+    // Traces the cell centres of an n x rows grid over `box` from (r, 0, filmZ); blocked[k] for cell k
+    // (row-major).
+    const std::vector<BlockReason>& trace(double r, const Box& box, int n, int rows) {
+        batch_.resize(static_cast<std::size_t>(n) * rows);
+        const double cx = (box.x1 - box.x0) / n, cy = (box.y1 - box.y0) / rows;
         const Vec3 from{r, 0, filmZ_};
-        for (int j = 0; j < n; ++j)
+        for (int j = 0; j < rows; ++j)
             for (int i = 0; i < n; ++i)
                 batch_.set(static_cast<std::size_t>(j) * n + i,
                            {from, normalize(Vec3{box.x0 + (i + 0.5) * cx, box.y0 + (j + 0.5) * cy, aimZ_} - from)});
@@ -42,6 +47,7 @@ public:
 private:
     const LensSystem& lens_;
     double filmZ_, aimZ_, aimRadius_;
+    bool halfPlane_;
     RayBatch batch_;
 };
 
@@ -51,23 +57,25 @@ constexpr int kCoarse = 32;
 // side; empty (x1 <= x0) when nothing passes. The search square grows while passing points touch
 // its edge.
 Box passingBounds(FilmPointProbe& probe, double r) {
+    const bool half = probe.halfPlane();
+    const int rows = half ? kCoarse / 2 : kCoarse;
     double extent = 1.5 * probe.aimRadius();
     for (int grow = 0; grow < 5; ++grow, extent *= 2) {
-        const Box square{-extent, extent, -extent, extent};
-        const std::vector<BlockReason>& blocked = probe.trace(r, square, kCoarse);
+        const Box square{-extent, extent, half ? 0.0 : -extent, extent};
+        const std::vector<BlockReason>& blocked = probe.trace(r, square, kCoarse, rows);
         const double cell = 2 * extent / kCoarse;
-        int i0 = kCoarse, i1 = -1, j0 = kCoarse, j1 = -1;
-        for (int j = 0; j < kCoarse; ++j)
+        int i0 = kCoarse, i1 = -1, j0 = rows, j1 = -1;
+        for (int j = 0; j < rows; ++j)
             for (int i = 0; i < kCoarse; ++i)
                 if (blocked[static_cast<std::size_t>(j) * kCoarse + i] == BlockReason::None) {
                     i0 = std::min(i0, i), i1 = std::max(i1, i);
                     j0 = std::min(j0, j), j1 = std::max(j1, j);
                 }
         if (i1 < 0) return {};
-        const bool touchesEdge = i0 == 0 || j0 == 0 || i1 == kCoarse - 1 || j1 == kCoarse - 1;
+        const bool touchesEdge = i0 == 0 || (!half && j0 == 0) || i1 == kCoarse - 1 || j1 == rows - 1;
         if (touchesEdge && grow < 4) continue;
-        return {-extent + (i0 - 1) * cell, -extent + (i1 + 2) * cell, -extent + (j0 - 1) * cell,
-                -extent + (j1 + 2) * cell};
+        const double top = square.y0 + (j1 + 2) * cell;
+        return {-extent + (i0 - 1) * cell, -extent + (i1 + 2) * cell, half ? -top : square.y0 + (j0 - 1) * cell, top};
     }
     return {};
 }
@@ -78,19 +86,25 @@ struct Flux {
 };
 
 Flux passingFlux(FilmPointProbe& probe, double r, int grid) {
-    const Box box = passingBounds(probe, r);
+    Box box = passingBounds(probe, r);
     Flux flux;
     if (!(box.x1 > box.x0)) return flux;
-    const std::vector<BlockReason>& blocked = probe.trace(r, box, grid);
     const double cx = (box.x1 - box.x0) / grid, cy = (box.y1 - box.y0) / grid;
+    int rows = grid;
+    if (probe.halfPlane()) {  // the upper half of the symmetric box, each cell counted twice
+        box.y0 = 0;
+        rows = grid / 2;
+    }
+    const double cellArea = cx * cy * (probe.halfPlane() ? 2 : 1);
+    const std::vector<BlockReason>& blocked = probe.trace(r, box, grid, rows);
     const double z2 = probe.aimDistance() * probe.aimDistance();
-    for (int j = 0; j < grid; ++j)
+    for (int j = 0; j < rows; ++j)
         for (int i = 0; i < grid; ++i) {
             if (blocked[static_cast<std::size_t>(j) * grid + i] != BlockReason::None) continue;
             const double dx = box.x0 + (i + 0.5) * cx - r, dy = box.y0 + (j + 0.5) * cy;
             const double cos2 = z2 / (dx * dx + dy * dy + z2);
-            flux.area += cx * cy;
-            flux.weighted += cx * cy * cos2 * cos2;
+            flux.area += cellArea;
+            flux.weighted += cellArea * cos2 * cos2;
         }
     return flux;
 }
@@ -105,8 +119,8 @@ void requireFilmBehindLens(const LensSystem& lens, double filmZ) {
 std::vector<IlluminationSample> relativeIllumination(const LensSystem& lens, double filmZ, double maxFilmRadius,
                                                      const RelativeIlluminationOptions& options) {
     requireFilmBehindLens(lens, filmZ);
-    if (options.filmRadii < 2 || options.grid < 8)
-        throw OpticsError("relative illumination: need at least 2 film radii and an 8 x 8 grid");
+    if (options.filmRadii < 2 || options.grid < 8 || options.grid % 2)
+        throw OpticsError("relative illumination: need at least 2 film radii and an even grid of at least 8 x 8");
     // Rays are aimed through points of the rear vertex's plane. A cover glass just before the film
     // brings that plane so close that the passing region is smaller than a search cell: then aim
     // through the front vertex's plane, where it is about as large as the lens. (The ratio of

@@ -23,7 +23,7 @@ struct IlluminationSample {
 
 struct RelativeIlluminationOptions {
     int filmRadii = 48;  // samples from 0 to maxFilmRadius
-    int grid = 128;      // grid points per side over the passing region's bounding box
+    int grid = 128;      // grid points per side over the passing region's bounding box (even)
 };
 
 // Traces grids of rays from film points (r, 0, filmZ) to the aiming plane (rear vertex) with
