@@ -6,6 +6,7 @@
 #include "firstorder/FieldOfView.h"
 #include "trace/ExactTrace.h"
 #include "firstorder/FirstOrder.h"
+#include "trace/AxisRay.h"
 #include "trace/NearAxis.h"
 
 namespace lenslab {
@@ -39,16 +40,22 @@ Chromatic computeChromatic(const LensSystem& lens, double objectZ, std::optional
     const LensSystem f = atWavelength(lens, kWavelengthF);
     const LensSystem d = atWavelength(lens, kWavelengthD);
     const LensSystem c = atWavelength(lens, kWavelengthC);
-    const FirstOrder foF = computeFirstOrder(f), foD = computeFirstOrder(d), foC = computeFirstOrder(c);
+    // First order along each wavelength's own axis ray: in a decentred or tilted lens (a tilted
+    // plate) the glass moves the axis ray differently at F, d and C, and near-axis rays measured
+    // about another wavelength's axis give nothing like a focal length. The image planes keep the
+    // last vertex's z, so the longitudinal colour compares like with like.
+    const LensSystem fAxis = alongAxisRay(f), dAxis = alongAxisRay(d), cAxis = alongAxisRay(c);
+    const FirstOrder foF = computeFirstOrder(fAxis), foD = computeFirstOrder(dAxis), foC = computeFirstOrder(cAxis);
     out.eflF = foF.efl;
     out.eflD = foD.efl;
     out.eflC = foC.efl;
-    out.imageZF = paraxialImageZ(f, foF, objectZ);
-    out.imageZD = paraxialImageZ(d, foD, objectZ);
-    out.imageZC = paraxialImageZ(c, foC, objectZ);
+    out.imageZF = paraxialImageZ(fAxis, foF, objectZ);
+    out.imageZD = paraxialImageZ(dAxis, foD, objectZ);
+    out.imageZC = paraxialImageZ(cAxis, foC, objectZ);
     out.longitudinalColour = out.imageZC - out.imageZF;
     if (fieldDegrees && *fieldDegrees > 0) {
-        // Blue and red at the field the caller names, whatever their rims do.
+        // Blue and red at the field the caller names, whatever their rims do, in the lens's own
+        // frame: a tilted plate's sideways shift of blue against red is lateral colour too.
         const std::optional<double> hD = chiefRayHeight(d, *fieldDegrees, out.imageZD, false);
         const std::optional<double> hF = chiefRayHeight(f, *fieldDegrees, out.imageZD, false);
         const std::optional<double> hC = chiefRayHeight(c, *fieldDegrees, out.imageZD, false);

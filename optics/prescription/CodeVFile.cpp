@@ -414,7 +414,12 @@ void readSi(Reader& r, const Command& c) {
     if (r.image.shape != 0) r.fail(c.line, "a curved image surface (SI radius " + c.words[0].text + ") is not supported: the film is flat");
 }
 
-void readSto(Reader& r, const Command& c) { r.lensSurface(c).stop = true; }
+// STO marks the surface given last as the stop; values after it would be a surface written in a
+// form Code V does not have (they used to be dropped without a word).
+void readSto(Reader& r, const Command& c) {
+    if (!c.words.empty()) r.fail(c.line, "STO takes no values (it marks the surface before it as the stop; give the surface with S)");
+    r.lensSurface(c).stop = true;
+}
 
 void readRdy(Reader& r, const Command& c) {
     RawSurface& s = r.surface(c);

@@ -275,6 +275,7 @@ TEST(CodeVErrors, EveryRefusalNamesTheLineAndCommand) {
     expectError(achromat("  DIF DOE"), 16, "DIF");
     expectError(achromat("  ASP; H 1e-9"), 15, "aspheric term H");
     expectError(achromat("  STO"), 15, "a second stop");
+    expectError("so 0 1e10\nsto 50 5 n-bk7_schott\ns -50 45\nsi 0 0\n", 2, "STO takes no values");
     expectError(achromat("  ARO 10"), 16, "rotated apertures");
     expectError(achromat("  CIR -1"), 16, "positive semi-aperture");
     expectError(achromat("  K"), 16, "K needs at least 1 value");
