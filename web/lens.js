@@ -329,9 +329,27 @@ export function showLensData(lens) {
     const coating = s.coating === "none" ? "" : s.coating + (s.coating_default ? " (default)" : "");
     for (const v of [name, fixed(s.z), s.radius === 0 ? "flat" : fixed(s.radius), fixed(s.n, 5), fixed(s.diameter, 2), glass,
                      s.mirror || s.n === 1 ? "" : fixed(s.nd, 5), s.vd ? fixed(s.vd, 2) : "", s.conic ? fixed(s.conic, 4) : "", terms,
-                     coating, s.mirror || s.reflectance === 0 ? "" : fixed(100 * s.reflectance, 3)])
+                     coating, s.mirror || s.reflectance === 0 ? "" : fixed(100 * s.reflectance, 3), surfacePeculiarities(s)])
       tr.insertCell().textContent = v;
   });
+}
+
+const triple = (v, digits) => `(${v.map((x) => fixed(x, digits)).join(", ")})`;
+
+// A shaped aperture or obscuration: "rectangular 10.000 x 6.000 at (0.000, 1.000)" (full widths, mm).
+const apertureText = (a) => `${a.shape} ${fixed(2 * a.half_width_x)} × ${fixed(2 * a.half_width_y)}` +
+  (a.centre_x || a.centre_y ? ` at (${fixed(a.centre_x)}, ${fixed(a.centre_y)})` : "");
+
+// What sets a surface apart from a centred, circular even asphere, as the API gives it (docs/api.md):
+// its kind and terms, a shaped clear aperture or obscuration, its decentre (mm) and tilt (degrees,
+// about x, y, z) with the frame's mode and order; "" for a plain surface.
+function surfacePeculiarities(s) {
+  const parts = [];
+  if (s.kind) parts.push(`${s.kind} ${(s.form_terms || []).map((a) => a.toExponential(4)).join(", ")}`.trim());
+  if (s.clear_aperture) parts.push("aperture " + apertureText(s.clear_aperture));
+  if (s.obscuration) parts.push("obscuration " + apertureText(s.obscuration));
+  if (s.frame) parts.push(`decentre ${triple(s.frame.decentre, 3)} mm, tilt ${triple(s.frame.tilt_degrees, 3)}° (${s.frame.mode}, ${s.frame.order})`);
+  return parts.join("; ");
 }
 
 function showColour(lens) {

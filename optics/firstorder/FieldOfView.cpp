@@ -1,10 +1,13 @@
 #include "firstorder/FieldOfView.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "firstorder/ChiefRay.h"
 #include "firstorder/FirstOrder.h"
+#include "firstorder/Pupils.h"
+#include "prescription/OpticsError.h"
 #include "prescription/NumberText.h"
 #include "trace/ExactTrace.h"
 #include "trace/NearAxis.h"
@@ -22,8 +25,75 @@ std::optional<double> chiefRayHeight(const LensSystem& lens, double fieldDegrees
     return heightAtZ(out.ray, z);
 }
 
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+// The field whose real chief ray lands at height h on the plane z: the height grows with the field
+// from the axis, so the first sampled field past h and the one before bracket it for a bisection.
+std::optional<double> fieldAtRealImageHeight(const LensSystem& lens, double h, double z) {
+    double lo = 0;
+    for (double field = 1; field < kWidestSearchedField; field += 1) {
+        const std::optional<double> at = chiefRayHeight(lens, field, z, false);
+        if (!at || !(std::fabs(*at) > 0)) return std::nullopt;
+        if (std::fabs(*at) >= h) {
+            double hi = field;
+            for (int it = 0; it < 48; ++it) {
+                const double mid = 0.5 * (lo + hi);
+                const std::optional<double> m = chiefRayHeight(lens, mid, z, false);
+                if (!m) return std::nullopt;
+                (std::fabs(*m) < h ? lo : hi) = mid;
+            }
+            return 0.5 * (lo + hi);
+        }
+        lo = field;
+    }
+    return std::nullopt;
+}
+
+// The largest field of the prescription's own list as an object angle: angles as listed; an image
+// height as the field whose chief ray lands there on the focal plane (paraxial: h = f tan(field);
+// real: the traced chief ray) for a distant object; an object height as its angle from the entrance
+// pupil. nullopt when the list has nothing off the axis, or a form this lens cannot turn into an
+// angle (an image height for a near object, an object height for a distant one).
+std::optional<FieldOfView> listedFieldOfView(const LensSystem& lens, const FirstOrder& fo) {
+    double largest = 0;
+    for (const FieldPoint& p : lens.fields.points) largest = std::max(largest, std::hypot(p.x, p.y));
+    if (!(largest > 0)) return std::nullopt;
+    const std::string listed = "the prescription's field list: " + formatNumber(largest) + " " +
+                               (lens.fields.type == FieldType::ObjectAngle ? "deg" : "mm") + " " +
+                               fieldTypeName(lens.fields.type);
+    const bool distant = std::isinf(lens.objectDistance);
+    std::optional<double> degrees;
+    switch (lens.fields.type) {
+        case FieldType::ObjectAngle: degrees = largest; break;
+        case FieldType::ParaxialImageHeight:
+            if (distant) degrees = std::atan(largest / std::fabs(fo.efl)) * kDegrees;
+            break;
+        case FieldType::RealImageHeight:
+            if (distant) degrees = fieldAtRealImageHeight(lens, largest, fo.zFPrime);
+            break;
+        case FieldType::ObjectHeight:
+            if (!distant) {
+                try {
+                    const double objectZ = lens.frontZ() + lens.objectDistance;
+                    degrees = std::atan(largest / (objectZ - computePupils(lens).entrance.z)) * kDegrees;
+                } catch (const OpticsError&) {
+                    degrees = std::nullopt;  // a telecentric object space: no angle
+                }
+            }
+            break;
+    }
+    if (!degrees || !(*degrees > 0 && *degrees < kWidestSearchedField)) return std::nullopt;
+    return FieldOfView{degrees, lens.fields.type == FieldType::ObjectAngle ? listed : listed + " (" + formatNumber(*degrees, 4) + " deg)"};
+}
+
+}  // namespace
+
 FieldOfView lensFieldOfView(const LensSystem& lens) {
-    const double z = computeFirstOrder(lens).zFPrime;
+    const FirstOrder fo = computeFirstOrder(lens);
+    if (std::optional<FieldOfView> listed = listedFieldOfView(lens, fo)) return *listed;
+    const double z = fo.zFPrime;
     auto passes = [&](double field) { return chiefRayHeight(lens, field, z, true).has_value(); };
     if (passes(kWidestSearchedField))
         return {std::nullopt, "none: the lens passes chief rays at every angle up to " + formatNumber(kWidestSearchedField) +

@@ -21,7 +21,9 @@ struct FieldOfView {
 // clip them, so reaching it means the lens sets no limit.
 constexpr double kWidestSearchedField = 89.0;
 
-// The field of view of the lens alone, at the lens's wavelength. The chief ray is tested against the
+// The largest field of the prescription's own field list (angles as listed; image heights of a
+// distant object and object heights of a near one turned into angles), else that of the lens
+// alone, at the lens's wavelength. The chief ray is tested against the
 // clear apertures but not against central obscurations: an obscured system (a reflex lens) blocks
 // its chief ray by design, and its field is still the one its rims allow. Where the chief ray's real
 // image height on the paraxial image plane of a distant object stops growing with the field, the

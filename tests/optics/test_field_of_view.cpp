@@ -39,8 +39,11 @@ TEST(FieldOfView, ALensThatNeverStopsTheChiefRayHasNone) {
 }
 
 TEST(FieldOfView, AnObscuredLensKeepsTheFieldItsRimsAllow) {
-    // The reflex lens's secondary mirror blocks the chief ray on axis; its field is still its rims'.
-    const LensSystem reflex = loadLensSystem(LENSLAB_SOURCE_DIR "/lenses/us4666259-ex1-reflex-500mm.zmx");
+    // The reflex lens's secondary mirror blocks the chief ray on axis; its field is still its rims'
+    // (its file's own list, 2.5 degrees at most, set aside to measure them).
+    LensSystem reflex = loadLensSystem(LENSLAB_SOURCE_DIR "/lenses/us4666259-ex1-reflex-500mm.zmx");
+    EXPECT_DOUBLE_EQ(*lensFieldOfView(reflex).largestDegrees, 2.5);
+    reflex.fields.points.clear();
     const FieldOfView fov = lensFieldOfView(reflex);
     ASSERT_TRUE(fov.largestDegrees) << fov.source;
     EXPECT_GT(*fov.largestDegrees, 2.5);  // the patent's 2w = 5 degrees pass
@@ -62,4 +65,38 @@ TEST(FieldOfView, LateralColourIsMeasuredAtTheLargestField) {
     ASSERT_TRUE(plain.chromatic.lateral);
     EXPECT_EQ(plain.chromatic.lateral->mm, 0);
     EXPECT_DOUBLE_EQ(plain.chromatic.lateral->fieldDegrees, *plain.field.largestDegrees);
+}
+
+// A prescription's own field list comes first (docs/analysis.md, "Fields"): its largest point as an
+// object angle, whatever form the file states it in. dgauss.50mm (EFL 50.3582 mm, its rims allow
+// about 29 degrees) with a list added.
+TEST(FieldOfView, ThePrescriptionsFieldListComesFirstInEveryForm) {
+    LensSystem lens = loadLensSystem(LENSLAB_SOURCE_DIR "/lenses/dgauss.50mm.dat");
+    const FirstOrder fo = analyzeLens(lens, std::nullopt, kInf).firstOrder;
+    const double rims = *lensFieldOfView(lens).largestDegrees;
+    EXPECT_GT(rims, 25);
+    constexpr double kDeg = 180 / M_PI;
+
+    lens.fields = {FieldType::ObjectAngle, {{0, 0, 1}, {3, 4, 1}, {0, 2, 1}}};  // the largest: 5 degrees
+    FieldOfView fov = lensFieldOfView(lens);
+    EXPECT_DOUBLE_EQ(*fov.largestDegrees, 5);
+    EXPECT_EQ(fov.source, "the prescription's field list: 5 deg object angle");
+
+    // A paraxial image height h of a distant object: tan(field) = h / EFL.
+    lens.fields = {FieldType::ParaxialImageHeight, {{0, 0, 1}, {0, 15, 1}}};
+    EXPECT_NEAR(*lensFieldOfView(lens).largestDegrees, std::atan(15 / fo.efl) * kDeg, 1e-12);
+
+    // A real image height: the field whose traced chief ray lands 15 mm off axis on the focal plane.
+    // The double Gauss's barrel distortion puts it beyond the paraxial field.
+    lens.fields = {FieldType::RealImageHeight, {{0, 0, 1}, {0, 15, 1}}};
+    const double real = *lensFieldOfView(lens).largestDegrees;
+    EXPECT_NEAR(std::fabs(*chiefRayHeight(lens, real, fo.zFPrime, false)), 15, 1e-9);
+    EXPECT_GT(real, std::atan(15 / fo.efl) * kDeg);
+
+    // An object height needs a near object; for a distant one the lens's rims decide.
+    lens.fields = {FieldType::ObjectHeight, {{0, 0, 1}, {0, 100, 1}}};
+    EXPECT_DOUBLE_EQ(*lensFieldOfView(lens).largestDegrees, rims);
+    // A list with nothing off the axis is no limit either.
+    lens.fields = {FieldType::ObjectAngle, {{0, 0, 1}}};
+    EXPECT_DOUBLE_EQ(*lensFieldOfView(lens).largestDegrees, rims);
 }
