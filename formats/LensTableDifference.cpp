@@ -1,6 +1,10 @@
 #include "LensTableDifference.h"
 
+#include <cmath>
+
+#include "prescription/LensSystem.h"
 #include "prescription/NumberText.h"
+#include "trace/ExactTrace.h"
 
 namespace lenslab {
 
@@ -76,7 +80,54 @@ struct Comparison {
     }
 };
 
+// Within `tolerance`: for the built lenses, whose numbers come through different arithmetic.
+struct NearComparison {
+    double tolerance;
+    std::optional<std::string> found;
+    void number(const std::string& what, double a, double b) {
+        if (!found && !(std::fabs(a - b) <= tolerance * std::max(1.0, std::fabs(a))))
+            found = what + ": " + formatNumber(a, 17) + " / " + formatNumber(b, 17);
+    }
+    void vector(const std::string& what, const Vec3& a, const Vec3& b) {
+        number(what + " x", a.x, b.x);
+        number(what + " y", a.y, b.y);
+        number(what + " z", a.z, b.z);
+    }
+};
+
 }  // namespace
+
+std::optional<std::string> builtLensDifference(const LensTable& a, const LensTable& b, double tolerance) {
+    const LensSystem x = buildLensSystem(a), y = buildLensSystem(b);
+    NearComparison c{tolerance, std::nullopt};
+    c.number("surface count", double(x.surfaces.size()), double(y.surfaces.size()));
+    for (std::size_t i = 0; i < x.surfaces.size() && i < y.surfaces.size(); ++i) {
+        const Surface &s = x.surfaces[i], &t = y.surfaces[i];
+        const std::string what = "surface " + std::to_string(i + 1);
+        c.number(what + " z", s.z, t.z);
+        c.number(what + " radius", s.radius, t.radius);
+        c.number(what + " conic", s.conic, t.conic);
+        c.number(what + " semi-diameter", s.apertureRadius, t.apertureRadius);
+        c.number(what + " index after", s.indexAfter, t.indexAfter);
+        c.number(what + " stop", s.isStop, t.isStop);
+        c.number(what + " mirror", s.mirror, t.mirror);
+    }
+    // 7 heights across the front surface's semi-diameter, at 5 angles up to 10 degrees in y and x.
+    const Surface& front = x.surfaces.front();
+    for (int h = -3; h <= 3; ++h)
+        for (int k = -2; k <= 2; ++k) {
+            const double angle = k * 5 * M_PI / 180, height = h * front.apertureRadius / 4;
+            const Ray ray{{height / 3, height, front.z + 1}, {std::sin(angle) / 2, std::sin(angle), -std::sqrt(1 - 1.25 * std::sin(angle) * std::sin(angle))}};
+            const TraceResult p = traceRay(x, ray, TraceDirection::SceneToFilm), q = traceRay(y, ray, TraceDirection::SceneToFilm);
+            const std::string what = "ray " + std::to_string(h) + "/" + std::to_string(k);
+            c.number(what + " blocked at surface", p.ok() ? -1 : p.surface, q.ok() ? -1 : q.surface);
+            if (p.ok() && q.ok()) {
+                c.vector(what + " leaving at", p.ray.origin, q.ray.origin);
+                c.vector(what + " leaving along", p.ray.direction, q.ray.direction);
+            }
+        }
+    return c.found;
+}
 
 std::optional<std::string> lensTableDifference(const LensTable& a, const LensTable& b) {
     Comparison c;

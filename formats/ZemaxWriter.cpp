@@ -110,15 +110,9 @@ std::string formLines(const LensTable& table, const LensTableRow& row) {
     return out;
 }
 
-// SCBD 1 order 0 dx dy tiltx tilty tiltz: the surface's own decentre and tilt, the coordinates
+// SCBD 1 order 0 dx dy tiltx tilty tiltz: a surface's own decentre and tilt, the coordinates
 // returning after it (lenslab reads it as Code V's DAR; on the image, where nothing follows, as basic).
-std::string surfaceFrameLine(const LensTable& table, int line, const std::optional<FrameChange>& frame,
-                             FrameMode returning) {
-    if (!frame || frame->isIdentity()) return "";
-    const FrameChange& f = *frame;
-    if (f.mode != returning)
-        refuseUnwritten(table, line, "a decentre or tilt whose coordinates do not return after the surface (Code V's "
-                                     "basic, BEN or REV; a .zmx states them as coordinate breaks)");
+std::string decentreLine(const LensTable& table, int line, const FrameChange& f) {
     if (f.decentre[2] != 0) refuseUnwritten(table, line, "a decentre along z (Code V's ZDE)");
     return "  SCBD 1 " + std::string(f.order == TiltOrder::TiltThenDecentre ? "1" : "0") + " 0 " +
            exactNumberText(f.decentre[0]) + " " + exactNumberText(f.decentre[1]) + " " + exactNumberText(f.tiltDegrees[0]) +
@@ -167,32 +161,71 @@ double semiDiameter(const LensTable& table, const LensTableRow& row) {
 }
 
 // TYPE COORDBRK: PARM 1, 2 decentre x, y; 3, 4, 5 tilt about x, y, z; 6 the order flag.
-std::string coordinateBreakBlock(const LensTable& table, const LensTableRow& row) {
-    const FrameChange f = row.frame.value_or(FrameChange{});
-    if (f.mode != FrameMode::Basic) refuse(table, row.line, "a coordinate break whose coordinates return or bend");
-    if (f.decentre[2] != 0) refuse(table, row.line, "a coordinate break decentred along z (its DISZ is the move)");
-    std::string out = "  TYPE COORDBRK\n  CURV 0\n  DISZ " + exactNumberText(row.gap) + "\n";
+std::string coordinateBreakLines(const FrameChange& f, double gap) {
+    std::string out = "  TYPE COORDBRK\n  CURV 0\n  DISZ " + exactNumberText(gap) + "\n";
     for (int i = 0; i < 2; ++i) out += parmLine(i + 1, f.decentre[i]);
     for (int i = 0; i < 3; ++i) out += parmLine(i + 3, f.tiltDegrees[i]);
-    out += parmLine(6, f.order == TiltOrder::TiltThenDecentre ? 1 : 0);
-    return out;
+    return out + parmLine(6, f.order == TiltOrder::TiltThenDecentre ? 1 : 0);
 }
 
-std::string surfaceBlock(const LensTable& table, const LensTableRow& row, int number) {
-    std::string out = "SURF " + std::to_string(number) + "\n";
-    if (!row.name.empty()) out += "  COMM " + lineText(table, row.line, "a surface name", row.name) + "\n";
-    if (row.coordinateBreak) return out + coordinateBreakBlock(table, row);
-    out += formLines(table, row);
+// The inverse motion of a frame change as a coordinate break: the tilts undone in the other order,
+// then the decentre (FrameChange.h: flag 1 is flag 0's inverse with the values negated).
+FrameChange inverted(const FrameChange& f) {
+    FrameChange back = f;
+    for (double& d : back.decentre) d = -d;
+    for (double& t : back.tiltDegrees) t = -t;
+    back.order = f.order == TiltOrder::DecentreThenTilt ? TiltOrder::TiltThenDecentre : TiltOrder::DecentreThenTilt;
+    return back;
+}
+
+// A surface's Code V decentre whose coordinates do not return after it, as Zemax states it:
+// coordinate breaks around the surface. Basic: a break into the moved frame before it. BEN: that,
+// and after the surface (DISZ 0) the tilt once more about its vertex. REV: after the surface the
+// inverse motion. The gap moves to the break after the surface. Read back, the table has these
+// breaks as rows of their own: the same lens, not the same rows (docs/prescriptions.md).
+struct Breaks {
+    std::optional<FrameChange> before, after;
+};
+Breaks breaksAround(const LensTable& table, const LensTableRow& row) {
+    if (!row.frame || row.frame->isIdentity() || row.frame->mode == FrameMode::DecentreAndReturn) return {};
+    const FrameChange& f = *row.frame;
+    if (f.decentre[2] != 0) refuseUnwritten(table, row.line, "a decentre along z (Code V's ZDE)");
+    switch (f.mode) {
+        case FrameMode::Basic: return {f, std::nullopt};
+        case FrameMode::Bend: {
+            FrameChange tilt = f;
+            tilt.decentre = {};
+            return {f, tilt};
+        }
+        case FrameMode::Reverse: return {std::nullopt, inverted(f)};
+        case FrameMode::DecentreAndReturn: break;
+    }
+    return {};
+}
+
+std::string surfaceBlocks(const LensTable& table, const LensTableRow& row, int& number) {
+    const auto surf = [&] { return "SURF " + std::to_string(number++) + "\n"; };
+    const std::string name = row.name.empty() ? "" : "  COMM " + lineText(table, row.line, "a surface name", row.name) + "\n";
+    if (row.coordinateBreak) {
+        const FrameChange f = row.frame.value_or(FrameChange{});
+        if (f.mode != FrameMode::Basic) refuse(table, row.line, "a coordinate break whose coordinates return or bend");
+        if (f.decentre[2] != 0) refuse(table, row.line, "a coordinate break decentred along z (its DISZ is the move)");
+        return surf() + name + coordinateBreakLines(f, row.gap);
+    }
+    const Breaks breaks = breaksAround(table, row);
+    std::string out = breaks.before ? surf() + coordinateBreakLines(*breaks.before, 0) : "";
+    out += surf() + name + formLines(table, row);
     out += "  CURV " + (row.radius == 0 ? std::string("0") : exactReciprocalText(row.radius)) + "\n";
-    out += "  DISZ " + exactNumberText(row.gap) + "\n";
+    out += "  DISZ " + exactNumberText(breaks.after ? 0.0 : row.gap) + "\n";
     out += glassLine(table, row);
     if (row.conic != 0) out += "  CONI " + exactNumberText(row.conic) + "\n";
     out += "  DIAM " + exactNumberText(semiDiameter(table, row)) + "\n";
     if (row.obscurationDiameter > 0) out += "  OBSC 0 " + exactNumberText(row.obscurationDiameter / 2) + "\n";
     out += apertureLines(table, row);
-    out += surfaceFrameLine(table, row.line, row.frame, FrameMode::DecentreAndReturn);
+    if (row.frame && !row.frame->isIdentity() && !breaks.before && !breaks.after) out += decentreLine(table, row.line, *row.frame);
     if (row.stop) out += "  STOP\n";
     if (!row.coating.empty()) out += "  COAT " + row.coating + "\n";
+    if (breaks.after) out += surf() + coordinateBreakLines(*breaks.after, row.gap);
     return out;
 }
 
@@ -277,9 +310,12 @@ std::string writeZemaxText(const LensTable& table) {
     out += wavelengthLines(table, nm);
     out += objectBlock(table);
     int number = 1;
-    for (const LensTableRow& row : table.rows) out += surfaceBlock(table, row, number++);
+    for (const LensTableRow& row : table.rows) out += surfaceBlocks(table, row, number);
     out += "SURF " + std::to_string(number) + "\n  TYPE STANDARD\n  CURV 0\n  DISZ 0\n";
-    out += surfaceFrameLine(table, 0, table.imageFrame, FrameMode::Basic);
+    if (table.imageFrame && !table.imageFrame->isIdentity()) {
+        if (table.imageFrame->mode != FrameMode::Basic) refuse(table, 0, "an image surface decentre that returns, bends or reverses");
+        out += decentreLine(table, 0, *table.imageFrame);
+    }
     return out;
 }
 
