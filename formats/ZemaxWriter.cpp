@@ -46,13 +46,9 @@ std::string foundGlass(const std::string& glass, const std::vector<std::string>&
     return found.glass ? found.glass->catalog + " " + found.glass->name : "";
 }
 
-// GCAT: the file's catalogs, then each row's own (Code V's N-BK7_SCHOTT), which a .zmx states only
-// for the file as a whole: refused where that order would find another glass for some row.
+// GCAT: the file's catalogs, then each row's own, refused where that order would find another glass.
 std::vector<std::string> fileCatalogs(const LensTable& table) {
-    std::vector<std::string> catalogs = table.catalogs;
-    for (const LensTableRow& row : table.rows)
-        if (!row.glassCatalog.empty() && std::find(catalogs.begin(), catalogs.end(), row.glassCatalog) == catalogs.end())
-            catalogs.push_back(row.glassCatalog);
+    const std::vector<std::string> catalogs = withRowCatalogsInTheFile(table).catalogs;
     for (const LensTableRow& row : table.rows) {
         if (row.glass.empty() || catalogs == table.catalogs) continue;
         std::vector<std::string> own = table.catalogs;
@@ -289,6 +285,16 @@ std::string objectBlock(const LensTable& table) {
 }
 
 }  // namespace
+
+LensTable withRowCatalogsInTheFile(LensTable table) {
+    for (LensTableRow& row : table.rows) {
+        if (!row.glassCatalog.empty() &&
+            std::find(table.catalogs.begin(), table.catalogs.end(), row.glassCatalog) == table.catalogs.end())
+            table.catalogs.push_back(row.glassCatalog);
+        row.glassCatalog.clear();
+    }
+    return table;
+}
 
 std::string writeZemaxText(const LensTable& table) {
     if (table.layout != TableLayout::GapAfter)

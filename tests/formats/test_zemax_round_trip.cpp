@@ -105,6 +105,8 @@ TEST(ZemaxRoundTrip, ARowsCatalogIsTheFilesCatalog) {
     LensTable expected = t;
     expected.catalogs = {"SCHOTT"};
     expected.rows[0].glassCatalog.clear();
+    const auto stated = lensTableDifference(withRowCatalogsInTheFile(t), expected);
+    EXPECT_FALSE(stated) << *stated;
     const LensTable again = expectRoundTrip(expected);
     EXPECT_EQ(computeFirstOrder(buildLensSystem(again)).efl, computeFirstOrder(buildLensSystem(t)).efl);
 }
@@ -211,6 +213,28 @@ TEST(ZemaxRoundTrip, ADecentreThatDoesNotReturnIsWrittenAsCoordinateBreaks) {
             const auto difference = builtLensDifference(t, again, 1e-12);
             EXPECT_FALSE(difference) << what << ": " << *difference;
         }
+}
+
+// A Code V lens read, written as .zmx and read back is the same table, once its rows' catalogs are
+// the file's (GCAT): its title, wavelengths and weights, fields and their weights, aperture, object
+// distance, surface names, catalog glasses, a decentred rectangle, a returning decentre and tilt,
+// automatic apertures and the image's decentre.
+TEST(ZemaxRoundTrip, ACodeVLensComesBackAsTheSameTable) {
+    const LensTable seq = parseLensTable("RDM\nTITLE 'f/4 achromat'\nEPD 25\nWL 656.2725 587.5618 486.1327\nREF 2\n"
+                                         "WTW 1 2 1\nXAN 0 0 1; YAN 0 2.5 5\nWTF 1 2 1\nSO 0 2500\n"
+                                         "S 61.47 6.0 NBK7_SCHOTT\nSTO\nSLB 'front'\nCIR 12.5\n"
+                                         "S -44.64 2.5 NSF5_SCHOTT\nDAR\nYDE 0.25; ADE 0.5\n"
+                                         "S -129.94 95.95\nREX 10; REY 12; ADY 1\nSI 0 0.05\nYDE 0.1; ADE 0.2\n",
+                                         "achromat.seq");
+    ASSERT_EQ(seq.format, "seq");
+    ASSERT_TRUE(seq.rows[1].automaticDiameter);
+    ASSERT_TRUE(seq.imageFrame);
+    const LensTable again = parseZemax(writeZemaxText(seq), "achromat.zmx");
+    const auto difference = lensTableDifference(withRowCatalogsInTheFile(seq), again);
+    EXPECT_FALSE(difference) << *difference;
+    EXPECT_EQ(again.catalogs, (std::vector<std::string>{"SCHOTT"}));
+    const auto lens = builtLensDifference(seq, again, 1e-12);
+    EXPECT_FALSE(lens) << *lens;
 }
 
 // What a .zmx (as lenslab reads it) cannot state is refused naming the row and the feature.
