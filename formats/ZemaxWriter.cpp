@@ -259,9 +259,10 @@ std::string wavelengthLines(const LensTable& table, const std::vector<double>& n
 }
 
 // FTYP type 0 fields wavelengths 0 0 0, then XFLN, YFLN, FWGN over Zemax's 12 slots (more when
-// the table has more fields).
+// the table has more fields). FTYP's wavelength count keeps a list of 24 whose last ones are
+// Zemax's unused-slot default (0.55 um, weight 1) from being read as unused.
 std::string fieldLines(const DesignFields& fields, std::size_t wavelengths) {
-    if (fields.points.empty() && fields.type == FieldType::ObjectAngle) return "";
+    if (fields.points.empty() && fields.type == FieldType::ObjectAngle && wavelengths == 0) return "";
     std::string out = "FTYP " + std::to_string(int(fields.type)) + " 0 " + std::to_string(fields.points.size()) + " " +
                       std::to_string(wavelengths) + " 0 0 0\n";
     const std::size_t slots = std::max(kFieldSlots, fields.points.size());

@@ -92,6 +92,11 @@ TEST(ZemaxRoundTrip, WavelengthsComeBackExactly) {
         EXPECT_EQ(again.wavelengths[0], nm);
     }
     EXPECT_GT(offByAnUlp, 0) << "no wavelength tested where the plain quotient is off";
+    // All 24 slots, the last ones what Zemax writes in unused slots: still the table's.
+    t.wavelengths.assign(24, 550);
+    t.wavelengths[0] = kWavelengthD;
+    t.wavelengthWeights.assign(24, 1);
+    EXPECT_EQ(parseZemax(writeZemaxText(t), "written.zmx").wavelengths.size(), 24u);
 }
 
 // A Code V row's catalog (N-BK7_SCHOTT) becomes the file's GCAT; read back, the same glass.
