@@ -65,9 +65,14 @@ std::vector<std::string> fileCatalogs(const LensTable& table) {
 // anything else a model glass (___BLANK, solve 1), air (index 0) no line at all.
 std::string glassLine(const LensTable& table, const LensTableRow& row) {
     if (row.mirror) return "  GLAS MIRROR\n";
-    if (!row.glass.empty())
+    if (!row.glass.empty()) {
+        if (row.abbe != 0) refuse(table, row.line, "glass '" + row.glass + "' with an Abbe number besides (a catalog glass has its own)");
         return "  GLAS " + word(table, row.line, "a glass name", row.glass) + " 0 0 " + exactNumberText(row.index) + " 0\n";
-    if (row.index == 0) return "";
+    }
+    if (row.index == 0 && row.abbe == 0) return "";
+    if (!(row.index >= 1) || !(row.abbe >= 0))
+        refuse(table, row.line, "a model glass of nd " + exactNumberText(row.index) + ", Vd " + exactNumberText(row.abbe) +
+                                    " (GLAS ___BLANK needs nd >= 1 and Vd >= 0)");
     return "  GLAS ___BLANK 1 0 " + exactNumberText(row.index) + " " + exactNumberText(row.abbe) + "\n";
 }
 

@@ -263,6 +263,14 @@ TEST(ZemaxRoundTrip, WhatAZmxCannotStateIsRefusedByName) {
     apart.rows[2].clearShape = SurfaceAperture{ApertureKind::Rectangular, 10, 8, 0.5, 0};
     apart.rows[2].obscurationShape = SurfaceAperture{ApertureKind::Rectangular, 1, 1, 0, 0};
     EXPECT_TRUE(contains(refusal(apart), "decentred differently")) << refusal(apart);
+    LensTable blank = lens;
+    blank.rows[1].index = 0;
+    blank.rows[1].abbe = 40;  // would read back as an unreadable ___BLANK line
+    EXPECT_TRUE(contains(refusal(blank), "a model glass of nd 0, Vd 40")) << refusal(blank);
+    LensTable both = lens;
+    both.rows[0].glass = "N-BK7";
+    both.rows[0].abbe = 64.17;  // a catalog glass's GLAS line has no Vd of its own
+    EXPECT_TRUE(contains(refusal(both), "with an Abbe number besides")) << refusal(both);
     LensTable substituted = lens;
     substituted.substitutes.push_back({"D-ZK3M", "N-BK7", "SCHOTT", std::nullopt, "lens.smx:2"});
     EXPECT_TRUE(contains(refusal(substituted), "0: glasses substituted by lens.smx:2")) << refusal(substituted);
