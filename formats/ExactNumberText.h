@@ -31,4 +31,22 @@ inline std::string exactReciprocalText(double r) {
     return b;
 }
 
+// v / 1000 as the text of v with its decimal point moved three places left ("587.5618" ->
+// "0.5875618"): a wavelength in nm written in micrometres (WAVM). Read back with the exponent raised
+// by 3 (optics/prescription/ZemaxFile.cpp) it is v exactly, which no double v / 1000 is for every v.
+inline std::string exactThousandthText(double v) {
+    const std::string text = exactNumberText(v);
+    if (text.find_first_of("eEni") != std::string::npos) return text + "e-3";  // exponent form, inf, nan
+    const bool negative = text[0] == '-';
+    const std::string body = text.substr(negative ? 1 : 0);
+    const auto point = body.find('.');
+    const std::string whole = body.substr(0, point), digits = whole + (point == std::string::npos ? "" : body.substr(point + 1));
+    const long split = long(whole.size()) - 3;
+    std::string out = split > 0 ? digits.substr(0, split) + "." + digits.substr(split)
+                                : "0." + std::string(-split, '0') + digits;
+    out.erase(out.find_last_not_of('0') + 1);
+    if (out.back() == '.') out.pop_back();
+    return (negative ? "-" : "") + out;
+}
+
 }  // namespace lenslab

@@ -40,15 +40,17 @@ bool isNumber(const std::string& text) {
 }
 
 // The glass a row's name finds as the table reads it back (no catalog order) must be the one it
-// finds now.
+// finds now, with the row's own catalog (Code V's N-BK7_SCHOTT) and the file's (GCAT) first.
 void refuseCatalogOrderThatMatters(const LensTable& table, const LensTableRow& row) {
-    if (table.catalogs.empty()) return;
-    const GlassLookup preferred = findGlass(row.glass, table.catalogs), plain = findGlass(row.glass, {});
+    if (table.catalogs.empty() && row.glassCatalog.empty()) return;
+    std::vector<std::string> order = table.catalogs;
+    if (!row.glassCatalog.empty()) order.insert(order.begin(), row.glassCatalog);
+    const GlassLookup preferred = findGlass(row.glass, order), plain = findGlass(row.glass, {});
     if (preferred.glass && plain.glass &&
         (preferred.glass->catalog != plain.glass->catalog || preferred.glass->name != plain.glass->name))
-        refuse(table, row.line, "the catalog order (GCAT) that makes '" + row.glass + "' " + preferred.glass->catalog +
-                                    " " + preferred.glass->name +
-                                    " rather than " + plain.glass->catalog + " " + plain.glass->name);
+        refuse(table, row.line, std::string(row.glassCatalog.empty() ? "the catalog order (GCAT)" : "the row's catalog") +
+                                    " that makes '" + row.glass + "' " + preferred.glass->catalog + " " +
+                                    preferred.glass->name + " rather than " + plain.glass->catalog + " " + plain.glass->name);
 }
 
 void refuseWhatATableCannotHold(const LensTable& table, const LensTableRow& row) {

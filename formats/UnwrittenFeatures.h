@@ -1,5 +1,5 @@
 #pragma once
-// What the prescription writers (.dat, .zmx) do not write: the decentres, tilts, surface forms,
+// What the lens table writer (.dat) does not write: the decentres, tilts, surface forms,
 // shaped apertures, automatic apertures and glass substitutions a .zmx or .seq can bring (issue 29).
 // A writer refuses a lens that has any, rather than write a different lens.
 #include "prescription/LensTable.h"

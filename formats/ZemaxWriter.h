@@ -10,4 +10,9 @@ namespace lenslab {
 
 std::string writeZemaxText(const LensTable& table);
 
+// The table as its .zmx states it: each row's own catalog (Code V's N-BK7_SCHOTT) joins the file's
+// catalogs (GCAT), in the order the rows name them. writeZemaxText refuses a lens where that order
+// would find another glass for some row.
+LensTable withRowCatalogsInTheFile(LensTable table);
+
 }  // namespace lenslab

@@ -628,11 +628,12 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number) {
         a.halfWidthX *= u, a.halfWidthY *= u, a.centreX *= u, a.centreY *= u;
         return a;
     };
-    // A circle about the vertex is the table's diameter; any other shape travels as the shape.
+    // A circle about the vertex is the table's diameter; any other shape travels as the shape, the
+    // diameter the circle that holds it (as a .zmx's reads).
     if (s.clear) {
         const SurfaceAperture a = scaled(*s.clear);
         if (a.kind == ApertureKind::Circular && a.centreX == 0 && a.centreY == 0) row.diameter = 2 * a.halfWidthX;
-        else row.clearShape = a;
+        else row.clearShape = a, row.diameter = 2 * a.reach();
     } else {
         row.automaticDiameter = true;
     }
@@ -687,7 +688,16 @@ LensTable assemble(Reader& r, int lastLine) {
     int stops = 0;
     for (const RawSurface& s : r.surfaces)
         if (s.stop && ++stops > 1) r.fail(s.line, "a second stop (STO)");
-    for (std::size_t i = 0; i < r.surfaces.size(); ++i) t.rows.push_back(lensRow(r, r.surfaces[i], int(i) + 1));
+    for (std::size_t i = 0; i < r.surfaces.size(); ++i) {
+        t.rows.push_back(lensRow(r, r.surfaces[i], int(i) + 1));
+        // A mirror sends the ray back through the medium it came from: its row holds that medium,
+        // as a .zmx's mirror row does.
+        if (t.rows.back().mirror && i > 0) {
+            LensTableRow &mirror = t.rows.back(), &before = t.rows[i - 1];
+            mirror.index = before.index, mirror.glass = before.glass, mirror.abbe = before.abbe;
+            mirror.glassCatalog = before.glassCatalog;
+        }
+    }
     // SI's thickness is the image's defocus from the last surface's gap.
     t.rows.back().gap += r.image.thickness * u;
     if (r.image.frame) {

@@ -142,17 +142,19 @@ bool LensSystem::isDispersive() const {
     return std::any_of(surfaces.begin(), surfaces.end(), [](const Surface& s) { return lenslab::isDispersive(s.mediumAfter); });
 }
 
-// Mirrors turn the light back along z; so does a motion that turns z around (the mirrored image
-// space of an odd number of mirrors).
+// The axis's direction carried through every surface's motions, each mirror reflecting it about
+// its vertex normal (the surface's z): mirrors turn the light back along z, and so do motions that
+// turn z around (the mirrored image space of an odd number of mirrors). The motions' product
+// decides, not each one alone: two tilts of 60 and 45 degrees turn z around as one of 105 does.
 double LensSystem::zDirectionAfter(int i) const {
-    double direction = -1;
+    std::array<double, 3> axis{0, 0, -1};
     for (int k = 0; k <= i; ++k) {
         const Surface& s = surfaces[k];
-        if (s.before.rotation[8] < 0) direction = -direction;
-        if (s.mirror) direction = -direction;
-        if (s.after.rotation[8] < 0) direction = -direction;
+        axis = s.before.applyToDirection(axis);
+        if (s.mirror) axis[2] = -axis[2];
+        axis = s.after.applyToDirection(axis);
     }
-    return direction;
+    return axis[2] > 0 ? 1 : -1;
 }
 
 bool LensSystem::hasMirrors() const {

@@ -22,7 +22,7 @@ const char* const kSupported =
 
 // Zemax writes every one of its 24 wavelength slots; the unused ones hold this default.
 constexpr int kWavelengthSlots = 24;
-constexpr double kDefaultSlotMicrometres = 0.55;
+constexpr double kDefaultSlotNanometres = 550;
 
 struct Line {
     int number = 0;
@@ -50,6 +50,7 @@ struct RawSurface {
     double nd = 0, vd = 0;    // the GLAS line's figures
     bool modelGlass = false;
     double semiDiameter = 0, mechanicalSemiDiameter = 0;
+    int semiDiameterLine = 0;      // 0: no DIAM
     double apertureRadius = 0;     // CLAP/FLAP maximum radius; 0: none
     double obscurationRadius = 0;  // OBSC, or CLAP's minimum radius
     int stopLine = 0;
@@ -61,7 +62,7 @@ struct RawSurface {
     std::string coating;           // COAT, as written
 };
 
-struct Wavelength { double micrometres; double weight; int line; };
+struct Wavelength { double nanometres; double weight; int line; };
 
 struct Fields {
     int type = 0;
@@ -168,13 +169,26 @@ void readFieldValues(Reader& r, const Line& l) {
 }
 void readGcat(Reader& r, const Line& l) { r.catalogs.insert(r.catalogs.end(), l.fields.begin(), l.fields.end()); }
 
+// The number a decimal text in micrometres states, in nanometres: the text read with its exponent
+// raised by 3, so "0.5875618" is exactly the double "587.5618" is (a double read in micrometres,
+// times 1000, misses some by an ulp; formats/ZemaxWriter.cpp writes wavelengths this way).
+double nanometres(const Reader& r, const Line& l, std::size_t i) {
+    r.number(l, i);  // a finite number
+    const std::string& text = l.fields[i];
+    const auto e = text.find_first_of("eE");
+    const std::string shifted = e == std::string::npos
+                                    ? text + "e3"
+                                    : text.substr(0, e) + "e" + std::to_string(std::atol(text.c_str() + e + 1) + 3);
+    return std::strtod(shifted.c_str(), nullptr);
+}
+
 // WAVM slot micrometres weight
 void readWavm(Reader& r, const Line& l) {
     const int slot = r.integer(l, 0);
     if (slot != int(r.wavelengths.size()) + 1)
         r.fail(l.number, "WAVM " + l.fields[0] + " out of order: expected slot " +
                              std::to_string(r.wavelengths.size() + 1));
-    r.wavelengths.push_back({r.number(l, 1), l.fields.size() > 2 ? r.number(l, 2) : 1.0, l.number});
+    r.wavelengths.push_back({nanometres(r, l, 1), l.fields.size() > 2 ? r.number(l, 2) : 1.0, l.number});
 }
 
 void readPwav(Reader& r, const Line& l) {
@@ -263,7 +277,11 @@ void readCoat(Reader& r, const Line& l) {
     }
 }
 
-void readDiam(Reader& r, const Line& l) { r.surface(l).semiDiameter = r.number(l, 0); }
+void readDiam(Reader& r, const Line& l) {
+    RawSurface& s = r.surface(l);
+    s.semiDiameter = r.number(l, 0);
+    s.semiDiameterLine = l.number;
+}
 void readMema(Reader& r, const Line& l) { r.surface(l).mechanicalSemiDiameter = r.number(l, 0); }
 
 void readStop(Reader& r, const Line& l) {
@@ -539,6 +557,10 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const Len
     }
     if (s.obscurationShape) row.obscurationShape = placed(*s.obscurationShape);
     if (row.clearShape) row.diameter = 2 * row.clearShape->reach();
+    // DIAM 0 and nothing else: the semi-diameter is left to the program (Zemax's automatic solve
+    // recomputes it), as a Code V surface without CIR; lenslab derives it from the aperture and fields.
+    row.automaticDiameter = row.diameter == 0 && s.semiDiameterLine && s.semiDiameter == 0 && !s.clearShape;
+    if (row.automaticDiameter) return row;
     if (!(row.diameter > 0) || !std::isfinite(row.diameter))
         r.fail(s.line, "SURF " + std::to_string(number) + " has no positive semi-diameter (DIAM, MEMA, CLAP or FLAP)");
     if (row.obscurationDiameter >= row.diameter)
@@ -555,7 +577,7 @@ std::vector<Wavelength> usedWavelengths(const Reader& r) {
         return w;
     }
     if (int(w.size()) == kWavelengthSlots)
-        while (int(w.size()) > std::max(r.primarySlot, 1) && w.back().micrometres == kDefaultSlotMicrometres &&
+        while (int(w.size()) > std::max(r.primarySlot, 1) && w.back().nanometres == kDefaultSlotNanometres &&
                w.back().weight == 1)
             w.pop_back();
     return w;
@@ -587,8 +609,8 @@ void setHeader(const Reader& r, LensTable& t) {
     while (kept < t.comments.size() && (bytes += t.comments[kept].size()) <= kMaxCommentBytes) ++kept;
     t.comments.resize(kept);
     for (const Wavelength& w : usedWavelengths(r)) {
-        if (const auto problem = wavelengthProblem(w.micrometres * 1000)) r.fail(w.line, "WAVM: " + *problem);
-        t.wavelengths.push_back(w.micrometres * 1000);
+        if (const auto problem = wavelengthProblem(w.nanometres)) r.fail(w.line, "WAVM: " + *problem);
+        t.wavelengths.push_back(w.nanometres);
         t.wavelengthWeights.push_back(w.weight);
     }
     if (!t.wavelengths.empty()) {
@@ -624,7 +646,10 @@ LensTable assemble(const Reader& r, int lastLine) {
         t.rows.push_back(lensRow(r, r.surfaces[i], i, t.rows.empty() ? nullptr : &t.rows.back(), reversed));
     }
     if (image.type == "COORDBRK") r.fail(image.line, "the image surface cannot be a coordinate break");
+    // Nothing follows the image, so whether its coordinates return does not matter: it is basic,
+    // as Code V states an image's decentre (and as a .zmx written from a .seq reads back).
     t.imageFrame = surfaceTilt(r, image);
+    if (t.imageFrame) t.imageFrame->mode = FrameMode::Basic;
     if (object.thicknessLine && std::fabs(object.thickness) < 1e10) t.objectDistance = object.thickness * r.millimetresPerUnit;
     t.warnings.insert(t.warnings.begin(), r.warnings.begin(), r.warnings.end());
     return t;

@@ -224,6 +224,18 @@ TEST(CodeV, PrivateCatalogGlasses) {
     EXPECT_DOUBLE_EQ(lens.primaryWavelength, 600);  // REF defaults to the first wavelength
 }
 
+// A mirror sends the ray back through the medium it came from: its row holds that medium (as a
+// .zmx's does), so the two readers' tables of one Mangin mirror agree.
+TEST(CodeV, AMirrorRowHoldsTheMediumItReflectsIn) {
+    const LensTable t = parseCodeV("so 0 1e10\ns 100 5 NBK7_SCHOTT\nsto\ncir 10\ns -200 -5 refl\ncir 10\n"
+                                   "s 100 -50\ncir 10\nepd 10; wl 587.5618\n", "mangin.seq");
+    ASSERT_EQ(t.rows.size(), 3u);
+    EXPECT_TRUE(t.rows[1].mirror);
+    EXPECT_EQ(t.rows[1].glass, "NBK7");
+    EXPECT_EQ(t.rows[1].glassCatalog, "SCHOTT");
+    EXPECT_EQ(t.rows[2].glass, "");
+}
+
 TEST(CodeV, DecentresTiltsAndApertures) {
     const std::string text =
         "so 0 1e10\n"
@@ -252,6 +264,7 @@ TEST(CodeV, DecentresTiltsAndApertures) {
     EXPECT_DOUBLE_EQ(m.clearShape->halfWidthY, 12);
     EXPECT_DOUBLE_EQ(m.clearShape->centreY, 4);
     EXPECT_DOUBLE_EQ(m.obscurationDiameter, 4);  // CIR OBS with a label; CIR EDG is not a clear aperture
+    EXPECT_DOUBLE_EQ(m.diameter, 2 * std::sqrt(10.0 * 10 + 16 * 16));  // the circle holding the rectangle's far corner
     EXPECT_EQ(t.rows[2].frame->mode, FrameMode::Bend);
     EXPECT_EQ(t.rows[3].frame->mode, FrameMode::Reverse);
     EXPECT_EQ(t.rows[3].frame->decentre, (std::array<double, 3>{0, 0, 0.5}));

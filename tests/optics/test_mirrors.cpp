@@ -186,3 +186,48 @@ TEST(Mirrors, ObscurationAsLargeAsTheApertureIsRefused) {
         EXPECT_NE(std::string(e.what()).find("obscuration"), std::string::npos) << e.what();
     }
 }
+
+namespace {
+
+// Flat air surfaces 10 mm apart: the first (the stop) tilted about x by tilts[0] degrees (a basic
+// decentre: the surfaces after it follow), coordinate breaks by the other tilts after it.
+LensTable turnedTable(const std::vector<double>& tilts) {
+    LensTable t;
+    t.name = "turned";
+    t.layout = TableLayout::GapAfter;
+    t.format = "zmx";
+    LensTableRow flat;
+    flat.diameter = 10;
+    flat.gap = 10;
+    flat.stop = true;
+    flat.frame = FrameChange{{}, {tilts[0], 0, 0}, FrameMode::Basic, TiltOrder::DecentreThenTilt};
+    t.rows.push_back(flat);
+    flat.stop = false;
+    flat.frame.reset();
+    for (std::size_t i = 1; i < tilts.size(); ++i) {
+        LensTableRow turn;
+        turn.coordinateBreak = true;
+        turn.frame = FrameChange{{}, {tilts[i], 0, 0}, FrameMode::Basic, TiltOrder::DecentreThenTilt};
+        t.rows.push_back(turn);
+    }
+    t.rows.push_back(flat);
+    t.rows.push_back(flat);
+    return t;
+}
+
+}  // namespace
+
+// Which way the light runs along z after a surface is decided by the motions together: tilts of 60
+// and 45 degrees turn z around as one of 105 does (the axis (0, 0, -1) turned by 105 degrees about x
+// has z component -cos 105 > 0). Counting each surface's motion alone said 60 and 45 did not, so a
+// Code V fold written as coordinate breaks mirrored its image space the other way.
+TEST(Mirrors, MotionsTurnZAroundTogether) {
+    ASSERT_GT(-std::cos(105 * M_PI / 180), 0);
+    for (const auto& tilts : {std::vector<double>{105}, std::vector<double>{60, 45}, std::vector<double>{35, 35, 35}}) {
+        const LensSystem lens = buildLensSystem(turnedTable(tilts));
+        ASSERT_EQ(lens.surfaces.size(), 3u);
+        EXPECT_EQ(lens.zDirectionAfter(0), tilts[0] > 90 ? 1 : -1) << tilts.size() << " motions";
+        EXPECT_EQ(lens.zDirectionAfter(1), 1) << tilts.size() << " motions";
+    }
+    EXPECT_EQ(buildLensSystem(turnedTable({60})).zDirectionAfter(1), -1);
+}

@@ -362,6 +362,25 @@ TEST(ZemaxErrors, GapBeforeLayoutDoesNotApply) {
 }
 
 TEST(ZemaxErrors, CoordinateBreakAsTheStop) { expectError(singlet("  TYPE COORDBRK"), 8, "a coordinate break cannot be the stop"); }
+// DIAM 0 leaves the clear aperture to the program (Zemax's automatic solve), as a Code V surface
+// without CIR; no DIAM at all is still an error (NoSemiDiameter).
+TEST(Zemax, DiamZeroIsAnAutomaticClearAperture) {
+    const LensTable t = parseZemax(replaced(singlet(), "  DIAM 10\nSURF 3", "  DIAM 0\nSURF 3"), "auto.zmx");
+    EXPECT_TRUE(t.rows[1].automaticDiameter);
+    EXPECT_EQ(t.rows[1].diameter, 0);
+    EXPECT_FALSE(t.rows[0].automaticDiameter);
+}
+
+// WAVM in micrometres reads as exactly the double the same digits in nanometres are: 0.40012 um is
+// 400.12 nm, which 0.40012 * 1000 in doubles is not.
+TEST(Zemax, WavelengthsInMicrometresAreExactNanometres) {
+    ASSERT_NE(0.40012 * 1000, 400.12);
+    const LensTable t = parseZemax(singlet("  CONI 0", "MODE SEQ\nWAVM 1 0.40012 1\nWAVM 2 5.875618E-1 1"), "w.zmx");
+    ASSERT_EQ(t.wavelengths.size(), 2u);
+    EXPECT_EQ(t.wavelengths[0], 400.12);
+    EXPECT_EQ(t.wavelengths[1], 587.5618);
+}
+
 TEST(ZemaxErrors, OldFormDecenter) { expectError(singlet("  DECY 0.5"), 13, "tilts and decenters in the old form (DECY)"); }
 TEST(ZemaxErrors, OldFormTilt) { expectError(singlet("  TILT 3"), 13, "tilts and decenters in the old form (TILT)"); }
 TEST(ZemaxErrors, SurfaceTiltAfterTheSurface) {

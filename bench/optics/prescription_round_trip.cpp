@@ -1,0 +1,82 @@
+// Every prescription in a folder read, written as .zmx, read back and compared field by field
+// (formats/LensTableDifference.h), and the built lenses where the rows differ: the table in
+// docs/prescriptions.md ("Writing prescriptions"). Not a benchmark: a check of the .zmx writer
+// against files from elsewhere (../shared/realworld/prescriptions), which are not in the repository.
+//
+//   prescription_round_trip FOLDER
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "LensTableDifference.h"
+#include "PrescriptionJson.h"
+#include "ZemaxWriter.h"
+#include "firstorder/FirstOrder.h"
+#include "prescription/LensSystem.h"
+#include "prescription/NumberText.h"
+#include "prescription/ZemaxFile.h"
+
+namespace {
+
+using namespace lenslab;
+
+// EFL and BFD of the built lens as text, or why there are none.
+std::string firstOrderText(const LensTable& table) {
+    try {
+        const FirstOrder f = computeFirstOrder(buildLensSystem(table));
+        return "EFL " + formatNumber(f.efl, 17) + ", BFD " + formatNumber(f.backFocalDistance, 17);
+    } catch (const std::exception& e) {
+        return std::string("no first order (") + e.what() + ")";
+    }
+}
+
+std::string roundTrip(const std::string& path) {
+    LensTable original;
+    try {
+        original = withGapAfterRows(readLensTable(path));
+        buildLensSystem(original);
+    } catch (const LensTableError& e) {
+        return "does not read | " + e.problem();
+    }
+    std::string written;
+    try {
+        written = writeZemaxText(original);
+    } catch (const LensTableError& e) {
+        return "**refused** | line " + std::to_string(e.line()) + ": " + e.problem();
+    }
+    LensTable again;
+    try {
+        again = parseZemax(written, "written.zmx");
+    } catch (const LensTableError& e) {
+        return "**unreadable** | the written file, line " + std::to_string(e.line()) + ": " + e.problem();
+    }
+    const std::string before = firstOrderText(original), after = firstOrderText(again);
+    const bool catalogsMoved = withRowCatalogsInTheFile(original).catalogs != original.catalogs;
+    const auto difference = lensTableDifference(withRowCatalogsInTheFile(original), again);
+    if (!difference)
+        return std::string("round-trips | every field equal") + (catalogsMoved ? " (the rows' Code V catalogs as GCAT)" : "") +
+               "; " + (before == after ? "same " : "**first order differs** ") + before;
+    const auto lensDifference = builtLensDifference(original, again, 1e-12);
+    if (!lensDifference)
+        return "same lens | the built lenses agree surface for surface and ray for ray (1e-12); the rows differ (" +
+               *difference + ")";
+    return "**differs** | " + *difference + "; the built lens: " + *lensDifference;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::cerr << "usage: prescription_round_trip FOLDER\n";
+        return 2;
+    }
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(argv[1]))
+        if (isLensFileName(entry.path().string())) files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    std::cout << "| file | .zmx round trip | detail |\n|---|---|---|\n";
+    for (const auto& f : files) std::cout << "| " << f.filename().string() << " | " << roundTrip(f.string()) << " |\n";
+}
