@@ -2,7 +2,9 @@
 // order mark as Zemax writes it, is uploaded through the file picker; the page shows its glasses,
 // conics and aspheric terms, the colour block with the numbers the API gives, and a diagram whose
 // colour fans (F, d, C) appear when the box is ticked. A wavelength outside 180-2500 nm is marked in
-// its field and never sent. Screenshot: tests/browser/artifacts/zemax-lens.png.
+// its field and never sent. A Code V .seq with a tilted plate uploads, its surface table shows the
+// tilts and its colour block the focal lengths at F, d and C. Screenshots:
+// tests/browser/artifacts/zemax-lens.png, codev-tilted-plate.png.
 // usage: node zemax.test.mjs LENSLAB_BINARY SOURCE_DIR
 import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -37,6 +39,49 @@ const diagramPixelsNear = (page, rgb) => page.$eval("#diagram", (img, rgb) => {
     if (Math.abs(data[i] - rgb[0]) < 25 && Math.abs(data[i + 1] - rgb[1]) < 25 && Math.abs(data[i + 2] - rgb[2]) < 25) ++count;
   return count;
 }, rgb);
+
+// A Code V sequence file (our own: an N-BK7 plate tilted 10 degrees about x before an N-BK7 singlet,
+// R 50 / -50, 5 mm) uploaded through the file picker: the surface table shows the plate's tilt and
+// frame mode, and the colour block gives the singlet's focal lengths at F, d and C (the plate adds
+// no power; thick-lens formula with Schott's indices: 48.694, 49.213, 49.447 mm).
+const TILTED_PLATE_SEQ = `RDM
+LEN "A plate tilted 10 degrees before a singlet"
+DIM M
+WL 587.5618
+EPD 10
+YAN 0 3
+SO 0 1e10
+S 0 4 N-BK7_SCHOTT
+  DAR
+  ADE 10
+S 0 5
+  DAR
+  ADE 10
+S 50 5 N-BK7_SCHOTT
+STO
+S -50 45
+SI 0 0
+GO
+`;
+async function checkTiltedCodeVUpload(page) {
+  const upload = join(work, "tilted-plate.seq");
+  writeFileSync(upload, TILTED_PLATE_SEQ);
+  await page.setInputFiles("#lens-file", upload);
+  await waitForUpload(page);
+  await page.waitForFunction(() => document.querySelector("#lens-title").textContent === "tilted-plate");
+  await page.waitForFunction(() => document.querySelectorAll("#lens-surfaces tbody tr").length === 4);
+  const surfaces = await page.$$eval("#lens-surfaces tbody tr", (rows) => rows.map((r) => [...r.cells].map((c) => c.textContent)));
+  const tilt = "decentre (0.000, 0.000, 0.000) mm, tilt (10.000, 0.000, 0.000)° (decentre and return, decentre then tilt)";
+  check(surfaces[0][12] === tilt && surfaces[1][12] === tilt && surfaces[2][12] === "" && surfaces[3][12] === "",
+        `the .seq's tilted plate shows its tilt in the surface table: "${surfaces[0][12]}"`);
+  const colour = Object.fromEntries(await page.$$eval("#lens-colour tbody tr", (rows) => rows.map((r) => [r.cells[0].textContent, r.querySelector("td").textContent])));
+  const efls = colour["EFL at F, d, C"].split(", ").map(Number);
+  check(Math.abs(efls[0] - 48.694) < 0.001 && Math.abs(efls[1] - 49.213) < 0.001 && Math.abs(efls[2] - 49.447) < 0.001,
+        `and the singlet's focal lengths at F, d, C: ${colour["EFL at F, d, C"]}`);
+  const id = await page.getAttribute("#lens-title", "data-id");
+  await page.waitForFunction((id) => document.querySelector("#diagram-status").textContent.includes(id), id);
+  await (await page.$("#diagram")).screenshot({ path: join(artifacts, "codev-tilted-plate.png") });
+}
 
 async function main() {
   const source = readFileSync(join(sourceDir, "lenses", "us2015-0092100-ex1-55mm.zmx"), "utf8");
@@ -116,6 +161,7 @@ async function main() {
       }
     }
     await page.screenshot({ path: join(artifacts, "zemax-lens.png"), fullPage: true });
+    await checkTiltedCodeVUpload(page);
   } finally {
     await closeAll(context, server, work);
   }

@@ -6,6 +6,8 @@
 
 #include "DiagramStyle.h"
 #include "DiagramTestSupport.h"
+#include "LensOutline.h"
+#include "prescription/CodeVFile.h"
 
 namespace lenslab::test {
 namespace {
@@ -87,6 +89,29 @@ TEST(PrescriptionPictures, MirrorsAndTheObscurationAreDrawn) {
     const Surface& window = lens.surfaces[0];
     ASSERT_EQ(window.obscurationRadius, 15);
     for (double y : {-10.0, 10.0}) EXPECT_TRUE(showsNear(image, picture.view.toPicture({window.z, y}), kStop)) << y;
+}
+
+// A plate tilted 10 degrees about x (Code V DAR on both faces) is drawn tilted: its flat faces run
+// at tan(10 deg) in the (z, y) plane the rays are drawn in, each through its vertex; the singlet
+// behind it (the plate's tilt undone: DAR) is drawn as the surfaces' profiles give it.
+TEST(PrescriptionPictures, ATiltedPlateIsDrawnTilted) {
+    const std::string text = "rdm\nso 0 1e10\ns 0 4 n-bk7_schott\ndar\nade 10\ns 0 5\ndar\nade 10\n"
+                             "s 50 5 n-bk7_schott\nsto\ns -50 45\nsi 0 0\nepd 10; wl 587.5618\n";
+    const LensSystem lens = buildLensSystem(parseCodeV(text, "plate.seq"));
+    const LensOutline outline = buildLensOutline(lens);
+    ASSERT_EQ(outline.glass.size(), 2u);
+    const GlassElement& plate = outline.glass[0];
+    const double slope = std::tan(10 * M_PI / 180);
+    for (const auto* face : {&plate.front, &plate.rear}) {
+        const double vertexZ = face == &plate.front ? lens.surfaces[0].z : lens.surfaces[1].z;
+        for (const ZY& p : *face) EXPECT_NEAR(std::fabs(p.z - vertexZ), slope * std::fabs(p.y), 1e-9) << p.y;
+        EXPECT_GT(std::fabs(face->front().z - face->back().z), 1.0);  // tilted indeed: 2 mm over the plate
+    }
+    const GlassElement& singlet = outline.glass[1];
+    for (std::size_t k = 0; k < singlet.front.size(); ++k) {
+        EXPECT_NEAR(singlet.front[k].z, profileZ(lens.surfaces[2], singlet.front[k].y), 1e-12);
+        EXPECT_NEAR(singlet.rear[k].z, profileZ(lens.surfaces[3], singlet.rear[k].y), 1e-12);
+    }
 }
 
 }  // namespace lenslab::test
