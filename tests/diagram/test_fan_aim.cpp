@@ -39,7 +39,9 @@ TEST(FanAim, RaysComeFromTheObjectSideAndSpanTheOverfilledStop) {
         const ZY atStop = outside ? p.back() : p.at(a.lens.stopIndex + 1);
         EXPECT_NEAR(atStop.z, stop.z, 1e-9) << "ray " << k;
         EXPECT_NEAR(atStop.y, expected, 1e-6) << "ray " << k;
-        if (!outside) EXPECT_NEAR(p.back().z, setup.filmZ, 1e-9) << "ray " << k;
+        if (!outside) {
+            EXPECT_NEAR(p.back().z, setup.filmZ, 1e-9) << "ray " << k;
+        }
     }
 }
 

@@ -222,7 +222,9 @@ TEST(NanoVdb, MajorantsBoundTheDensityVoxelByVoxel) {
         for (int y = 0; y < 8; ++y)
             for (int z = 0; z < 8; ++z) {
                 const bool near = std::abs(x - 2) <= 2 && std::abs(y - 5) <= 2 && std::abs(z - 6) <= 2;
-                if (!near) EXPECT_LE(m.at(x, y, z), sigmaT * 0.1f) << x << " " << y << " " << z;
+                if (!near) {
+                    EXPECT_LE(m.at(x, y, z), sigmaT * 0.1f) << x << " " << y << " " << z;
+                }
             }
 }
 

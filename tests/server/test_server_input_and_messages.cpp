@@ -59,9 +59,9 @@ TEST_F(ServerInputAndMessages, AHugeGlassNameIsRefusedWithoutASearch) {
 TEST_F(ServerInputAndMessages, NumbersPastADoubleAre400OnEveryRoute) {
     auto c = server_->client();
     const std::string rows = dgaussRows(c)["rows"].dump();
-    for (const std::string& field : {"fstop", "focus", "wavelength"}) {
+    for (const char* field : {"fstop", "focus", "wavelength"}) {
         const std::string body = "{\"rows\": " + rows + ", \"" + field + "\": 1e400}";
-        for (const std::string& route : {"/api/prescriptions/preview", "/api/prescriptions/table.dat", "/api/prescriptions/prescription.zmx"}) {
+        for (const char* route : {"/api/prescriptions/preview", "/api/prescriptions/table.dat", "/api/prescriptions/prescription.zmx"}) {
             const Reply r = postRaw(c, route, body);
             EXPECT_EQ(r.status, 400) << route << " " << field << ": " << r.raw.substr(0, 200);
             EXPECT_TRUE(r.body.contains("error")) << route;
@@ -112,14 +112,14 @@ TEST_F(ServerInputAndMessages, ALensAt550NmIsSavedAt550Nm) {
 TEST_F(ServerInputAndMessages, WritersRefuseTextTheirFilesCannotHold) {
     const std::string id = upload("# Singlet\n# note\vUNIT IN\n50 5 1.5 20\n-50 45 1 20\n0 0 0 15\n", "vt.dat");
     auto c = server_->client();
-    for (const std::string& file : {"table.dat", "prescription.zmx"}) {
+    for (const char* file : {"table.dat", "prescription.zmx"}) {
         const Reply r = get(c, "/api/lenses/" + id + "/" + file);
         EXPECT_EQ(r.status, 422) << file << ": " << r.raw.substr(0, 300);
         EXPECT_NE(r.body.value("error", std::string()).find("comment 2"), std::string::npos) << r.raw;
     }
     json body = dgaussRows(c);
     body["comments"] = {"Double Gauss", "note\nUNIT IN\nMODE NSC"};
-    for (const std::string& route : {"/api/prescriptions/table.dat", "/api/prescriptions/prescription.zmx"}) {
+    for (const char* route : {"/api/prescriptions/table.dat", "/api/prescriptions/prescription.zmx"}) {
         const Reply r = postJson(c, route, body);
         EXPECT_EQ(r.status, 400) << route << ": " << r.raw.substr(0, 300);  // the door refuses it first
         EXPECT_EQ(r.raw.find("MODE NSC"), std::string::npos) << r.raw;
@@ -132,7 +132,7 @@ TEST_F(ServerInputAndMessages, AMissingFileIsReportedWithoutItsPath) {
     const std::string id = upload(kSmallLensTable, "gone.dat");
     std::filesystem::remove(folder() + "/lenses/" + id + ".dat");
     auto c = server_->client();
-    for (const std::string& file : {"prescription", "table.dat", "prescription.zmx", "table"}) {
+    for (const char* file : {"prescription", "table.dat", "prescription.zmx", "table"}) {
         const Reply r = get(c, "/api/lenses/" + id + "/" + file);
         EXPECT_GE(r.status, 400) << file;
         expectNoServerPath(r.raw, file);
