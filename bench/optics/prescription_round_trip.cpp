@@ -18,15 +18,17 @@
 #include "prescription/LensSystem.h"
 #include "prescription/NumberText.h"
 #include "prescription/ZemaxFile.h"
+#include "trace/AxisRay.h"
 
 namespace {
 
 using namespace lenslab;
 
-// EFL and BFD of the built lens as text, or why there are none.
+// EFL and BFD of the built lens (along its axis ray, as lenslab reports a decentred lens's) as
+// text, or why there are none.
 std::string firstOrderText(const LensTable& table) {
     try {
-        const FirstOrder f = computeFirstOrder(buildLensSystem(table));
+        const FirstOrder f = computeFirstOrder(alongAxisRay(buildLensSystem(table)));
         return "EFL " + formatNumber(f.efl, 17) + ", BFD " + formatNumber(f.backFocalDistance, 17);
     } catch (const std::exception& e) {
         return std::string("no first order (") + e.what() + ")";
