@@ -6,6 +6,6 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh --tests
 scripts/build.sh
 ctest --test-dir build --output-on-failure -j2 --timeout 600
-# A short fuzz of the six parsers and the tracer (lens table, trace, .zmx, .seq, .agf, NanoVDB; 10 s
+# A short fuzz of five parsers and the tracer (lens table, trace, .zmx, .seq, .agf, NanoVDB; 10 s
 # each: a smoke run that keeps the whole test within its time; longer runs: scripts/fuzz.sh 300).
 scripts/fuzz.sh 10
