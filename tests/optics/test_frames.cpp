@@ -14,6 +14,7 @@
 #include "trace/AxisRay.h"
 #include "trace/ExactTrace.h"
 #include "trace/RayBatch.h"
+#include "PrescriptionRows.h"
 
 using namespace lenslab;
 
@@ -22,11 +23,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 LensTableRow row(double radius, double gap, double index, double diameter, int line) {
-    LensTableRow r;
-    r.radius = radius;
-    r.gap = gap;
-    r.index = index;
-    r.diameter = diameter;
+    LensTableRow r = test::row(radius, gap, index, diameter);
     r.line = line;
     return r;
 }

@@ -8,8 +8,10 @@
 #include "prescription/FormSag.h"
 #include "prescription/LensSystem.h"
 #include "trace/ExactTrace.h"
+#include "PrescriptionRows.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
@@ -43,18 +45,11 @@ TEST(SurfaceForms, QbfsWithOnlyItsBaseSphereIsThatSphere) {
     const SurfaceForm f = qForm(SurfaceKind::Qbfs, 20, {0, 0, 0});
     for (double r : {0.0, 1.0, 7.5, 19.0, 30.0}) EXPECT_EQ(formSagOf(f, c, 0, r), sphereSag(c, r)) << r;
     // And a lens with such a surface traces as the sphere does, ray for ray.
-    LensTable t;
-    t.name = "q";
-    t.layout = TableLayout::GapAfter;
-    t.format = "zmx";
-    LensTableRow front;
-    front.radius = 35, front.gap = 5, front.index = 1.6, front.diameter = 30, front.stop = true, front.line = 1;
-    LensTableRow back;
-    back.radius = -50, back.gap = 40, back.diameter = 30, back.line = 2;
-    t.rows = {front, back};
-    const LensSystem sphere = buildLensSystem(t);
-    t.rows[0].form = f;
-    const LensSystem q = buildLensSystem(t);
+    LensTableRow front = row(35, 5, 1.6, 30);
+    front.stop = true;
+    const LensSystem sphere = buildRows({front, row(-50, 40, 0, 30)}, "q");
+    front.form = f;
+    const LensSystem q = buildRows({front, row(-50, 40, 0, 30)}, "q");
     for (double y : {-12.0, -3.0, 0.5, 9.0}) {
         const Ray ray{{0.3, y, 10}, normalize({0, -0.02, -1})};
         const TraceResult a = traceRay(sphere, ray, TraceDirection::SceneToFilm);
@@ -124,18 +119,11 @@ TEST(SurfaceForms, SlopesAreTheSagsDerivative) {
 // A ray traced onto a Qcon surface lands on it: its hit satisfies z = vertex - sag(r) in the
 // surface's frame, and refracts about the sag's normal (Snell's law holds across it).
 TEST(SurfaceForms, TraceLandsOnTheQconSag) {
-    LensTable t;
-    t.name = "qcon";
-    t.layout = TableLayout::GapAfter;
-    t.format = "zmx";
-    LensTableRow front;
-    front.radius = 40, front.gap = 6, front.index = 1.7, front.diameter = 36, front.stop = true, front.line = 1;
+    LensTableRow front = row(40, 6, 1.7, 36);
+    front.stop = true;
     front.conic = -0.6;
     front.form = qForm(SurfaceKind::Qcon, 18, {-0.08, 0.03, -0.01});
-    LensTableRow back;
-    back.radius = -70, back.gap = 40, back.diameter = 36, back.line = 2;
-    t.rows = {front, back};
-    const LensSystem lens = buildLensSystem(t);
+    const LensSystem lens = buildRows({front, row(-70, 40, 0, 36)}, "qcon");
     const Surface& s = lens.surfaces[0];
     TraceOptions one;
     one.end = 1;
