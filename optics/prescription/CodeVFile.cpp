@@ -239,7 +239,9 @@ void readWtw(Reader& r, const Command& c) { r.weights = r.numbers(c, kMaxWavelen
 
 void readRef(Reader& r, const Command& c) {
     const double v = r.number(c, 0);
-    if (v != std::floor(v) || v < 1) r.fail(c.line, "REF names a wavelength by its number (1, 2, ...), found " + c.words[0].text);
+    if (v != std::floor(v) || v < 1 || v > kMaxWavelengths)
+        r.fail(c.line, "REF names a wavelength by its number (1.." + std::to_string(kMaxWavelengths) + "), found " +
+                           c.words[0].text);
     r.reference = static_cast<int>(v);
     r.referenceLine = c.line;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "prescription/Coating.h"
+#include "prescription/NumberText.h"
 #include "prescription/TextEncoding.h"
 #include "prescription/Wavelength.h"
 
@@ -444,7 +445,7 @@ SurfaceForm surfaceForm(const Reader& r, const RawSurface& s) {
         }
         for (const auto& t : s.extra)
             if (t.index == 1 && t.value != 0)
-                r.fail(t.line, "the toroid's extra polynomial terms (XDAT 1 " + std::to_string(int(t.value)) + ") are not supported");
+                r.fail(t.line, "the toroid's extra polynomial terms (XDAT 1 " + formatNumber(t.value) + ") are not supported");
     } else if (s.type == "QED_TYPE") {
         std::array<double, 3 + kFormTerms> x{};
         int count = 0;
@@ -457,8 +458,10 @@ SurfaceForm surfaceForm(const Reader& r, const RawSurface& s) {
         }
         if (x[0] != 0 && x[0] != 1) r.fail(s.line, "the Q-type surface's XDAT 1 must be 0 (Qcon) or 1 (Qbfs)");
         f.kind = x[0] == 0 ? SurfaceKind::Qcon : SurfaceKind::Qbfs;
+        if (!(x[1] >= 0 && x[1] <= kFormTerms) || x[1] != std::floor(x[1]))
+            r.fail(s.line, "a Q-type surface's XDAT 2 counts its terms: a whole number up to " + std::to_string(kFormTerms) +
+                               " here");
         f.termCount = std::min(int(x[1]), std::max(count - 3, 0));
-        if (x[1] > kFormTerms) r.fail(s.line, "a Q-type surface has at most " + std::to_string(kFormTerms) + " terms here");
         f.normalisationRadius = x[2] * u;
         for (int m = 0; m < f.termCount; ++m) f.terms[m] = x[3 + m] * u;
     }

@@ -81,7 +81,8 @@ bool GuardedStream::account(const char* bytes, std::size_t count) {
     for (std::size_t i = 0; i < count; ++i) {
         if (!inHead_) {
             bodyBytes_ += count - i;
-            return bodyBytes_ <= limits_.maxBodyWireBytes || fail(StreamViolation::BodyTooLarge);
+            const bool withinPayload = !chunked_ || chunkedPayload_.take(bytes + i, count - i, limits_.maxBodyBytes);
+            return (withinPayload && bodyBytes_ <= limits_.maxBodyWireBytes) || fail(StreamViolation::BodyTooLarge);
         }
         ++headBytes_;
         ++lineBytes_;
@@ -92,6 +93,8 @@ bool GuardedStream::account(const char* bytes, std::size_t count) {
             inHead_ = !atLineStart_;  // an empty line ends the head
             if (!inHead_ && bodyDeadline_ == Clock::time_point()) bodyDeadline_ = Clock::now() + limits_.readTimeout;
             bodyFramed_ = bodyFramed_ || isFramingHeader(lineStart_);
+            // The head's checks refuse every Transfer-Encoding but chunked before the body is read.
+            chunked_ = chunked_ || lineStart_.rfind("transfer-encoding:", 0) == 0;
             atLineStart_ = true;
             firstLine_ = false;
             lineBytes_ = 0;

@@ -3,7 +3,8 @@
 // (0.11.4): a deadline for the whole request head (GuardedServer hands a connection to a worker
 // once its head is complete or late, so a late head is cut off here with 408), a cap on the
 // head's total size (cpp-httplib only caps single lines), a cap on the body bytes that also holds
-// for chunked bodies (it only checks Content-Length) and a deadline for the whole body. A read past
+// for chunked bodies (it only checks Content-Length): their payload counted exactly, their wire
+// bytes with slack for the framing, and a deadline for the whole body. A read past
 // a limit fails, and violation() says which limit it was, so the answer can be 408, 413 or 431
 // rather than a plain 400. A request with neither Content-Length nor Transfer-Encoding has an
 // empty body (RFC 9112 6.3): reading it ends at once instead of waiting for the client to close
@@ -14,11 +15,14 @@
 #include <cstddef>
 #include <string>
 
+#include "guards/ChunkedBodyMeter.h"
+
 namespace lenslab {
 
 struct StreamLimits {
     std::size_t maxHeaderBytes = 16 << 10;  // request line and headers together
     std::size_t maxHeaderLine = 8 << 10;    // one line of them
+    std::size_t maxBodyBytes = 1 << 20;      // a chunked body's payload
     std::size_t maxBodyWireBytes = 1 << 20;  // body bytes as sent, chunk framing included
     std::chrono::milliseconds headerTimeout{10000};  // the whole head, from its first wait
     std::chrono::milliseconds readTimeout{10000};    // the body, in all
@@ -55,7 +59,8 @@ private:
     StreamLimits limits_;
     std::string buffer_;
     std::size_t begin_ = 0;
-    bool inHead_ = true, atLineStart_ = true, firstLine_ = true, bodyFramed_ = false;
+    bool inHead_ = true, atLineStart_ = true, firstLine_ = true, bodyFramed_ = false, chunked_ = false;
+    ChunkedBodyMeter chunkedPayload_;
     std::string lineStart_;  // the current head line's first characters, to spot the framing headers
     std::size_t headBytes_ = 0, lineBytes_ = 0, bodyBytes_ = 0;
     std::chrono::steady_clock::time_point headDeadline_, bodyDeadline_;

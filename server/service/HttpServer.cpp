@@ -54,8 +54,10 @@ ConnectionLimits connectionLimits(const HttpLimits& http, int threads) {
     ConnectionLimits limits;
     limits.stream.maxHeaderBytes = http.maxHeaderBytes;
     limits.stream.maxHeaderLine = std::min<std::size_t>(http.maxHeaderBytes, CPPHTTPLIB_HEADER_MAX_LENGTH);
-    // Chunk framing (size lines, CRLFs) travels with the data: a margin over the body limit for it,
-    // and cpp-httplib's own Content-Length check still holds plain bodies to the exact limit.
+    // A chunked body's payload is held to the exact limit as it arrives; its framing (size lines,
+    // CRLFs) travels with the data, so the wire bytes get a margin. A body with a Content-Length
+    // past the limit is refused from its head.
+    limits.stream.maxBodyBytes = http.maxBodyBytes;
     limits.stream.maxBodyWireBytes = http.maxBodyBytes + http.maxBodyBytes / 16 + 4096;
     limits.stream.headerTimeout = std::chrono::seconds(http.headerTimeoutSeconds);
     limits.stream.readTimeout = std::chrono::seconds(http.readTimeoutSeconds);

@@ -13,6 +13,13 @@ inline void checkRowGeometry(const LensTableRow& r) {
     for (double a : r.aspheric) check(std::isfinite(a), "finite aspheric terms");
 }
 
+// A stated clear aperture is positive and finite; an automatic one (the file leaves it to the
+// program) is 0 until the lens is built.
+inline void checkRowDiameter(const LensTableRow& r) {
+    if (r.automaticDiameter) check(r.diameter == 0 && !r.clearShape, "an automatic aperture states no size");
+    else check(r.diameter > 0 && std::isfinite(r.diameter), "a stated diameter is positive and finite");
+}
+
 inline void checkRowMedium(const LensTableRow& r) {
     check(r.abbe >= 0 && std::isfinite(r.abbe), "finite Abbe number >= 0");
     check(r.line >= 1, "rows name their line");

@@ -22,8 +22,7 @@ void checkTable(const LensTable& t) {
     for (const LensTableRow& r : t.rows) {
         stops += r.stop;
         fuzz::checkRowGeometry(r);
-        check(r.automaticDiameter || r.clearShape || (r.diameter > 0 && std::isfinite(r.diameter)),
-              "a stated diameter is positive and finite");
+        fuzz::checkRowDiameter(r);
         check(r.index == 0 || r.index > 1, "index 0 (air) or > 1");
         fuzz::checkRowMedium(r);
         if (r.frame) {

@@ -26,8 +26,9 @@ void checkTable(const LensTable& t) {
             check(r.frame.has_value() && r.diameter == 0, "a coordinate break carries a frame, no aperture");
             continue;
         }
-        check(r.diameter > 0 && std::isfinite(r.diameter), "positive finite diameter");
-        check(r.obscurationDiameter >= 0 && r.obscurationDiameter < r.diameter, "obscuration inside the aperture");
+        fuzz::checkRowDiameter(r);
+        check(r.obscurationDiameter >= 0 && (r.automaticDiameter || r.obscurationDiameter < r.diameter),
+              "obscuration inside the aperture");
         check(r.index == 0 || r.index >= 1, "index 0 (air) or >= 1");
         fuzz::checkRowMedium(r);
         check(r.gap >= 0 || mirrors % 2 == 1, "negative gaps only after an odd number of mirrors");

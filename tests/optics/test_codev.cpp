@@ -295,6 +295,7 @@ TEST(CodeVErrors, EveryRefusalNamesTheLineAndCommand) {
     expectError(achromat("  K 1e999"), 16, "not a finite number");
     expectError(achromat("  S 1"), 16, "S needs a radius");
     expectError(achromat("REF 4"), 16, "REF 4 names no WL wavelength");
+    expectError(achromat("REF 1e11"), 16, "REF names a wavelength by its number (1..24), found 1e11");
     expectError(achromat("WL 587.56 3390"), 16, "WL: wavelength 3390 nm lies outside 180-2500 nm");
     expectError(achromat("", "DIM Q"), 1, "DIM Q is not one of");
     expectError(achromat("", "STO"), 1, "STO before the first surface");

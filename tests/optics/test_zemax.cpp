@@ -394,6 +394,13 @@ TEST(ZemaxErrors, OtherTypeIsNamedWithWhatIsSupported) {
                                                 "COORDBRK surfaces");
 }
 TEST(ZemaxErrors, QTypeKind) { expectError(singlet("  TYPE QED_TYPE\n  XDAT 1 2"), 7, "XDAT 1 must be 0 (Qcon) or 1 (Qbfs)"); }
+TEST(ZemaxErrors, QTypeTermCount) {
+    expectError(singlet("  TYPE QED_TYPE\n  XDAT 2 1e12"), 7, "XDAT 2 counts its terms: a whole number up to");
+    expectError(singlet("  TYPE QED_TYPE\n  XDAT 2 -1"), 7, "XDAT 2 counts its terms");
+}
+TEST(ZemaxErrors, ToroidExtraTerms) {
+    expectError(singlet("  TYPE TOROIDAL\n  XDAT 1 3e12"), 14, "extra polynomial terms (XDAT 1 3e+12)");
+}
 TEST(ZemaxErrors, RectangularApertureSizes) { expectError(singlet("  SQAP 4 0 0"), 13, "SQAP needs two positive half widths"); }
 TEST(ZemaxErrors, AnnularObscuration) { expectError(singlet("  OBSC 1 2 0"), 13, "annular obscurations"); }
 TEST(ZemaxErrors, ObscurationCoveringTheAperture) { expectError(singlet("  OBSC 0 10 0"), 7, "covers the whole clear aperture"); }

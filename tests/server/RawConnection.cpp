@@ -6,7 +6,9 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <regex>
 #include <stdexcept>
@@ -68,6 +70,17 @@ bool RawConnection::closedByServer() {
 int statusOf(const std::string& reply) {
     if (reply.rfind("HTTP/1.", 0) != 0 || reply.size() < 12) return 0;
     return std::atoi(reply.c_str() + 9);
+}
+
+std::string chunked(const std::string& body, std::size_t chunk) {
+    std::string out;
+    char size[32];
+    for (std::size_t at = 0; at < body.size(); at += chunk) {
+        const std::size_t n = std::min(chunk, body.size() - at);
+        std::snprintf(size, sizeof size, "%zx\r\n", n);
+        out += size + body.substr(at, n) + "\r\n";
+    }
+    return out + "0\r\n\r\n";
 }
 
 }  // namespace lenslab::test

@@ -1,6 +1,7 @@
 #pragma once
 // A plain TCP connection to the server on loopback, for requests httplib::Client will not send:
 // malformed or oversized heads, bodies without a length, clients that send slowly.
+#include <cstddef>
 #include <string>
 
 namespace lenslab::test {
@@ -25,5 +26,8 @@ private:
 
 // The status code of a raw reply ("HTTP/1.1 431 ..."), 0 when there is none.
 int statusOf(const std::string& reply);
+
+// `body` in chunked transfer encoding, `chunk` bytes a chunk, with the closing empty chunk.
+std::string chunked(const std::string& body, std::size_t chunk);
 
 }  // namespace lenslab::test

@@ -312,7 +312,9 @@ TEST_F(ServerApi, BuildsTheReportAsAJobWithProgress) {
     EXPECT_EQ(started.body["state"], "running");
     const Reply second = postJson(c, "/api/report", {{"quick", true}});
     const json firstNow = get(c, "/api/report").body;
-    if (firstNow["state"] == "running") EXPECT_EQ(second.status, 409) << second.raw;
+    if (firstNow["state"] == "running") {
+        EXPECT_EQ(second.status, 409) << second.raw;
+    }
 
     json status;
     for (int i = 0; i < 1500; ++i) {  // at most 300 s: a loaded machine is slow, not wrong

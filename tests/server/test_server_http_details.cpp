@@ -140,7 +140,7 @@ bool variesByEncoding(const std::string& reply) {
 
 TEST_F(ServerHttpDetails, ACodingWithQualityZeroIsNotUsedAndAnswersVaryByIt) {
     start();
-    for (const std::string& refusing : {"gzip;q=0", "gzip; q=0.0, br;q=0", "identity, gzip;Q=0"}) {
+    for (const std::string refusing : {"gzip;q=0", "gzip; q=0.0, br;q=0", "identity, gzip;Q=0"}) {
         const std::string reply = exchange(get("/api/lenses", "Accept-Encoding: " + refusing + "\r\n"));
         EXPECT_EQ(statusOf(reply), 200) << refusing;
         EXPECT_EQ(reply.find("Content-Encoding"), std::string::npos) << refusing << "\n" << reply.substr(0, 400);
@@ -175,7 +175,7 @@ TEST_F(ServerHttpDetails, APreviewBodyPastItsLimitNamesThatLimit) {
 // Host names as operators and DNS write them: "a, b" lists b, and a trailing dot names the same host.
 TEST_F(ServerHttpDetails, HostNamesAreReadAsWrittenInListsAndByDns) {
     start({"--allow-host", "lab.example, other.example"});
-    for (const std::string& host : {"lab.example", "other.example", "other.example.", "localhost.", "other.example.:8080"})
+    for (const std::string host : {"lab.example", "other.example", "other.example.", "localhost.", "other.example.:8080"})
         EXPECT_EQ(statusOf(exchange("GET /api/health HTTP/1.1\r\nHost: " + host + "\r\n\r\n")), 200) << host;
     EXPECT_EQ(statusOf(exchange("GET /api/health HTTP/1.1\r\nHost: attacker.example.\r\n\r\n")), 421);
 }
@@ -192,7 +192,7 @@ TEST_F(ServerHttpDetails, TwoHostHeadersAreRefused) {
 // read timeout (30 s here).
 TEST_F(ServerHttpDetails, ATransferEncodingOtherThanChunkedIsRefusedAtOnce) {
     start({"--read-timeout", "30"});
-    for (const std::string& coding : {"gzip", "gzip, chunked", "chunked, gzip", "identity"}) {
+    for (const std::string coding : {"gzip", "gzip, chunked", "chunked, gzip", "identity"}) {
         RawConnection connection(server_->port());
         connection.send("POST /api/lenses?name=x.dat HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: text/plain\r\n"
                         "Transfer-Encoding: " + coding + "\r\n\r\n5\r\nhello\r\n");

@@ -26,17 +26,6 @@ std::string paddedTable(std::size_t bytes) {
     return table + "-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
 }
 
-std::string chunked(const std::string& body, std::size_t chunk) {
-    std::string out;
-    char size[32];
-    for (std::size_t at = 0; at < body.size(); at += chunk) {
-        const std::size_t n = std::min(chunk, body.size() - at);
-        std::snprintf(size, sizeof size, "%zx\r\n", n);
-        out += size + body.substr(at, n) + "\r\n";
-    }
-    return out + "0\r\n\r\n";
-}
-
 class ServerLimits : public RawServerTest {};
 
 }  // namespace

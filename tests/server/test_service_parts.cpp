@@ -1,4 +1,4 @@
-// The service's parts in-process: request checking, identifiers, the result cache's sharing and
+// The service's parts in-process: request checking, a chunked body's payload count, identifiers, the result cache's sharing and
 // eviction, the heavy-work pool's admission, event-stream slots, storage errors' statuses, the
 // remembered render checks, and the job queue's limits, cancellation and persistence with a fake
 // renderer.
@@ -17,6 +17,7 @@
 #include "FakeRenderer.h"
 #include "core/HttpError.h"
 #include "core/Identifiers.h"
+#include "guards/ChunkedBodyMeter.h"
 #include "guards/EventStreamSlots.h"
 #include "jobs/JobJson.h"
 #include "jobs/JobQueue.h"
@@ -62,6 +63,30 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
         }
     }
     EXPECT_THROW(parseRenderRequest(json::object(), limits, ""), HttpError);
+}
+
+// Chunks of 10, 0x1a and 5 bytes (41 in all; the last one's data looks like the closing chunk)
+// with an extension, CRLFs and a trailer.
+const std::string kChunkedWire = "a\r\n0123456789\r\n1A;name=value\r\nabcdefghijklmnopqrstuvwxyz\r\n5\r\n\r\n0\r\n\r\n"
+                                 "0\r\nX-Trailer: 1\r\n\r\n";
+
+TEST(ChunkedBodyMeterTest, CountsThePayloadNotTheFramingHoweverTheBytesArrive) {
+    ChunkedBodyMeter whole;
+    EXPECT_TRUE(whole.take(kChunkedWire.data(), kChunkedWire.size(), 41));
+    EXPECT_EQ(whole.payloadBytes(), 41u);
+    ChunkedBodyMeter byteByByte;
+    for (char c : kChunkedWire) ASSERT_TRUE(byteByByte.take(&c, 1, 41));
+    EXPECT_EQ(byteByByte.payloadBytes(), 41u);
+}
+
+TEST(ChunkedBodyMeterTest, RefusesTheChunkThatPassesTheLimitFromItsSizeLine) {
+    ChunkedBodyMeter meter;
+    const std::size_t thirdSizeLine = kChunkedWire.find("5\r\n");
+    ASSERT_TRUE(meter.take(kChunkedWire.data(), thirdSizeLine, 40));
+    EXPECT_EQ(meter.payloadBytes(), 36u);
+    EXPECT_FALSE(meter.take(kChunkedWire.data() + thirdSizeLine, 3, 40));  // "5\r\n": 41 > 40 before any data
+    const std::string huge = "fffffffffffffffffffffffff\r\n";  // past size_t: refused, not wrapped round
+    EXPECT_FALSE(ChunkedBodyMeter().take(huge.data(), huge.size(), 1 << 20));
 }
 
 TEST(IdentifiersTest, AcceptOnlyPlainNames) {
