@@ -328,6 +328,20 @@ void readPrivateGlass(Reader& r, const Command& c) {
 
 // The glass word(s) after S r t: REFL, AIR, a fictitious glass (n,v / n:v / a glass code such as
 // 589613 or 517000.520000), a catalog glass (NBK7_SCHOTT, or BK7 followed by its catalog).
+// Digits with at most one point in them: a glass code (589613, 517000.520000), nothing else that
+// strtod would read (signs, exponents, hexadecimal, inf).
+bool isGlassCode(const std::string& text) {
+    const auto point = text.find('.');
+    const auto isDigit = [](char ch) { return ch >= '0' && ch <= '9'; };
+    return !text.empty() && point != 0 && std::all_of(text.begin(), text.begin() + std::min(point, text.size()), isDigit) &&
+           (point == std::string::npos ||
+            (point + 1 < text.size() && std::all_of(text.begin() + point + 1, text.end(), isDigit)));
+}
+
+// The value of a glass code's digits (strtod: a thousand digits overflow to inf and are refused by
+// the caller's check rather than thrown).
+double decimal(const std::string& digits) { return std::strtod(digits.c_str(), nullptr); }
+
 void readGlass(Reader& r, RawSurface& s, const Command& c, std::size_t from) {
     if (from >= c.words.size()) return;
     const Word& w = c.words[from];
@@ -351,22 +365,21 @@ void readGlass(Reader& r, RawSurface& s, const Command& c, std::size_t from) {
         s.fictitious = std::array<double, 2>{nd, vd};
         return;
     }
-    char* end = nullptr;
-    const double code = std::strtod(w.text.c_str(), &end);
-    if (end != w.text.c_str() && *end == '\0') {
+    if (isGlassCode(w.text)) {
         // A glass code: the digits before the point are nd - 1 (517 or 517000: 1.517), those after it
         // a tenth of Vd (520000: 52.0); six digits without a point split three and three (589613).
+        const auto point = w.text.find('.');
+        const std::string digits = w.text.substr(0, point);
+        const double code = decimal(w.text);
         double nd = 0, vd = 0;
-        const std::string digits = w.text.substr(0, w.text.find('.'));
-        if (w.text.find('.') == std::string::npos && digits.size() == 6) {
-            nd = 1 + std::stod(digits.substr(0, 3)) / 1000;
-            vd = std::stod(digits.substr(3)) / 10;
+        if (point == std::string::npos && digits.size() == 6) {
+            nd = 1 + decimal(digits.substr(0, 3)) / 1000;
+            vd = decimal(digits.substr(3)) / 10;
         } else if (code >= 1) {
             // The fraction from its own digits: code - floor(code) loses them to the whole part's.
             const double whole = std::floor(code);
-            const auto point = w.text.find('.');
             nd = 1 + whole / std::pow(10.0, std::floor(std::log10(whole)) + 1);
-            vd = point == std::string::npos ? 0 : 100 * std::stod("0" + w.text.substr(point));
+            vd = point == std::string::npos ? 0 : 100 * decimal("0" + w.text.substr(point));
         }
         if (!(nd > 1 && vd > 0)) r.fail(c.line, "glass code " + w.text + " is not nd and Vd (589613, 517000.520000)");
         s.fictitious = std::array<double, 2>{nd, vd};

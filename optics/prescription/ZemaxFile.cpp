@@ -174,13 +174,15 @@ void readGcat(Reader& r, const Line& l) { r.catalogs.insert(r.catalogs.end(), l.
 // raised by 3, so "0.5875618" is exactly the double "587.5618" is (a double read in micrometres,
 // times 1000, misses some by an ulp; formats/ZemaxWriter.cpp writes wavelengths this way).
 double nanometres(const Reader& r, const Line& l, std::size_t i) {
-    r.number(l, i);  // a finite number
+    const double micrometres = r.number(l, i);  // a finite number
     const std::string& text = l.fields[i];
     const auto e = text.find_first_of("eE");
-    const std::string shifted = e == std::string::npos
-                                    ? text + "e3"
-                                    : text.substr(0, e) + "e" + std::to_string(std::atol(text.c_str() + e + 1) + 3);
-    return std::strtod(shifted.c_str(), nullptr);
+    if (e == std::string::npos) return std::strtod((text + "e3").c_str(), nullptr);
+    // An exponent of many digits (0.5e-99999999999999999999 is a finite 0) is no wavelength to keep
+    // exact: the range check refuses it, and its own sum could overflow.
+    const long exponent = std::strtol(text.c_str() + e + 1, nullptr, 10);
+    if (exponent > 1000 || exponent < -1000) return micrometres * 1000;
+    return std::strtod((text.substr(0, e) + "e" + std::to_string(exponent + 3)).c_str(), nullptr);
 }
 
 // WAVM slot micrometres weight
@@ -513,21 +515,19 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const Len
     row.line = s.line;
     row.stop = s.stopLine != 0;
     row.name = s.comment;
+    if (!s.thicknessLine) r.fail(s.line, "SURF " + std::to_string(number) + " has no DISZ (thickness to the next surface)");
+    row.gap = s.thickness * u;
+    if (!std::isfinite(row.gap))
+        r.fail(s.thicknessLine, "DISZ must be a finite thickness (INFINITY only on the object surface, SURF 0)");
     if (s.type == "COORDBRK") {
         if (s.stopLine) r.fail(s.stopLine, "a coordinate break cannot be the stop");
         row.coordinateBreak = true;
         row.frame = coordinateBreak(r, s);
-        row.gap = s.thickness * u;
-        if (!s.thicknessLine) r.fail(s.line, "SURF " + std::to_string(number) + " has no DISZ (thickness to the next surface)");
         setMedium(row, s, before);
         return row;
     }
     if (s.curvature != 0) row.radius = static_cast<double>(u / s.curvature);
     if (!std::isfinite(row.radius)) r.fail(s.curvatureLine, "CURV is too small: the radius is not a finite number of mm");
-    if (!s.thicknessLine) r.fail(s.line, "SURF " + std::to_string(number) + " has no DISZ (thickness to the next surface)");
-    row.gap = s.thickness * u;
-    if (!std::isfinite(row.gap))
-        r.fail(s.thicknessLine, "DISZ must be a finite thickness (INFINITY only on the object surface, SURF 0)");
     if (row.gap < 0 && !reversed)
         r.fail(s.thicknessLine, "negative thickness " + formatNumber(s.thickness) +
                                     " where the light travels toward the image: a negative DISZ is allowed only after a mirror");

@@ -192,6 +192,12 @@ TEST(CodeV, FictitiousGlasses) {
     EXPECT_NEAR(t.rows[3].abbe, 63.1, 1e-9);
     EXPECT_EQ(t.rows[4].index, 0);
     EXPECT_EQ(t.rows[4].glass, "");
+    // Six characters strtod reads as a number but no glass code: a catalog's name, looked up later.
+    for (const std::string glass : {"0x1p-3", "1e+100", "inf000"}) {
+        const LensTable named = parseCodeV("so 0 1e10\ns 50 5 " + glass + "\nsto\ns -50 45\nsi 0 0\n", "g.seq");
+        EXPECT_EQ(named.rows[0].index, 0) << glass;
+        EXPECT_NE(named.rows[0].glass, "") << glass;
+    }
     // A model glass holds its figures: n_d and (n_d - 1) / (n_F - n_C).
     const LensSystem lens = buildLensSystem(t);
     const Medium& g = lens.surfaces[1].mediumAfter;
@@ -295,6 +301,8 @@ TEST(CodeVErrors, EveryRefusalNamesTheLineAndCommand) {
     expectError(achromat("  K 1e999"), 16, "not a finite number");
     expectError(achromat("  S 1"), 16, "S needs a radius");
     expectError(achromat("REF 4"), 16, "REF 4 names no WL wavelength");
+    expectError("so 0 1e10\ns 50 5 58961!\nsto\ns -50 45\nsi 0 0\n", 2, "glass code 58961 is not nd and Vd");
+    expectError("so 0 1e10\ns 50 5 " + std::string(1000, '9') + "\nsto\ns -50 45\nsi 0 0\n", 2, "glass code");
     expectError(achromat("REF 1e11"), 16, "REF names a wavelength by its number (1..24), found 1e11");
     expectError(achromat("WL 587.56 3390"), 16, "WL: wavelength 3390 nm lies outside 180-2500 nm");
     expectError(achromat("", "DIM Q"), 1, "DIM Q is not one of");

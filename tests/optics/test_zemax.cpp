@@ -412,6 +412,8 @@ TEST(ZemaxErrors, NotFinite) {
     expectError(singlet("  CONI nan"), 13, "not a finite number");
     expectError(singlet("  CONI 1e999"), 13, "not a finite number");
     expectError(replaced(singlet(), "DISZ 40", "DISZ INFINITY"), 16, "INFINITY only on the object surface");
+    expectError(replaced(singlet(), "SURF 2\n  CURV -0.02\n  DISZ 40", "SURF 2\n  TYPE COORDBRK\n  CURV 0\n  DISZ INFINITY"), 17,
+                "INFINITY only on the object surface");  // a coordinate break's thickness too
     expectError(replaced(singlet(), "CURV 0.02", "CURV 1e-320"), 9, "the radius is not a finite number");
     expectError(replaced(replaced(singlet(), "UNIT MM", "UNIT M"), "DISZ 40", "DISZ 1e306"), 16,
                 "DISZ must be a finite thickness");  // finite in metres, not in millimetres
@@ -439,6 +441,7 @@ TEST(ZemaxErrors, PrimaryWavelengthMissing) { expectError(singlet("  CONI 0", "W
 TEST(ZemaxErrors, WavelengthsOutsideTheTracedRange) {
     expectError(singlet("  CONI 0", "WAVM 1 0.1 1"), 2, "WAVM: wavelength 100 nm lies outside 180-2500 nm");
     expectError(singlet("  CONI 0", "WAVM 1 1e300 1"), 2, "wavelength 1e+303 nm lies outside");
+    expectError(singlet("  CONI 0", "WAVM 1 5e-99999999999999999999 1"), 2, "wavelength 0 nm lies outside");
     expectError(singlet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 -0.5 1\nPWAV 1"), 3, "wavelength -500 nm");
     expectError(singlet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 10.6 1\nPWAV 1"), 3, "wavelength 10600 nm");
     EXPECT_NEAR(parseZemax(singlet("  CONI 0", "WAVM 1 0.18 1\nWAVM 2 2.5 1\nPWAV 2"), "ends.zmx").primaryWavelength, 2500, 1e-9);
