@@ -17,21 +17,23 @@ namespace lenslab {
 
 namespace {
 
-std::array<double, 4> parseCrop(const std::string& text) {
-    std::array<double, 4> c{};
+// N comma-separated numbers, e.g. --crop x0,x1,y0,y1.
+template <std::size_t N>
+std::array<double, N> parseNumbers(const std::string& text, const char* flag, const char* what) {
+    std::array<double, N> c{};
     std::istringstream in(text);
     std::string part;
-    for (int i = 0; i < 4; ++i) {
-        if (!std::getline(in, part, ',')) throw UsageError("render: --crop needs x0,x1,y0,y1 (fractions of the image)");
+    for (std::size_t i = 0; i < N; ++i) {
+        if (!std::getline(in, part, ',')) throw UsageError(std::string("render: ") + flag + " needs " + what);
         try {
             std::size_t used = 0;
             c[i] = std::stod(part, &used);
             if (used != part.size()) throw std::invalid_argument(part);
         } catch (const std::exception&) {
-            throw UsageError("render: --crop: '" + part + "' is not a number");
+            throw UsageError(std::string("render: ") + flag + ": '" + part + "' is not a number");
         }
     }
-    if (std::getline(in, part, ',')) throw UsageError("render: --crop takes exactly 4 numbers");
+    if (std::getline(in, part, ',')) throw UsageError(std::string("render: ") + flag + " takes exactly " + std::to_string(N) + " numbers");
     return c;
 }
 
@@ -120,7 +122,7 @@ RenderSettings renderSettings(const ArgParser& p) {
     if (auto v = p.integer("--width")) s.width = int(*v);
     if (auto v = p.integer("--height")) s.height = int(*v);
     if (auto v = p.integer("--seed")) s.seed = std::uint64_t(*v);
-    if (p.has("--crop")) s.crop = parseCrop(p.get("--crop"));
+    if (p.has("--crop")) s.crop = parseNumbers<4>(p.get("--crop"), "--crop", "x0,x1,y0,y1 (fractions of the image)");
     if (p.has("--lens")) s.camera.lensFile = p.get("--lens");
     if (p.has("--layout")) {
         s.camera.lensLayout = parseLayoutName(p.get("--layout"));
@@ -132,6 +134,9 @@ RenderSettings renderSettings(const ArgParser& p) {
     s.camera.wavelength = flags.wavelength;
     if (auto v = p.number("--filmdiag")) s.camera.filmDiagonal = *v;
     if (p.has("--mode")) s.camera.mode = p.get("--mode");
+    s.camera.tiltDegrees = p.number("--tilt");
+    s.camera.swingDegrees = p.number("--swing");
+    if (p.has("--shift")) s.camera.shiftMm = parseNumbers<2>(p.get("--shift"), "--shift", "x,y (millimetres)");
     if (p.has("--spectral")) {
         const std::string v = p.get("--spectral");
         if (v != "on" && v != "off") throw UsageError("render: --spectral must be on or off, got '" + v + "'");
@@ -186,6 +191,9 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     p.option("--wavelengths-per-sample", "N", "spectral: wavelengths each camera sample carries, 1 to 8 (default 3, 1 with the box filter)");
     declareLensFlags(p);
     p.option("--filmdiag", "MM", "realistic camera: film diagonal, mm");
+    p.option("--tilt", "DEG", "realistic camera: tilt the lens about the film's horizontal axis (positive: its axis down; Scheimpflug)");
+    p.option("--swing", "DEG", "realistic camera: swing the lens about the film's vertical axis (positive: its axis right)");
+    p.option("--shift", "X,Y", "realistic camera: shift the lens across the film, mm (positive y: rising front)");
     p.option("--layout", "L", "realistic camera: the --lens table's layout, gap-before | gap-after (default: detect)");
     p.option("--mode", "M", "realistic camera: exact | thick | auto (thick lens where its position error < 0.5 px and brightness within 3%, over 90%+ of the film; else exact)");
     p.option("--ghosts", "G", "realistic camera: lens flare, off | auto (only with an emitter bright enough in or near the frame) |\n"

@@ -33,6 +33,10 @@ struct CameraOverrides {
     // or N, the brightest N) and their model ("exact", "paraxial"); unset: the scene camera's
     // "ghosts" and "ghostmodel" (off and exact when it has none).
     std::optional<std::string> ghosts, ghostModel;
+    // The lens tilted (about the body's x axis), swung (about its y axis), in degrees, and shifted
+    // across the film (x, y mm): a tilt-shift lens (renderer/raytracer/cameras/LensMount.h).
+    std::optional<double> tiltDegrees, swingDegrees;
+    std::optional<std::array<double, 2>> shiftMm;
 };
 
 struct RenderSettings {

@@ -30,6 +30,9 @@ RenderSettings renderSettings(const RenderJobInput& job) {
     settings.camera.spectral = job.request.spectral;
     settings.camera.ghosts = job.request.ghosts;
     settings.camera.ghostModel = job.request.ghostModel;
+    settings.camera.tiltDegrees = job.request.tilt;
+    settings.camera.swingDegrees = job.request.swing;
+    settings.camera.shiftMm = job.request.shift;
     settings.spp = job.request.spp;
     settings.width = job.request.width;
     settings.height = job.request.height;

@@ -32,6 +32,17 @@ std::optional<double> fieldNumber(const json& body, const char* field, double mi
     return x;
 }
 
+// [x, y], each within +-limit.
+std::optional<std::array<double, 2>> fieldPair(const json& body, const char* field, double limit) {
+    if (!body.contains(field) || body.at(field).is_null()) return std::nullopt;
+    const json& v = body.at(field);
+    const auto within = [&](const json& x) { return x.is_number() && std::fabs(x.get<double>()) <= limit; };
+    if (!v.is_array() || v.size() != 2 || !within(v[0]) || !within(v[1]))
+        throw HttpError(400, std::string(field) + " must be two numbers [x, y], each within +-" + json(limit).dump() + ", got " +
+                                 v.dump().substr(0, 80));
+    return std::array<double, 2>{v[0].get<double>(), v[1].get<double>()};
+}
+
 int fieldInteger(const json& body, const char* field, int fallback, int min, int max, const std::string& limitName) {
     if (!body.contains(field)) return fallback;
     const json& v = body.at(field);
@@ -55,7 +66,8 @@ std::string identifierField(const json& body, const char* field, const std::stri
 RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, const std::string& defaultScene) {
     if (!body.is_object()) throw HttpError(400, "the render request must be a JSON object");
     static const char* kFields[] = {"scene", "lens", "fstop", "focaldistance", "filmdiagonal",
-                                    "mode", "spectral", "spp", "width", "height", "ghosts", "ghost_model"};
+                                    "mode", "spectral", "spp", "width", "height", "ghosts", "ghost_model",
+                                    "tilt", "swing", "shift"};
     for (const auto& item : body.items()) {
         bool known = false;
         for (const char* f : kFields) known = known || item.key() == f;
@@ -86,6 +98,9 @@ RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, c
         r.ghostModel = fieldText(body, "ghost_model", "");
         if (!parseGhostModel(*r.ghostModel)) throw HttpError(400, badGhostModelMessage(*r.ghostModel));
     }
+    r.tilt = fieldNumber(body, "tilt", -45, 45);
+    r.swing = fieldNumber(body, "swing", -45, 45);
+    r.shift = fieldPair(body, "shift", 100);
     r.spp = fieldInteger(body, "spp", r.spp, 1, limits.maxSpp, "the service's spp limit");
     r.width = fieldInteger(body, "width", r.width, 8, limits.maxWidth, "the service's width limit");
     r.height = fieldInteger(body, "height", r.height, 8, limits.maxHeight, "the service's height limit");
@@ -110,6 +125,9 @@ nlohmann::json renderRequestJson(const RenderRequest& r) {
             {"spectral", r.spectral ? json(*r.spectral) : json(nullptr)},
             {"ghosts", r.ghosts ? json(*r.ghosts) : json(nullptr)},
             {"ghost_model", r.ghostModel ? json(*r.ghostModel) : json(nullptr)},
+            {"tilt", optional(r.tilt)},
+            {"swing", optional(r.swing)},
+            {"shift", r.shift ? json(*r.shift) : json(nullptr)},
             {"spp", r.spp},
             {"width", r.width},
             {"height", r.height}};

@@ -3,6 +3,7 @@
 // pixels. Millimetres throughout. Omitted camera settings keep the scene's own values.
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -21,6 +22,9 @@ struct RenderRequest {
     std::string mode = "exact";          // exact (every ray traced) | thick (thick lens) | auto
     std::optional<std::string> ghosts;   // lens flare: off | auto | all | N (cameras/GhostSelection.h); unset: the scene's
     std::optional<std::string> ghostModel;  // exact | paraxial; unset: the scene's
+    // A tilt-shift lens (renderer/raytracer/cameras/LensMount.h): degrees, and x, y millimetres.
+    std::optional<double> tilt, swing;
+    std::optional<std::array<double, 2>> shift;
     int spp = 16;
     int width = 320, height = 240;
 };

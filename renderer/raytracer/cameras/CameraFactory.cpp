@@ -92,6 +92,23 @@ GhostSelection ghostSelection(const ParamSet& p, const CameraOverrides& o) {
     return *s;
 }
 
+// The lens's tilt, swing and shift (LensMount.h): the scene's "lenstilt", "lensswing" (degrees)
+// and "lensshift" (x y, lens millimetres), each replaced by its override.
+LensMount lensMount(const ParamSet& p, const CameraOverrides& o) {
+    LensMount m;
+    m.tiltDegrees = o.tiltDegrees.value_or(p.getFloat("lenstilt", 0));
+    m.swingDegrees = o.swingDegrees.value_or(p.getFloat("lensswing", 0));
+    if (o.shiftMm) {
+        m.shiftMm = *o.shiftMm;
+    } else if (p.has("lensshift")) {
+        const std::vector<double> shift = p.getFloats("lensshift");
+        if (shift.size() != 2) p.fail("lensshift needs two numbers, x and y in millimetres");
+        m.shiftMm = {shift[0], shift[1]};
+    }
+    atCamera(p, [&] { return bodyFromLens(m, 0); });  // the ranges, named by the camera's line
+    return m;
+}
+
 RealisticParams readRealisticParams(SceneDescription& scene, const CameraOverrides& o) {
     const ParamSet& p = scene.camera.params;
     refuseSynonyms(p, {"specfile", "lensfile"}, "the lens table");
@@ -162,8 +179,11 @@ RealisticParams readRealisticParams(SceneDescription& scene, const CameraOverrid
     const std::optional<LensMode> lensMode = parseLensMode(mode);
     if (!lensMode) p.fail("mode must be exact|thick|auto, got \"" + mode + "\"");
     r.mode = *lensMode;
-    // The thick lens has no dispersion: its film stays RGB unless asked.
-    r.spectral = o.spectral.value_or(!o.wavelength && r.mode != LensMode::Thick) && r.lens.isDispersive();
+    r.mount = lensMount(p, o);
+    if (r.mount.isMoved() && o.spectral.value_or(false))
+        throw SceneError("a tilted or shifted lens renders in RGB at one wavelength: spectral on cannot be had with it");
+    // The thick lens has no dispersion: its film stays RGB unless asked; a moved lens too.
+    r.spectral = o.spectral.value_or(!o.wavelength && r.mode != LensMode::Thick && !r.mount.isMoved()) && r.lens.isDispersive();
     r.autoThresholdPixels = p.getFloat("autothreshold", r.autoThresholdPixels);
     r.crop = scene.film.crop;  // the effective window: the render settings' crop overrides the scene's
     checkClipping(p, scene.warnings);
@@ -179,6 +199,12 @@ RealisticParams readRealisticParams(SceneDescription& scene, const CameraOverrid
     }
     r.aperture = apertureShape(scene, p);
     r.ghosts = ghostSelection(p, o);
+    if (r.mount.isMoved() && r.ghosts.on()) {
+        // Auto asks for what the scene requires, and flare through a moved lens is not modelled.
+        if (r.ghosts.mode != GhostSelection::Mode::Auto)
+            throw SceneError("lens flare is not modelled for a tilted or shifted lens: ghosts must be off or auto");
+        r.ghosts.mode = GhostSelection::Mode::Off;
+    }
     p.checkAllUsed(scene.warnings, {"frameaspectratio", "screenwindow"});
     return r;
 }

@@ -26,6 +26,15 @@ const std::vector<double> kPupilBandEdgesNm = {360, 410, 460, 520, 590, 680, 830
 // and the square root costs a fraction of std::hypot's on every camera ray.
 double filmRadius(double x, double y) { return std::sqrt(x * x + y * y); }
 
+Vec3 movedPoint(const RigidMotion& m, const Vec3& p) {
+    const auto q = m.applyToPoint({p.x, p.y, p.z});
+    return {q[0], q[1], q[2]};
+}
+Vec3 movedDirection(const RigidMotion& m, const Vec3& d) {
+    const auto q = m.applyToDirection({d.x, d.y, d.z});
+    return {q[0], q[1], q[2]};
+}
+
 }  // namespace
 
 RealisticParams realisticParams(const std::string& lensPath, std::optional<double> fstop, double focusDistanceMm) {
@@ -57,12 +66,23 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     filmZExact_ = analysis_.focus.imageZExact;
     filmZThick_ = analysis_.focus.imageZThick;
     originZ_ = params.originAtFilm ? filmZ() : 0;
+    mounted_ = params.mount.isMoved();
+    if (mounted_) {
+        if (params.spectral) throw OpticsError("a tilted or shifted lens renders in RGB at one wavelength: turn spectral off");
+        if (params.ghosts.on()) throw OpticsError("lens flare is not modelled for a tilted or shifted lens: turn ghosts off");
+        bodyFromLens_ = bodyFromLens(params.mount, analysis_.firstOrder.zPPrime);
+        lensFromBody_ = bodyFromLens_.inverse();
+    }
 
     const double pixelMm = params.filmDiagonalMm / diag;
     switch (params.mode) {
         case LensMode::Exact: modes_ = LensModeMap::exactEverywhere(minFilmRadius_, maxFilmRadius_); break;
         case LensMode::Thick: modes_ = LensModeMap::thickEverywhere(minFilmRadius_, maxFilmRadius_); break;
         case LensMode::Auto:
+            if (mounted_) {
+                modes_ = LensModeMap::exactEverywhere(minFilmRadius_, maxFilmRadius_);
+                break;
+            }
             errors_ = measureThickLensFilmError(analysis_, minFilmRadius_, maxFilmRadius_);
             modes_ = LensModeMap::fromErrors(errors_, params.autoThresholdPixels * pixelMm);
             thickShare_ = thickShareOfCrop();
@@ -77,6 +97,13 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     if (modes_.usesThick()) {
         checkFilm(filmZThick_);
         const Pupil& xp = analysis_.pupils.exit;
+        if (mounted_) {
+            film_ = mountedFilm(filmZThick_);
+            for (const double sx : {-1.0, 1.0})
+                for (const double sy : {-1.0, 1.0})
+                    if (!(xp.z > film_.at(sx * (halfWidthMm_ + filmMarginMm_), sy * (halfHeightMm_ + filmMarginMm_)).z))
+                        throw OpticsError("the exit pupil lies behind a corner of the tilted film; the thick-lens model cannot aim at it");
+        }
         if (!(xp.z > filmZThick_)) throw OpticsError("the exit pupil lies behind the film; the thick-lens model cannot aim at it");
         const double dz = xp.z - filmZThick_;
         const double centreWeight = M_PI * 0.25 * xp.diameter * xp.diameter / (dz * dz);
@@ -99,7 +126,19 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
             if (!params.aperture.isCircular())
                 for (int k = 0; k < etas_.bands; ++k) bandLenses_.push_back(atWavelength(analysis_.lens, etas_.bandCentreNm(k)));
         }
-        if (params.spectral) {
+        if (mounted_) {
+            film_ = mountedFilm(filmZExact_);
+            // Aimed through the exit pupil's plane where it lies in front of the film (FilmPlanePupilBounds.h).
+            const double halfU = halfWidthMm_ + filmMarginMm_, halfV = halfHeightMm_ + filmMarginMm_;
+            const Pupil& xp = analysis_.pupils.exit;
+            double nearest = -std::numeric_limits<double>::infinity();
+            for (const double su : {-1.0, 1.0})
+                for (const double sv : {-1.0, 1.0}) nearest = std::max(nearest, film_.at(su * halfU, sv * halfV).z);
+            const bool throughPupil = std::isfinite(xp.z) && xp.z > nearest + 1e-3 && xp.diameter > 0;
+            filmBounds_ = computeFilmPlanePupilBounds(analysis_.lens, film_, halfU, halfV,
+                                                      throughPupil ? xp.z : analysis_.lens.rearZ(),
+                                                      throughPupil ? 0.5 * xp.diameter : analysis_.lens.surfaces.back().apertureRadius);
+        } else if (params.spectral) {
             spectralBounds_ = computeSpectralExitPupilBounds(analysis_.lens, filmZExact_, step, first, last,
                                                              kPupilBandEdgesNm, measure);
             bounds_ = spectralBounds_.at(analysis_.lens.wavelength);
@@ -134,8 +173,8 @@ double RealisticCamera::findFilmRadiusRange(double filmMarginPixels) {
     span(c[2], c[3], height_, halfHeightMm_, nearY, farY);
     minFilmRadius_ = std::hypot(nearX, nearY);
     maxFilmRadius_ = std::hypot(farX, farY);
-    const double marginMm = 2 * reach / width_ * halfWidthMm_;
-    return std::hypot(halfWidthMm_ + marginMm, halfHeightMm_ + marginMm);
+    filmMarginMm_ = 2 * reach / width_ * halfWidthMm_;
+    return std::hypot(halfWidthMm_ + filmMarginMm_, halfHeightMm_ + filmMarginMm_);
 }
 
 double RealisticCamera::thickShareOfCrop() const {
@@ -153,6 +192,11 @@ double RealisticCamera::thickShareOfCrop() const {
 }
 
 double RealisticCamera::exactCentreWeight() const {
+    if (mounted_) {
+        const PupilCircle c = filmPlanePupilCircle(filmBounds_, 0, 0);
+        const double dz = filmBounds_.aimZ - film_.origin.z;
+        return M_PI * c.radius * c.radius / (dz * dz);
+    }
     // The film centre's region, measured apart when the crop leaves the centre out, or at the lens's
     // own wavelength alone when the bounds are a spectral band's (the exposure stays the RGB film's).
     const ExitPupilBounds centre = bounds_.firstRadius == 0 && !params_.spectral
@@ -176,8 +220,9 @@ void RealisticCamera::rasterPoint(double x, double y, double& rasterX, double& r
     rasterY = 0.5 * height_ * (1.0 + y / halfHeightMm_);
 }
 
-// Irradiance from a patch dA of the aiming plane: L cos^2 / dist^2 dA = L cos^4 / dz^2 dA.
-double RealisticCamera::aimThick(double fx, double fy, float u1, float u2, Ray& ray) const {
+// Irradiance from a patch dA of the exit pupil's plane: L cos(film) cos(pupil) / dist^2 dA (with
+// the film square to the axis, L cos^4 / dz^2 dA).
+double RealisticCamera::aimThick(const Vec3& from, const Vec3& normal, float u1, float u2, Ray& ray) const {
     float dx, dy;
     concentricDisk(u1, u2, dx, dy);
     const Pupil& xp = analysis_.pupils.exit;
@@ -186,11 +231,11 @@ double RealisticCamera::aimThick(double fx, double fy, float u1, float u2, Ray& 
     const double toStop = xp.magnification < 0 ? -1.0 : 1.0;
     const double shape = params_.aperture.weight(toStop * dx, toStop * dy);
     if (!(shape > 0)) return 0;
-    const Vec3 from{fx, fy, filmZThick_};
     const Vec3 d = Vec3{0.5 * xp.diameter * dx, 0.5 * xp.diameter * dy, xp.z} - from;
-    ray = {from, (1.0 / length(d)) * d};
-    const double dz = xp.z - filmZThick_;
-    return shape * cos4(ray.direction.z) * (M_PI * 0.25 * xp.diameter * xp.diameter) / (dz * dz) * weightScaleThick_;
+    const double dist2 = dot(d, d);
+    ray = {from, (1.0 / std::sqrt(dist2)) * d};
+    return shape * dot(ray.direction, normal) * ray.direction.z * (M_PI * 0.25 * xp.diameter * xp.diameter) / dist2 *
+           weightScaleThick_;
 }
 
 TraceResult RealisticCamera::traceShaped(const LensSystem& lens, const Ray& ray, TraceDirection direction,
@@ -209,7 +254,10 @@ TraceResult RealisticCamera::traceShaped(const LensSystem& lens, const Ray& ray,
     return traceRay(lens, atStop.ray, direction, beyond);
 }
 
-bool RealisticCamera::finish(const Ray& lensRay, double weight, CameraRay& out) const {
+bool RealisticCamera::finish(const Ray& leaving, double weight, CameraRay& out) const {
+    // A moved lens's rays leave it in its own coordinates; camera space is the body's.
+    const Ray lensRay = !mounted_ ? leaving
+                                  : Ray{movedPoint(bodyFromLens_, leaving.origin), movedDirection(bodyFromLens_, leaving.direction)};
     const double unit = 1.0 / params_.cameraUnitMm;
     const Vec3f o{float(lensRay.origin.x * unit), float(lensRay.origin.y * unit), float((lensRay.origin.z - originZ_) * unit)};
     const Vec3f dir{float(lensRay.direction.x), float(lensRay.direction.y), float(lensRay.direction.z)};
@@ -223,14 +271,14 @@ bool RealisticCamera::finish(const Ray& lensRay, double weight, CameraRay& out) 
 bool RealisticCamera::generateRay(double rasterX, double rasterY, float u1, float u2, CameraRay& out) const {
     double fx, fy;
     filmPoint(rasterX, rasterY, fx, fy);
-    if (!modes_.thickAt(filmRadius(fx, fy))) {
+    if (mounted_ || !modes_.thickAt(filmRadius(fx, fy))) {
         // One exact ray is a batch of one: the same bits as the renderer's batches.
         const CameraSample sample{rasterX, rasterY, u1, u2};
         generateRays(&sample, 1, &out);
         return out.weight > 0;
     }
     Ray ray;
-    const double weight = aimThick(fx, fy, u1, u2, ray);
+    const double weight = aimThick({fx, fy, filmZThick_}, {0, 0, 1}, u1, u2, ray);
     const TraceResult r = traceThick(analysis_.thick, ray, TraceDirection::FilmToScene);
     return weight > 0 && r.ok() && finish(r.ray, weight, out);
 }
@@ -242,6 +290,10 @@ void RealisticCamera::generateRays(const CameraSample* samples, std::size_t n, C
 
 void RealisticCamera::makeRays(const CameraSample* samples, std::size_t n, CameraRay* out, ExactRayBatch& b) const {
     b.sampleOf.clear();
+    if (mounted_) {
+        makeMountedRays(samples, n, out, b);
+        return;
+    }
     if (!modes_.usesExact()) {
         Camera::generateRays(samples, n, out);
         return;
@@ -284,6 +336,10 @@ void RealisticCamera::makeRays(const CameraSample* samples, std::size_t n, Camer
     b.rays.resize(m);
     b.weights.resize(m);
     aimExactRays(m, b);
+    traceAimedRays(m, b, out);
+}
+
+void RealisticCamera::traceAimedRays(std::size_t m, ExactRayBatch& b, CameraRay* out) const {
     if (params_.aperture.isCircular()) {
         if (params_.spectral) traceBatch(analysis_.lens, b.rays, TraceDirection::FilmToScene, etas_, b.bands.data());
         else traceBatch(analysis_.lens, b.rays, TraceDirection::FilmToScene);
@@ -303,6 +359,49 @@ void RealisticCamera::makeRays(const CameraSample* samples, std::size_t n, Camer
         b.rays.set(k, r.ray);
         b.rays.blocked[k] = r.ok() && weight > 0 ? BlockReason::None : BlockReason::ClippedByStop;
     }
+}
+
+void RealisticCamera::makeMountedRays(const CameraSample* samples, std::size_t n, CameraRay* out, ExactRayBatch& b) const {
+    const Vec3 normal = film_.normal();
+    if (!modes_.usesExact()) {
+        for (std::size_t i = 0; i < n; ++i) {
+            double fx, fy;
+            filmPoint(samples[i].rasterX, samples[i].rasterY, fx, fy);
+            Ray ray;
+            const double weight = aimThick(film_.at(fx, fy), normal, samples[i].u1, samples[i].u2, ray);
+            const TraceResult r = traceThick(analysis_.thick, ray, TraceDirection::FilmToScene);
+            out[i].weight = 0;
+            if (weight > 0 && r.ok()) finish(r.ray, weight, out[i]);
+        }
+        return;
+    }
+    // Each film point aims at a uniform point of its circle on the aiming plane (FilmPlanePupilBounds):
+    // irradiance L cos(film) cos(aim) / dist^2 dA.
+    b.sampleOf.resize(n);
+    b.rays.resize(n);
+    b.weights.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        double fx, fy;
+        filmPoint(samples[i].rasterX, samples[i].rasterY, fx, fy);
+        const Vec3 from = film_.at(fx, fy);
+        const PupilCircle c = filmPlanePupilCircle(filmBounds_, fx, fy);
+        float dx, dy;
+        concentricDisk(samples[i].u1, samples[i].u2, dx, dy);
+        const Vec3 d = Vec3{c.x + c.radius * dx, c.y + c.radius * dy, filmBounds_.aimZ} - from;
+        const double dist2 = dot(d, d);
+        const Ray ray{from, (1.0 / std::sqrt(dist2)) * d};
+        b.sampleOf[i] = i;
+        b.rays.set(i, ray);
+        b.weights[i] = c.radius > 0 ? dot(ray.direction, normal) * ray.direction.z * M_PI * c.radius * c.radius / dist2 *
+                                          weightScaleExact_
+                                    : 0.0;
+    }
+    traceAimedRays(n, b, out);
+}
+
+FilmPlane RealisticCamera::mountedFilm(double filmZ) const {
+    return {movedPoint(lensFromBody_, {0, 0, filmZ}), movedDirection(lensFromBody_, {1, 0, 0}),
+            movedDirection(lensFromBody_, {0, 1, 0})};
 }
 
 // Irradiance from a patch dA of the aiming plane: L cos^2 / dist^2 dA = L cos^4 / dz^2 dA.
@@ -354,7 +453,15 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
             {"cameraSpaceOrigin", params_.originAtFilm ? "film" : "front vertex"},
             {"lensWavelengths", params_.spectral ? "each exact ray at its sample's wavelengths, 360-830 nm in 1 nm bands"
                                                  : formatNumber(a.lens.wavelength) + " nm"}};
-    if (params_.mode == LensMode::Auto) {
+    if (mounted_) {
+        const LensMount& m = params_.mount;
+        d["lensTiltDeg"] = formatNumber(m.tiltDegrees);
+        d["lensSwingDeg"] = formatNumber(m.swingDegrees);
+        d["lensShiftMm"] = formatNumber(m.shiftMm[0]) + ", " + formatNumber(m.shiftMm[1]);
+        d["lensPivot"] = "rear principal point, z = " + formatNumber(a.firstOrder.zPPrime) + " mm";
+        d["exitPupilBoundsGrid"] = std::to_string(filmBounds_.nodesU) + " x " + std::to_string(filmBounds_.nodesV) + " film points";
+    }
+    if (params_.mode == LensMode::Auto && !mounted_) {
         // The prediction behind the split, per radius: the thick lens's worst film error in pixels
         // and its brightness against the exact lens's; and the share of the film it was allowed.
         const double pixelMm = params_.filmDiagonalMm / std::hypot(double(width_), double(height_));

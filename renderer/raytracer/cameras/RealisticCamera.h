@@ -21,8 +21,10 @@
 #include "cameras/ApertureShape.h"
 #include "cameras/Camera.h"
 #include "cameras/GhostSelection.h"
+#include "cameras/LensMount.h"
 #include "trace/ExactTrace.h"
 #include "firstorder/ExitPupilBounds.h"
+#include "firstorder/FilmPlanePupilBounds.h"
 #include "settings/LensAnalysis.h"
 #include "settings/LensSettings.h"
 #include "cameras/LensModeMap.h"
@@ -54,6 +56,10 @@ struct RealisticParams {
     // dispersion; the thick lens stays at the lens's wavelength. Only for a dispersive lens.
     bool spectral = false;
     GhostSelection ghosts;                 // lens flare (cameras/LensFlare.h), made by the frame
+    // A tilt and shift of the lens against the body and film (LensMount.h). A moved lens is traced
+    // exactly (auto is exact everywhere: its error map assumes a film square to the axis) or as the
+    // thick lens, in RGB without ghosts, and aims at FilmPlanePupilBounds.
+    LensMount mount;
 };
 
 // Parameters for a lens file at an f-number (nullopt: the widest) focused at focusDistanceMm from the
@@ -102,9 +108,9 @@ private:
     double exactCentreWeight() const;
     // Auto: the fraction of the crop window's film area where the thick lens is allowed.
     double thickShareOfCrop() const;
-    // Where a thick-lens ray from film point (fx, fy) is aimed and the weight it will carry if the
-    // lens passes it (0: no aim).
-    double aimThick(double fx, double fy, float u1, float u2, Ray& ray) const;
+    // Where a thick-lens ray from the film point `from` (lens space; the film's normal toward the
+    // lens `normal`) is aimed and the weight it will carry if the lens passes it (0: no aim).
+    double aimThick(const Vec3& from, const Vec3& normal, float u1, float u2, Ray& ray) const;
     // The exact rays of a batch: film points and lens samples in, pupil points, rays and weights
     // (0: no aim) out, as structure of arrays.
     struct ExactRayBatch {
@@ -119,6 +125,12 @@ private:
     void aimExactRays(std::size_t count, ExactRayBatch& batch) const;
     // generateRays, leaving the exact samples' batch in b (its rays in lens space, in front of the lens).
     void makeRays(const CameraSample* samples, std::size_t n, CameraRay* out, ExactRayBatch& b) const;
+    // makeRays for a moved lens (params.mount): every sample aimed from its point of the film plane.
+    void makeMountedRays(const CameraSample* samples, std::size_t n, CameraRay* out, ExactRayBatch& b) const;
+    // The batch's first m rays, aimed and weighted, traced through the lens and finished into out.
+    void traceAimedRays(std::size_t m, ExactRayBatch& b, CameraRay* out) const;
+    // A moved lens: its film plane in lens space, the plane body z = filmZ.
+    FilmPlane mountedFilm(double filmZ) const;
     // The landings of the batch's rays that passed, at the sample's wavelengths beyond its own.
     void landOtherWavelengths(const ExactRayBatch& b, const double* wavelengthsNm, int perSample,
                               FilmLanding* landings) const;
@@ -131,6 +143,7 @@ private:
     Transform cameraToWorld_;
     int width_, height_;
     double halfWidthMm_, halfHeightMm_;
+    double filmMarginMm_ = 0;        // how far the pixel filter reaches beyond the image
     double minFilmRadius_ = 0, maxFilmRadius_ = 0;
     LensAnalysis analysis_;
     double filmZExact_ = 0, filmZThick_ = 0;
@@ -145,6 +158,12 @@ private:
     std::vector<LensSystem> bandLenses_;  // spectral with a shaped stop: the lens at each band
     // Exposure time, or 1 / centre weight for simple weighting (each model normalised by its own).
     double weightScaleExact_ = 1, weightScaleThick_ = 1;
+    // A moved lens (params.mount): lens space to the body's coordinates and back, the film plane of
+    // the model in use in lens space, and the exact trace's bounds over it.
+    bool mounted_ = false;
+    RigidMotion bodyFromLens_, lensFromBody_;
+    FilmPlane film_;
+    FilmPlanePupilBounds filmBounds_;
 };
 
 }  // namespace lenslab
