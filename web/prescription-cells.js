@@ -154,7 +154,7 @@ export const newRow = (row) => ({ radius: 0, gap: 1, index: 0, diameter: row && 
 export function keptFeatures(r) {
   const kept = [];
   if (r.coordinate_break) kept.push("coordinate break");
-  else if (r.frame) kept.push(`${r.frame.mode} decentre and tilt`);
+  else if (r.frame) kept.push(`decentre and tilt (${r.frame.mode})`);
   if (r.kind && r.kind !== "even asphere") kept.push(`${r.kind} surface`);
   if (r.clear_aperture) kept.push(`${r.clear_aperture.shape} clear aperture`);
   if (r.obscuration) kept.push(`${r.obscuration.shape} obscuration`);

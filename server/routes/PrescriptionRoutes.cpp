@@ -33,8 +33,9 @@ namespace {
 
 using nlohmann::json;
 
-// A 256-surface prescription with every field written out is about 100 KiB of JSON.
-constexpr std::size_t kMaxPreviewBody = 256 * 1024;
+// A row with every field at full precision (a frame, two shaped apertures, 16 form terms, 8
+// aspheric terms) is about 1.5 KiB of JSON: 256 of them about 380 KiB.
+constexpr std::size_t kMaxPreviewBody = 512 * 1024;
 
 const char* const kEditedLensName = "edited lens";
 
