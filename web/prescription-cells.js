@@ -99,10 +99,15 @@ export const COLUMNS = [
     derived: (r) => !!catalogGlass(r.glass),
   },
   {
-    key: "diameter", heading: "diameter", title: "clear aperture diameter, mm",
-    show: (r) => fixed(r.diameter, 3), exact: (r) => String(r.diameter),
-    read: (t) => { const n = number(t, "the diameter"); return n.error || n.value > 0 ? n : { error: "the diameter must be positive" }; },
-    apply: (r, v) => ({ ...r, diameter: v }),
+    key: "diameter", heading: "diameter", title: "clear aperture diameter, mm ('auto': derived from the design's aperture and fields)",
+    show: (r) => (r.automatic_diameter ? "auto" : fixed(r.diameter, 3)), exact: (r) => (r.automatic_diameter ? "auto" : String(r.diameter)),
+    read: (t) => {
+      if (/^\s*auto\s*$/i.test(t)) return { value: "auto" };
+      const n = number(t, "the diameter");
+      return n.error || n.value > 0 ? n : { error: "the diameter must be positive (or auto)" };
+    },
+    // An automatic diameter has no shape of its own; a typed one is the row's own.
+    apply: (r, v) => (v === "auto" ? { ...r, diameter: 0, automatic_diameter: true, clear_aperture: null } : { ...r, diameter: v, automatic_diameter: false }),
   },
   {
     key: "conic", heading: "conic", title: "conic constant k (0 sphere, -1 paraboloid)",
@@ -150,7 +155,7 @@ export const newRow = (row) => ({ radius: 0, gap: 1, index: 0, diameter: row && 
   frame: null, coordinate_break: false, automatic_diameter: false });
 
 // What a row keeps that the table's columns do not show (a decentre or tilt, a coordinate break, a
-// surface form, a shaped aperture, an automatic diameter, a name), as words for its surface number.
+// surface form, a shaped aperture, a name), as words for its surface number.
 export function keptFeatures(r) {
   const kept = [];
   if (r.coordinate_break) kept.push("coordinate break");
@@ -158,15 +163,14 @@ export function keptFeatures(r) {
   if (r.kind && r.kind !== "even asphere") kept.push(`${r.kind} surface`);
   if (r.clear_aperture) kept.push(`${r.clear_aperture.shape} clear aperture`);
   if (r.obscuration) kept.push(`${r.obscuration.shape} obscuration`);
-  if (r.automatic_diameter) kept.push("automatic diameter");
   if (r.name) kept.push(`"${r.name}"`);
   return kept;
 }
 
-// Whether only a .zmx can hold the lens: a lens table has no conic, aspheric terms, mirror or
-// obscuration, none of the rows' kept features, and no field list, aperture, wavelengths, object
-// distance or image tilt of the design.
+// Whether only a .zmx can hold the lens: a lens table has no conic, aspheric terms, mirror,
+// obscuration or automatic diameter, none of the rows' kept features, and no field list, aperture,
+// wavelengths, object distance or image tilt of the design.
 export const needsZemax = (lens) => !!(lens.rows.some((r) => r.conic !== 0 || r.mirror || r.obscuration_diameter > 0 ||
-    (r.aspheric || []).some((a) => a !== 0) || keptFeatures(r).length) ||
+    (r.aspheric || []).some((a) => a !== 0) || r.automatic_diameter || keptFeatures(r).length) ||
   (lens.fields && lens.fields.points.length) || (lens.wavelengths_nm || []).length || lens.object_distance != null ||
   lens.entrance_pupil_diameter != null || lens.f_number != null || lens.object_numerical_aperture != null || lens.image_frame);

@@ -1,8 +1,9 @@
 // Browser test of the editor keeping what it does not show: a Code V lens whose plate is tilted 10
 // degrees (returning decentres) with a field list and EPD is uploaded; its tilted rows are marked in
-// the editor; one radius of the singlet behind is edited (50 -> 48 mm); the .zmx download holds the
-// new curvature, both tilts, the field list and the aperture, and the lens saved as new is a .zmx
-// with the tilts (a .dat would have dropped them).
+// the editor and its automatic diameters show as "auto"; one radius of the singlet behind is edited
+// (50 -> 48 mm) and its rear diameter fixed at 12 mm; the .zmx download holds the new curvature and
+// diameter, both tilts, the field list and the aperture, and the lens saved as new is a .zmx with the
+// tilts (a .dat would have dropped them).
 // usage: node editor-tilted.test.mjs LENSLAB_BINARY SOURCE_DIR
 import { mkdtempSync, readFileSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -40,11 +41,14 @@ async function main() {
     const id = await page.getAttribute("#lens-title", "data-id");
     await editorHolds(page, id);
     const kept = await page.$$eval("#editor-table tbody tr .surface-number", (cells) => cells.map((c) => c.dataset.kept || ""));
-    const tilted = kept.map((k) => k.includes("decentre and tilt (decentre and return)"));
-    check(tilted.join() === "true,true,false,false" && kept.every((k) => k.includes("automatic diameter")),
+    check(kept.join("|") === "decentre and tilt (decentre and return)|decentre and tilt (decentre and return)||",
           `the tilted rows are marked as kept: ${JSON.stringify(kept)}`);
 
+    const diameters = await page.$$eval('#editor-table input[data-key="diameter"]', (inputs) => inputs.map((i) => i.value));
+    check(diameters.every((d) => d === "auto"), `the diameters the file leaves to the program show as ${JSON.stringify(diameters)}`);
+
     await editCell(page, 2, "radius", "48");
+    await editCell(page, 3, "diameter", "12");  // the rear face's clear aperture fixed: DIAM 6
     check(await page.$eval('#editor-table tr[data-row="2"] td[data-key="radius"]', (td) => td.classList.contains("changed")),
           "the edited radius is marked changed");
     const [file] = await Promise.all([page.waitForEvent("download"), page.click("#editor-zmx")]);
@@ -52,6 +56,8 @@ async function main() {
     check(zmx.includes(EDITED_CURVATURE), `the .zmx download (${file.suggestedFilename()}) has the edited radius: ${EDITED_CURVATURE.trim()}`);
     check(count(zmx, KEPT_LINES[0]) === 2, `and both tilted faces: ${count(zmx, KEPT_LINES[0])} x ${KEPT_LINES[0].trim()}`);
     for (const line of KEPT_LINES.slice(1)) check(zmx.includes(line), `and ${line.trim()}`);
+    check(count(zmx, "  DIAM 0\n") === 3 && count(zmx, "  DIAM 6\n") === 1,
+          `the typed diameter is the rear face's (DIAM 6), the others stay automatic (DIAM 0 x ${count(zmx, "  DIAM 0\n")})`);
 
     // The stored lens's own download is named by its display name.
     const stored = await page.request.get(`${base}api/lenses/${id}/prescription.zmx`);
