@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "PrescriptionPartsJson.h"
 #include "trace/ThinFilm.h"
 
 namespace lenslab {
@@ -10,43 +11,14 @@ namespace {
 
 nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-nlohmann::json apertureJson(const SurfaceAperture& a) {
-    return {{"shape", apertureKindName(a.kind)}, {"half_width_x", a.halfWidthX}, {"half_width_y", a.halfWidthY},
-            {"centre_x", a.centreX}, {"centre_y", a.centreY}};
-}
-
-const char* frameModeName(FrameMode m) {
-    switch (m) {
-        case FrameMode::Basic: return "basic";
-        case FrameMode::DecentreAndReturn: return "decentre and return";
-        case FrameMode::Bend: return "bend";
-        case FrameMode::Reverse: return "reverse";
-    }
-    return "basic";
-}
-
 // The fields added for decentred, tilted, shaped and non-even surfaces: present only where they apply.
 void addSurfaceShape(nlohmann::json& surface, const Surface& s) {
     if (!s.name.empty()) surface["name"] = s.name;
     if (s.automaticAperture) surface["automatic_aperture"] = true;
-    if (!s.form.isEvenAsphere()) {
-        surface["kind"] = surfaceKindName(s.form.kind);
-        surface["form_terms"] = std::vector<double>(s.form.terms.begin(), s.form.terms.begin() + s.form.termCount);
-        if (s.form.normalisationRadius > 0) surface["normalisation_radius"] = s.form.normalisationRadius;
-    }
+    if (!s.form.isEvenAsphere()) addSurfaceFormJson(surface, s.form);
     if (s.clearShape) surface["clear_aperture"] = apertureJson(*s.clearShape);
     if (s.obscurationShape) surface["obscuration"] = apertureJson(*s.obscurationShape);
-    if (s.frame)
-        surface["frame"] = {{"decentre", s.frame->decentre},
-                            {"tilt_degrees", s.frame->tiltDegrees},
-                            {"mode", frameModeName(s.frame->mode)},
-                            {"order", s.frame->order == TiltOrder::DecentreThenTilt ? "decentre then tilt" : "tilt then decentre"}};
-}
-
-nlohmann::json designFieldsJson(const LensSystem& lens) {
-    nlohmann::json points = nlohmann::json::array();
-    for (const FieldPoint& p : lens.fields.points) points.push_back({{"x", p.x}, {"y", p.y}, {"weight", p.weight}});
-    return {{"type", fieldTypeName(lens.fields.type)}, {"points", points}};
+    if (s.frame) surface["frame"] = frameJson(*s.frame);
 }
 
 nlohmann::json surfacesJson(const LensSystem& lens) {
@@ -95,7 +67,7 @@ nlohmann::json lensDescriptionJson(const LensSystem& lens) {
             {"design",
              {{"wavelengths_nm", lens.wavelengths},
               {"wavelength_weights", lens.wavelengthWeights},
-              {"fields", designFieldsJson(lens)},
+              {"fields", designFieldsJson(lens.fields)},
               {"object_distance", finiteOrNull(lens.objectDistance)},
               {"entrance_pupil_diameter", lens.entrancePupilDiameter ? json(*lens.entrancePupilDiameter) : json(nullptr)},
               {"f_number", lens.designFNumber ? json(*lens.designFNumber) : json(nullptr)},

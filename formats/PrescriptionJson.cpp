@@ -1,8 +1,10 @@
 #include "PrescriptionJson.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "LineText.h"
+#include "PrescriptionPartsJson.h"
 #include "prescription/GlassCatalog.h"
 #include "prescription/Wavelength.h"
 
@@ -18,53 +20,72 @@ LensTable withGapAfterRows(LensTable table) {
     return table;
 }
 
+namespace {
+
+json optionalJson(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+
+json rowJson(const LensTableRow& r) {
+    json row = {{"radius", r.radius},
+                {"gap", r.gap},
+                {"index", r.index},
+                {"diameter", r.diameter},
+                {"stop", r.stop},
+                {"glass", r.glass},
+                {"glass_catalog", r.glassCatalog},
+                {"abbe", r.abbe},
+                {"conic", r.conic},
+                {"aspheric", r.aspheric},
+                {"mirror", r.mirror},
+                {"obscuration_diameter", r.obscurationDiameter},
+                {"coating", r.coating},
+                {"name", r.name},
+                {"clear_aperture", r.clearShape ? apertureJson(*r.clearShape) : json(nullptr)},
+                {"obscuration", r.obscurationShape ? apertureJson(*r.obscurationShape) : json(nullptr)},
+                {"frame", r.frame ? frameJson(*r.frame) : json(nullptr)},
+                {"coordinate_break", r.coordinateBreak},
+                {"automatic_diameter", r.automaticDiameter}};
+    addSurfaceFormJson(row, r.form);
+    return row;
+}
+
+}  // namespace
+
 json prescriptionJson(const LensTable& source) {
     const LensTable table = withGapAfterRows(source);
     json rows = json::array();
-    for (const LensTableRow& r : table.rows)
-        rows.push_back({{"radius", r.radius}, {"gap", r.gap}, {"index", r.index}, {"diameter", r.diameter},
-                        {"stop", r.stop}, {"glass", r.glass}, {"abbe", r.abbe}, {"conic", r.conic},
-                        {"aspheric", r.aspheric}, {"mirror", r.mirror}, {"obscuration_diameter", r.obscurationDiameter},
-                        {"coating", r.coating}});
-    return {{"name", table.name},         {"comments", table.comments},
-            {"catalogs", table.catalogs}, {"wavelengths_nm", table.wavelengths},
-            {"primary_wavelength_nm", table.primaryWavelength}, {"rows", rows}};
+    for (const LensTableRow& r : table.rows) rows.push_back(rowJson(r));
+    return {{"name", table.name},
+            {"layout", layoutName(table.layout)},
+            {"comments", table.comments},
+            {"catalogs", table.catalogs},
+            {"wavelengths_nm", table.wavelengths},
+            {"wavelength_weights", table.wavelengthWeights},
+            {"primary_wavelength_nm", table.primaryWavelength},
+            {"fields", designFieldsJson(table.fields)},
+            {"object_distance", std::isfinite(table.objectDistance) ? json(table.objectDistance) : json(nullptr)},
+            {"entrance_pupil_diameter", optionalJson(table.entrancePupilDiameter)},
+            {"f_number", optionalJson(table.designFNumber)},
+            {"object_numerical_aperture", optionalJson(table.objectNumericalAperture)},
+            {"image_frame", table.imageFrame ? frameJson(*table.imageFrame) : json(nullptr)},
+            {"rows", rows}};
 }
 
 namespace {
 
-struct RowReader {
-    const json& row;
-    const std::string& name;
-    int line;
-
-    [[noreturn]] void fail(const std::string& problem) const { throw LensTableError(name, line, problem); }
-
-    double number(const char* field, double fallback) const {
-        if (!row.contains(field)) return fallback;
-        const json& v = row.at(field);
-        if (!v.is_number()) fail(std::string(field) + " must be a number");
-        const double x = v.get<double>();
-        if (!std::isfinite(x)) fail(std::string(field) + " is not a finite number");
-        return x;
-    }
-
-    bool flag(const char* field) const {
-        if (!row.contains(field)) return false;
-        if (!row.at(field).is_boolean()) fail(std::string(field) + " must be true or false");
-        return row.at(field).get<bool>();
-    }
-
-    std::string text(const char* field) const {
-        if (!row.contains(field) || row.at(field).is_null()) return "";
-        if (!row.at(field).is_string()) fail(std::string(field) + " must be a string");
-        return row.at(field).get<std::string>();
-    }
-};
+// A glass or catalog name, checked before anything looks it up (the search for the nearest names
+// costs with its length).
+std::string nameText(const JsonFields& in, const char* field, const char* what) {
+    const std::string name = in.text(field);
+    if (name.size() > kMaxGlassNameLength)
+        in.fail(std::string("a ") + what + " name of " + std::to_string(name.size()) +
+                " characters: catalog names have at most " + std::to_string(kMaxGlassNameLength));
+    if (!name.empty())
+        if (const auto problem = wordTextProblem(name)) in.fail(std::string("the ") + what + " name holds " + *problem);
+    return name;
+}
 
 LensTableRow rowFromJson(const json& row, const std::string& name, int line) {
-    RowReader in{row, name, line};
-    if (!row.is_object()) in.fail("a row must be an object");
+    const JsonFields in(row, name, line);
     LensTableRow r;
     r.line = line;
     r.radius = in.number("radius", 0);
@@ -72,33 +93,38 @@ LensTableRow rowFromJson(const json& row, const std::string& name, int line) {
     r.index = in.number("index", 0);
     r.diameter = in.number("diameter", 0);
     r.stop = in.flag("stop");
-    r.glass = in.text("glass");
-    // Checked before anything looks the name up (the search for the nearest names costs with its length).
-    if (r.glass.size() > kMaxGlassNameLength)
-        in.fail("a glass name of " + std::to_string(r.glass.size()) + " characters: catalog names have at most " +
-                std::to_string(kMaxGlassNameLength));
-    if (!r.glass.empty())
-        if (const auto problem = wordTextProblem(r.glass)) in.fail("the glass name holds " + *problem);
+    r.glass = nameText(in, "glass", "glass");
+    r.glassCatalog = nameText(in, "glass_catalog", "catalog");
     r.abbe = in.number("abbe", 0);
     r.conic = in.number("conic", 0);
     r.mirror = in.flag("mirror");
     r.obscurationDiameter = in.number("obscuration_diameter", 0);
     r.coating = in.text("coating");
     if (r.coating.size() > 256) in.fail("coating must be at most 256 characters");
-    if (row.contains("aspheric")) {
-        const json& terms = row.at("aspheric");
-        if (!terms.is_array() || terms.size() > kAsphericTerms)
-            in.fail("aspheric must be a list of at most " + std::to_string(kAsphericTerms) + " numbers (r^2 .. r^16)");
-        for (std::size_t i = 0; i < terms.size(); ++i) {
-            if (!terms[i].is_number() || !std::isfinite(terms[i].get<double>()))
-                in.fail("aspheric term " + std::to_string(i + 1) + " is not a finite number");
-            r.aspheric[i] = terms[i].get<double>();
-        }
-    }
-    if (!(r.diameter > 0)) in.fail("diameter must be positive");
+    r.name = in.text("name");
+    if (r.name.size() > 256) in.fail("name must be at most 256 characters");
+    if (const auto problem = lineTextProblem(r.name)) in.fail("name holds " + *problem);
+    const std::vector<double> terms = in.numbers("aspheric", kAsphericTerms);
+    std::copy(terms.begin(), terms.end(), r.aspheric.begin());
+    r.form = surfaceFormFromJson(in);
+    if (in.has("clear_aperture")) r.clearShape = apertureFromJson(in.object("clear_aperture"));
+    if (in.has("obscuration")) r.obscurationShape = apertureFromJson(in.object("obscuration"));
+    if (in.has("frame")) r.frame = frameFromJson(in.object("frame"));
+    r.coordinateBreak = in.flag("coordinate_break");
+    r.automaticDiameter = in.flag("automatic_diameter");
+    // A coordinate break is no surface and an automatic clear aperture is derived when the lens is
+    // built: neither has a diameter of its own. A shaped clear aperture's is the one its shape needs.
+    if (r.coordinateBreak && !r.frame) in.fail("a coordinate break needs its frame (decentre and tilt)");
+    if (r.coordinateBreak && r.diameter != 0) in.fail("a coordinate break has no surface: its diameter must be 0");
+    if (r.automaticDiameter && (r.diameter != 0 || r.clearShape))
+        in.fail("an automatic clear aperture has diameter 0 and no clear_aperture");
+    if (!r.coordinateBreak && !r.automaticDiameter && !(r.diameter > 0)) in.fail("diameter must be positive");
+    if (r.clearShape && r.diameter != 2 * r.clearShape->reach())
+        in.fail("diameter must be " + json(2 * r.clearShape->reach()).dump() +
+                " mm, what the clear aperture's shape reaches (change the shape to change it)");
     if (r.index != 0 && r.index < 1) in.fail("index " + json(r.index).dump() + " is below 1 (0 or 1 for air)");
     if (r.abbe < 0) in.fail("Abbe number must not be negative");
-    if (r.obscurationDiameter < 0 || r.obscurationDiameter >= r.diameter)
+    if (r.obscurationDiameter < 0 || (r.obscurationDiameter > 0 && r.diameter > 0 && r.obscurationDiameter >= r.diameter))
         in.fail("the obscuration must be smaller than the clear diameter");
     return r;
 }
@@ -107,8 +133,6 @@ LensTableRow rowFromJson(const json& row, const std::string& name, int line) {
 // line, wavelengths lenslab traces.
 void checkHeader(const LensTable& table) {
     const auto fail = [&](const std::string& problem) { throw LensTableError(table.name, 0, problem); };
-    if (table.comments.size() > 64 || table.catalogs.size() > 64 || table.wavelengths.size() > 24)
-        fail("at most 64 comments, 64 catalogs and 24 wavelengths");
     std::size_t commentBytes = 0;
     for (std::size_t i = 0; i < table.comments.size(); ++i) {
         if (const auto problem = lineTextProblem(table.comments[i]))
@@ -123,6 +147,13 @@ void checkHeader(const LensTable& table) {
     for (double nm : table.wavelengths)
         if (const auto problem = wavelengthProblem(nm)) fail("wavelengths_nm: " + *problem);
     if (const auto problem = wavelengthProblem(table.primaryWavelength)) fail("primary_wavelength_nm: " + *problem);
+    if (table.wavelengthWeights.size() > table.wavelengths.size()) fail("more wavelength_weights than wavelengths_nm");
+    for (double w : table.wavelengthWeights)
+        if (w < 0) fail("wavelength_weights must not be negative");
+    for (const auto& [what, value] : {std::pair{"entrance_pupil_diameter", table.entrancePupilDiameter},
+                                      std::pair{"f_number", table.designFNumber},
+                                      std::pair{"object_numerical_aperture", table.objectNumericalAperture}})
+        if (value && !(*value > 0)) fail(std::string(what) + " must be positive (null: the lens gives none)");
 }
 
 }  // namespace
@@ -139,14 +170,18 @@ LensTable prescriptionFromJson(const json& body, const std::string& name) {
     table.layout = TableLayout::GapAfter;
     table.format = "zmx";
     for (std::size_t i = 0; i < rows.size(); ++i) table.rows.push_back(rowFromJson(rows[i], name, int(i) + 1));
-    try {
-        if (body.contains("comments")) table.comments = body.at("comments").get<std::vector<std::string>>();
-        if (body.contains("catalogs")) table.catalogs = body.at("catalogs").get<std::vector<std::string>>();
-        if (body.contains("wavelengths_nm")) table.wavelengths = body.at("wavelengths_nm").get<std::vector<double>>();
-        if (body.contains("primary_wavelength_nm")) table.primaryWavelength = body.at("primary_wavelength_nm").get<double>();
-    } catch (const json::exception&) {
-        throw LensTableError(name, 0, "comments and catalogs must be lists of strings, wavelengths_nm a list of numbers");
-    }
+    const JsonFields in(body, name, 0);
+    table.comments = in.texts("comments", 64);
+    table.catalogs = in.texts("catalogs", 64);
+    table.wavelengths = in.numbers("wavelengths_nm", 24);
+    table.wavelengthWeights = in.numbers("wavelength_weights", 24);
+    table.primaryWavelength = in.number("primary_wavelength_nm", kWavelengthD);
+    if (in.has("fields")) table.fields = designFieldsFromJson(in.object("fields"));
+    table.objectDistance = in.number("object_distance", table.objectDistance);
+    table.entrancePupilDiameter = in.optionalNumber("entrance_pupil_diameter");
+    table.designFNumber = in.optionalNumber("f_number");
+    table.objectNumericalAperture = in.optionalNumber("object_numerical_aperture");
+    if (in.has("image_frame")) table.imageFrame = frameFromJson(in.object("image_frame"));
     checkHeader(table);
     return table;
 }

@@ -5,7 +5,7 @@
 // answer overtaken by a newer edit is dropped. A cell whose text is not acceptable is marked with
 // the reason and the lens is not sent until it is corrected.
 import { $, api, authorizedFetch, postJson, showMessage } from "./api.js";
-import { COLUMNS, needsZemax, newRow, setGlassCatalog } from "./prescription-cells.js";
+import { COLUMNS, keptFeatures, needsZemax, newRow, setGlassCatalog } from "./prescription-cells.js";
 import { UndoHistory } from "./undo-history.js";
 import { attachEditor, lensPreviewSettings, loadLenses, selectedLens, selectedLensName, showDiagramPng, showLensData } from "./lens.js";
 import { showAnalysis } from "./analysis.js";
@@ -59,6 +59,13 @@ function drawTable() {
     const number = tr.insertCell();
     number.className = "surface-number";
     number.textContent = i + 1;
+    // What the row keeps besides its cells, marked so that no one wonders why two rows alike differ.
+    const kept = keptFeatures(row);
+    if (kept.length) {
+      number.classList.add("kept");
+      number.title = `kept as the file states it: ${kept.join(", ")}`;
+      number.dataset.kept = kept.join(", ");
+    }
     const stopCell = tr.insertCell();
     const stop = document.createElement("input");
     stop.type = "radio";
@@ -209,8 +216,12 @@ function onKey(e) {
 
 const say = (text, bad = false) => { $("editor-status").textContent = text; $("editor-status").classList.toggle("bad", bad); };
 
-const prescriptionBody = (rows) => ({ rows, comments: state.prescription.comments, catalogs: state.prescription.catalogs,
-  wavelengths_nm: state.prescription.wavelengths_nm, primary_wavelength_nm: state.prescription.primary_wavelength_nm });
+// The edited rows with everything else the stored lens's prescription holds (its fields, aperture,
+// wavelengths and weights, object distance, image tilt: docs/api.md), as the service sent them.
+const prescriptionBody = (rows) => {
+  const { id, rows: stored, ...lens } = state.prescription;
+  return { ...lens, rows };
+};
 
 function requestPreview() {
   if (!state.editedAt) state.editedAt = performance.now();
@@ -274,9 +285,9 @@ async function prescriptionText(format, body) {
   return text;
 }
 
-// The rows as a .dat when a table can hold them, else as a .zmx.
+// The lens as a .dat when a table can hold it, else as a .zmx.
 async function savedFile(body) {
-  if (!needsZemax(state.rows)) {
+  if (!needsZemax(body)) {
     try {
       return { format: "dat", text: await prescriptionText("dat", body) };
     } catch (e) {

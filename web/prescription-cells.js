@@ -66,7 +66,9 @@ export const COLUMNS = [
       return { value: { glass: name } };
     },
     // Air keeps a table's N 1 (or 0); a catalog glass's nd is the catalog's (0).
-    apply: (r, v) => ({ ...r, glass: v.glass || "", mirror: !!v.mirror, index: v.index || (r.index === 1 && !v.glass ? 1 : 0), abbe: v.abbe || 0 }),
+    // The row's own catalog (Code V's N-BK7_SCHOTT) stays with its glass only.
+    apply: (r, v) => ({ ...r, glass: v.glass || "", glass_catalog: v.glass && v.glass === r.glass ? r.glass_catalog : "", mirror: !!v.mirror,
+                        index: v.index || (r.index === 1 && !v.glass ? 1 : 0), abbe: v.abbe || 0 }),
   },
   {
     key: "index", heading: "nd", title: "refractive index at the d line (empty or 1: air); typing one makes a model glass",
@@ -78,7 +80,7 @@ export const COLUMNS = [
       return n.error || n.value >= 1 ? n : { error: "nd must be at least 1 (empty for air)" };
     },
     // A catalog glass given another nd becomes a model glass that keeps the catalog's Vd.
-    apply: (r, v) => ({ ...r, index: v, abbe: v > 1 ? (catalogGlass(r.glass) || {}).vd || r.abbe : 0, glass: "", mirror: false }),
+    apply: (r, v) => ({ ...r, index: v, abbe: v > 1 ? (catalogGlass(r.glass) || {}).vd || r.abbe : 0, glass: "", glass_catalog: "", mirror: false }),
     derived: (r) => !!catalogGlass(r.glass),
   },
   {
@@ -93,14 +95,19 @@ export const COLUMNS = [
       if (!isModelGlass(r) && !catalogGlass(r.glass)) return { error: "a Vd needs a glass: give nd first" };
       return n;
     },
-    apply: (r, v) => { const g = catalogGlass(r.glass); return { ...r, abbe: v, index: g ? g.nd : r.index, glass: "" }; },
+    apply: (r, v) => { const g = catalogGlass(r.glass); return { ...r, abbe: v, index: g ? g.nd : r.index, glass: "", glass_catalog: "" }; },
     derived: (r) => !!catalogGlass(r.glass),
   },
   {
-    key: "diameter", heading: "diameter", title: "clear aperture diameter, mm",
-    show: (r) => fixed(r.diameter, 3), exact: (r) => String(r.diameter),
-    read: (t) => { const n = number(t, "the diameter"); return n.error || n.value > 0 ? n : { error: "the diameter must be positive" }; },
-    apply: (r, v) => ({ ...r, diameter: v }),
+    key: "diameter", heading: "diameter", title: "clear aperture diameter, mm ('auto': derived from the design's aperture and fields)",
+    show: (r) => (r.automatic_diameter ? "auto" : fixed(r.diameter, 3)), exact: (r) => (r.automatic_diameter ? "auto" : String(r.diameter)),
+    read: (t) => {
+      if (/^\s*auto\s*$/i.test(t)) return { value: "auto" };
+      const n = number(t, "the diameter");
+      return n.error || n.value > 0 ? n : { error: "the diameter must be positive (or auto)" };
+    },
+    // An automatic diameter has no shape of its own; a typed one is the row's own.
+    apply: (r, v) => (v === "auto" ? { ...r, diameter: 0, automatic_diameter: true, clear_aperture: null } : { ...r, diameter: v, automatic_diameter: false }),
   },
   {
     key: "conic", heading: "conic", title: "conic constant k (0 sphere, -1 paraboloid)",
@@ -142,8 +149,28 @@ function trimTerms(terms) {
 }
 
 // A new surface after `row`: flat, in air, 1 mm on, as wide as its neighbour.
-export const newRow = (row) => ({ radius: 0, gap: 1, index: 0, diameter: row ? row.diameter : 10, stop: false, glass: "", abbe: 0,
-  conic: 0, aspheric: new Array(ASPHERIC_TERMS).fill(0), mirror: false, obscuration_diameter: 0, coating: "" });
+export const newRow = (row) => ({ radius: 0, gap: 1, index: 0, diameter: row && row.diameter > 0 ? row.diameter : 10, stop: false,
+  glass: "", glass_catalog: "", abbe: 0, conic: 0, aspheric: new Array(ASPHERIC_TERMS).fill(0), mirror: false, obscuration_diameter: 0,
+  coating: "", name: "", kind: "even asphere", form_terms: [], normalisation_radius: 0, clear_aperture: null, obscuration: null,
+  frame: null, coordinate_break: false, automatic_diameter: false });
 
-// Whether only a .zmx can hold the rows (a lens table has no conic, aspheric, mirror or obscuration).
-export const needsZemax = (rows) => rows.some((r) => r.conic !== 0 || r.mirror || r.obscuration_diameter > 0 || (r.aspheric || []).some((a) => a !== 0));
+// What a row keeps that the table's columns do not show (a decentre or tilt, a coordinate break, a
+// surface form, a shaped aperture, a name), as words for its surface number.
+export function keptFeatures(r) {
+  const kept = [];
+  if (r.coordinate_break) kept.push("coordinate break");
+  else if (r.frame) kept.push(`decentre and tilt (${r.frame.mode})`);
+  if (r.kind && r.kind !== "even asphere") kept.push(`${r.kind} surface`);
+  if (r.clear_aperture) kept.push(`${r.clear_aperture.shape} clear aperture`);
+  if (r.obscuration) kept.push(`${r.obscuration.shape} obscuration`);
+  if (r.name) kept.push(`"${r.name}"`);
+  return kept;
+}
+
+// Whether only a .zmx can hold the lens: a lens table has no conic, aspheric terms, mirror,
+// obscuration or automatic diameter, none of the rows' kept features, and no field list, aperture,
+// wavelengths, object distance or image tilt of the design.
+export const needsZemax = (lens) => !!(lens.rows.some((r) => r.conic !== 0 || r.mirror || r.obscuration_diameter > 0 ||
+    (r.aspheric || []).some((a) => a !== 0) || r.automatic_diameter || keptFeatures(r).length) ||
+  (lens.fields && lens.fields.points.length) || (lens.wavelengths_nm || []).length || lens.object_distance != null ||
+  lens.entrance_pupil_diameter != null || lens.f_number != null || lens.object_numerical_aperture != null || lens.image_frame);

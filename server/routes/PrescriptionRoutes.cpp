@@ -16,6 +16,7 @@
 #include "AnalysisViews.h"
 #include "core/Base64.h"
 #include "core/ContentDigest.h"
+#include "core/ContentDisposition.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
 #include "core/JsonBody.h"
@@ -32,8 +33,9 @@ namespace {
 
 using nlohmann::json;
 
-// A 256-surface prescription with every field written out is about 100 KiB of JSON.
-constexpr std::size_t kMaxPreviewBody = 256 * 1024;
+// A row with every field at full precision (a frame, two shaped apertures, 16 form terms, 8
+// aspheric terms) is about 1.5 KiB of JSON: 256 of them about 380 KiB.
+constexpr std::size_t kMaxPreviewBody = 512 * 1024;
 
 const char* const kEditedLensName = "edited lens";
 
@@ -167,7 +169,7 @@ using TableWriter = std::string (*)(const LensTable&);
 void replyTableText(httplib::Response& res, const LensTable& table, TableWriter write, const std::string& fileName) {
     try {
         res.set_content(write(withGapAfterRows(table)), "text/plain; charset=utf-8");
-        res.set_header("Content-Disposition", "attachment; filename=\"" + fileName + "\"");
+        res.set_header("Content-Disposition", attachmentDisposition(fileName));
     } catch (const LensTableError& e) {
         replyJson(res, 422, {{"error", e.what()}, {"row", e.line()}, {"problem", e.problem()}});
     }
@@ -179,6 +181,14 @@ void exportEdited(const httplib::Request& req, httplib::Response& res, TableWrit
     } catch (const LensTableError& e) {
         replyRowError(res, e);
     }
+}
+
+// A stored lens's download is named as the page names the lens: its file's name (the bundled
+// file's, the upload's) without the extension, else its title, else its id.
+std::string downloadName(const StoredLens& lens, const char* extension) {
+    const std::string stem = lensFileStem(lens.name);
+    const std::string& name = !stem.empty() ? stem : !lens.description.empty() ? lens.description : lens.id;
+    return name + extension;
 }
 
 LensTable storedTable(const StoredLens& lens) {
@@ -198,11 +208,11 @@ void addPrescriptionRoutes(httplib::Server& server, ServiceParts& parts) {
     });
     server.Get(R"(/api/lenses/([^/]+)/table\.dat)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
-        replyTableText(res, storedTable(*lens), writeLensTableText, lens->id + ".dat");
+        replyTableText(res, storedTable(*lens), writeLensTableText, downloadName(*lens, ".dat"));
     });
     server.Get(R"(/api/lenses/([^/]+)/prescription\.zmx)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
-        replyTableText(res, storedTable(*lens), writeZemaxText, lens->id + ".zmx");
+        replyTableText(res, storedTable(*lens), writeZemaxText, downloadName(*lens, ".zmx"));
     });
     server.Post("/api/prescriptions/preview",
                 [&parts](const httplib::Request& req, httplib::Response& res) { preview(parts, req, res); });

@@ -10,6 +10,7 @@ import { mkdtempSync, readFileSync } from "node:fs";
 import { cpus, loadavg, tmpdir } from "node:os";
 import { join } from "node:path";
 import { closeAll, openPage, waitForUpload } from "./serve.mjs";
+import { editCell, editorHolds, previews } from "./editor-cells.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -27,25 +28,11 @@ const firstOrderEfl = (page) => page.$eval("#lens-data tbody tr td", (td) => Num
 // The on-axis RMS spot at the d line (µm), as the analysis table marks it.
 const onAxisRms = (page) => page.$eval('#analysis-tables td[data-json="/fields/0/spots/1/rms_radius_mm"]',
                                        (td) => Number(td.dataset.value) * 1000);
-const previews = (page) => page.$eval("#editor", (e) => Number(e.dataset.previews || 0));
-
-// Types into a cell and waits for the preview of that edit: the time from the input event to the
-// new numbers and diagram on screen, as the page measures it.
-async function editCell(page, row, key, text) {
-  const before = await previews(page);
-  const input = `#editor-table input[data-row="${row}"][data-key="${key}"]`;
-  await page.fill(input, text);
-  await page.press(input, "Tab");
-  await page.waitForFunction((n) => Number(document.querySelector("#editor").dataset.previews || 0) > n, before)
-    .catch(async (e) => { throw new Error(`no preview after "${text}" in ${input}: ${await page.textContent("#editor-status")}`, { cause: e }); });
-  return page.$eval("#editor", (e) => Number(e.dataset.previewMs));
-}
 
 async function lensSelected(page, id) {
   await page.click(`#lens-list button[data-id="${id}"]`);
   await page.waitForFunction((id) => document.querySelector("#lens-title").textContent === id, id);
-  await page.waitForFunction((id) => document.querySelector("#editor").dataset.lens === id, id);
-  await page.waitForFunction(() => document.querySelector("#diagram").src.startsWith("blob:"));
+  await editorHolds(page, id);
 }
 
 async function uploadAndAnalyse(request, base, text, name) {

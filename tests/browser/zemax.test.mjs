@@ -11,6 +11,7 @@ import { tmpdir } from "node:os";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
 import { closeAll, launchBrowser, startServer, waitForUpload } from "./serve.mjs";
+import { TILTED_PLATE_SEQ } from "./tilted-plate.mjs";
 
 const [binary, sourceDir] = process.argv.slice(2);
 if (!binary || !sourceDir) {
@@ -40,29 +41,10 @@ const diagramPixelsNear = (page, rgb) => page.$eval("#diagram", (img, rgb) => {
   return count;
 }, rgb);
 
-// A Code V sequence file (our own: an N-BK7 plate tilted 10 degrees about x before an N-BK7 singlet,
-// R 50 / -50, 5 mm) uploaded through the file picker: the surface table shows the plate's tilt and
-// frame mode, and the colour block gives the singlet's focal lengths at F, d and C (the plate adds
-// no power; thick-lens formula with Schott's indices: 48.694, 49.213, 49.447 mm).
-const TILTED_PLATE_SEQ = `RDM
-LEN "A plate tilted 10 degrees before a singlet"
-DIM M
-WL 587.5618
-EPD 10
-YAN 0 3
-SO 0 1e10
-S 0 4 N-BK7_SCHOTT
-  DAR
-  ADE 10
-S 0 5
-  DAR
-  ADE 10
-S 50 5 N-BK7_SCHOTT
-STO
-S -50 45
-SI 0 0
-GO
-`;
+// The Code V plate tilted 10 degrees before a singlet (tilted-plate.mjs), uploaded through the file
+// picker: the surface table shows the plate's tilt and frame mode, and the colour block gives the
+// singlet's focal lengths at F, d and C (the plate adds no power; thick-lens formula with Schott's
+// indices: 48.694, 49.213, 49.447 mm).
 async function checkTiltedCodeVUpload(page) {
   const upload = join(work, "tilted-plate.seq");
   writeFileSync(upload, TILTED_PLATE_SEQ);

@@ -163,13 +163,13 @@ TEST_F(ServerHttpDetails, AnOversizeBodyIsRefusedBeforeContinue) {
     EXPECT_NE(bodyOf(reply).find("1048576"), std::string::npos) << reply;
 }
 
-// A route's own smaller limit is the one its 413 names (a preview body: 256 KiB, not the 1 MiB of --max-body).
+// A route's own smaller limit is the one its 413 names (a preview body: 512 KiB, not the 1 MiB of --max-body).
 TEST_F(ServerHttpDetails, APreviewBodyPastItsLimitNamesThatLimit) {
     start();
     auto c = server_->client();
-    const Reply reply = postRaw(c, "/api/prescriptions/preview", "{\"rows\": [], \"comments\": [\"" + std::string(300000, 'x') + "\"]}");
+    const Reply reply = postRaw(c, "/api/prescriptions/preview", "{\"rows\": [], \"comments\": [\"" + std::string(600000, 'x') + "\"]}");
     EXPECT_EQ(reply.status, 413) << reply.raw.substr(0, 300);
-    EXPECT_NE(reply.body.value("error", std::string()).find("256 KiB"), std::string::npos) << reply.raw.substr(0, 300);
+    EXPECT_NE(reply.body.value("error", std::string()).find("512 KiB"), std::string::npos) << reply.raw.substr(0, 300);
 }
 
 // Host names as operators and DNS write them: "a, b" lists b, and a trailing dot names the same host.

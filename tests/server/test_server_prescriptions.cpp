@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "RawConnection.h"
 #include "ServerProcess.h"
 
 using namespace lenslab::test;
@@ -113,4 +114,67 @@ TEST_F(ServerPrescriptions, Utf16ZemaxUploadReadsLikeTheFile) {
     const auto bad = c.Post("/api/lenses", httplib::MultipartFormDataItems{{"file", "VERS 1\nMODE SEQ\nSURF 0\n  TYPE COORDBRK\n", "bad.zmx", "text/plain"}});
     EXPECT_EQ(bad->status, 400);
     EXPECT_NE(bad->body.find("bad.zmx:4"), std::string::npos) << bad->body;
+}
+
+// A Code V lens whose plate is tilted 10 degrees by returning decentres, with a field list and EPD:
+// what the editor's JSON must keep.
+const char* const kTiltedPlateSeq = "RDM\nLEN \"A plate tilted 10 degrees before a singlet\"\nDIM M\nWL 587.5618\nEPD 10\n"
+                                    "YAN 0 3\nSO 0 1e10\nS 0 4 N-BK7_SCHOTT\n  DAR\n  ADE 10\nS 0 5\n  DAR\n  ADE 10\n"
+                                    "S 50 5 N-BK7_SCHOTT\nSTO\nS -50 45\nSI 0 0\nGO\n";
+
+// The stored lens's JSON posted back unchanged writes the stored lens's own .zmx (tilts, fields and
+// EPD kept), and the .dat refuses it as the stored lens's does; edited, the tilt stays.
+TEST_F(ServerPrescriptions, AStoredLensPostedBackWritesItsOwnFile) {
+    auto c = server_->client();
+    const auto upload = c.Post("/api/lenses?name=tilted-plate.seq", kTiltedPlateSeq, "text/plain");
+    ASSERT_TRUE(upload && upload->status == 201) << (upload ? upload->body : "no answer");
+    const std::string id = json::parse(upload->body)["id"];
+    const Reply stored = get(c, "/api/lenses/" + id + "/prescription.zmx");
+    ASSERT_EQ(stored.status, 200) << stored.raw;
+    const Reply rows = get(c, "/api/lenses/" + id + "/prescription");
+    ASSERT_EQ(rows.status, 200);
+    EXPECT_EQ(rows.body["rows"][0]["frame"]["tilt_degrees"], json({10, 0, 0}));
+    EXPECT_EQ(rows.body["fields"]["points"][1]["y"], 3);
+    EXPECT_EQ(rows.body["entrance_pupil_diameter"], 10);
+    const Reply edited = postJson(c, "/api/prescriptions/prescription.zmx", rows.body);
+    ASSERT_EQ(edited.status, 200) << edited.raw;
+    EXPECT_EQ(edited.raw, stored.raw);
+    EXPECT_NE(stored.raw.find("  SCBD 1 0 0 0 0 10 0 0\n"), std::string::npos) << stored.raw;
+    EXPECT_NE(stored.raw.find("\nYFLN 0 3 0"), std::string::npos) << stored.raw;
+    EXPECT_NE(stored.raw.find("\nENPD 10\n"), std::string::npos) << stored.raw;
+    const Reply dat = postJson(c, "/api/prescriptions/table.dat", rows.body);
+    EXPECT_EQ(dat.status, 422);
+    EXPECT_EQ(dat.body["problem"], get(c, "/api/lenses/" + id + "/table.dat").body["problem"]);
+
+    json radius = rows.body;
+    radius["rows"][2]["radius"] = 48;
+    const Reply changed = postJson(c, "/api/prescriptions/prescription.zmx", radius);
+    ASSERT_EQ(changed.status, 200) << changed.raw;
+    EXPECT_NE(changed.raw.find("  CURV 0.020833333333333333\n"), std::string::npos) << changed.raw;
+    EXPECT_NE(changed.raw.find("  SCBD 1 0 0 0 0 10 0 0\n"), std::string::npos) << changed.raw;
+    const Reply preview = postJson(c, "/api/prescriptions/preview", radius);
+    ASSERT_EQ(preview.status, 200) << preview.raw.substr(0, 300);
+    EXPECT_EQ(preview.body["lens"]["surfaces"][0]["frame"]["tilt_degrees"], json({10, 0, 0}));
+    EXPECT_EQ(preview.body["lens"]["design"]["fields"]["points"].size(), 2u);
+}
+
+// A stored lens downloads under its display name (the file's name without the extension), UTF-8
+// in filename* and an ASCII stand-in in filename; the bundled under their file's name.
+TEST_F(ServerPrescriptions, DownloadsAreNamedByTheLensesDisplayName) {
+    auto c = server_->client();
+    const auto upload = c.Post("/api/lenses?name=Objektiv%20%C3%B8%2050.seq", kTiltedPlateSeq, "text/plain");
+    ASSERT_TRUE(upload && upload->status == 201) << (upload ? upload->body : "no answer");
+    const std::string id = json::parse(upload->body)["id"];
+    // On the wire: httplib's client percent-decodes the header values it reads.
+    const auto disposition = [&](const std::string& path) {
+        RawConnection connection(server_->port());
+        connection.send("GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n");
+        const std::string reply = connection.readReply(10);
+        const std::size_t at = reply.find("Content-Disposition: ");
+        return at == std::string::npos ? reply.substr(0, 300) : reply.substr(at + 21, reply.find("\r\n", at) - at - 21);
+    };
+    EXPECT_EQ(disposition("/api/lenses/" + id + "/prescription.zmx"),
+              "attachment; filename=\"Objektiv _ 50.zmx\"; filename*=UTF-8''Objektiv%20%C3%B8%2050.zmx");
+    EXPECT_EQ(disposition("/api/lenses/dgauss.50mm/table.dat"),
+              "attachment; filename=\"dgauss.50mm.dat\"; filename*=UTF-8''dgauss.50mm.dat");
 }

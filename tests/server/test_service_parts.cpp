@@ -1,4 +1,4 @@
-// The service's parts in-process: request checking, a chunked body's payload count, identifiers, the result cache's sharing and
+// The service's parts in-process: request checking, a download's file name, a chunked body's payload count, identifiers, the result cache's sharing and
 // eviction, the heavy-work pool's admission, event-stream slots, storage errors' statuses, the
 // remembered render checks, and the job queue's limits, cancellation and persistence with a fake
 // renderer.
@@ -16,6 +16,7 @@
 #include "storage/ResultCache.h"
 #include "FakeRenderer.h"
 #include "core/HttpError.h"
+#include "core/ContentDisposition.h"
 #include "core/Identifiers.h"
 #include "guards/ChunkedBodyMeter.h"
 #include "guards/EventStreamSlots.h"
@@ -355,4 +356,18 @@ TEST(JobQueueTest, FailedJobsNameFilesWithoutServerPaths) {
     EXPECT_EQ(error, "cornell.pbrt:5: Camera \"realistic\": cannot open 'x.dat' (looked for upload-1.dat)");
     EXPECT_EQ(error.find("/srv"), std::string::npos);
     queue.shutdown();
+}
+
+// A download's name as a person gave it: quotes, slashes, backslashes, controls and non-ASCII never
+// break out of the header or name a path.
+TEST(ContentDispositionTest, AnyNameIsOneSafeFileName) {
+    EXPECT_EQ(attachmentDisposition("dgauss.50mm.zmx"), "attachment; filename=\"dgauss.50mm.zmx\"; filename*=UTF-8''dgauss.50mm.zmx");
+    EXPECT_EQ(attachmentDisposition("a \"quoted\" lens.zmx"),
+              "attachment; filename=\"a _quoted_ lens.zmx\"; filename*=UTF-8''a%20%22quoted%22%20lens.zmx");
+    EXPECT_EQ(attachmentDisposition("../../etc/passwd"), "attachment; filename=\".._.._etc_passwd\"; filename*=UTF-8''.._.._etc_passwd");
+    EXPECT_EQ(attachmentDisposition("C:\\lens;x=1\r\nSet-Cookie: a.dat"),
+              "attachment; filename=\"C__lens_x_1__Set-Cookie_ a.dat\"; filename*=UTF-8''C%3A_lens%3Bx%3D1__Set-Cookie%3A%20a.dat");
+    EXPECT_EQ(attachmentDisposition("Zoom 24–70 ƒ2.8 日本.zmx"),
+              "attachment; filename=\"Zoom 24_70 _2.8 __.zmx\"; "
+              "filename*=UTF-8''Zoom%2024%E2%80%9370%20%C6%922.8%20%E6%97%A5%E6%9C%AC.zmx");
 }
