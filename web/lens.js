@@ -4,6 +4,7 @@
 import { $, api, authorizedFetch, clearMessage, fixed, showMessage } from "./api.js";
 import { analysisChoices, setUpAnalysis, showStoredAnalysis } from "./analysis.js";
 import { showGhosts } from "./ghosts.js";
+import { isGlassCatalogFile, uploadGlassCatalog } from "./glass-catalogs.js";
 
 const state = {
   lenses: [],
@@ -47,9 +48,15 @@ export async function loadLenses(selectId) {
   if (wanted) await selectLens(wanted);
 }
 
+// A lens file, or a glass catalog (glass-catalogs.js) dropped or chosen in the same place.
+async function uploadFile(file) {
+  if (!file) return;
+  if (await isGlassCatalogFile(file)) await uploadGlassCatalog(file);
+  else await uploadLens(file);
+}
+
 async function uploadLens(file) {
   clearMessage();
-  if (!file) return;
   if (file.size > 1024 * 1024) {
     showMessage(`"${file.name}" is ${Math.round(file.size / 1024)} KiB; lens tables are at most 1 MiB.`);
     return;
@@ -67,11 +74,11 @@ async function uploadLens(file) {
 
 function setUpUpload() {
   const input = $("lens-file");
-  input.addEventListener("change", () => { uploadLens(input.files[0]); input.value = ""; });
+  input.addEventListener("change", () => { uploadFile(input.files[0]); input.value = ""; });
   const zone = $("drop-zone");
   for (const name of ["dragenter", "dragover"]) zone.addEventListener(name, (e) => { e.preventDefault(); zone.classList.add("dragging"); });
   for (const name of ["dragleave", "drop"]) zone.addEventListener(name, (e) => { e.preventDefault(); zone.classList.remove("dragging"); });
-  zone.addEventListener("drop", (e) => uploadLens(e.dataTransfer.files[0]));
+  zone.addEventListener("drop", (e) => uploadFile(e.dataTransfer.files[0]));
 }
 
 // ---- the f-number ------------------------------------------------------------------------------
