@@ -326,25 +326,24 @@ std::vector<Medium> loadedGlasses(CatalogPrecedence precedence) {
 
 // A lookup by a glass's own name matches an earlier source's glass by its whole name or its name
 // without the prefix; the earlier sources' names as a set answer that for every glass at once.
-std::vector<std::string> shadowedGlassNames(const std::string& catalogName) {
+std::map<std::string, std::vector<std::string>> shadowedGlassNames() {
     LoadedCatalogs& user = loaded();
     std::shared_lock lock(user.mutex);
-    const std::string wanted = nameKey(catalogName);
+    std::map<std::string, std::vector<std::string>> shadowed;
     std::unordered_set<std::string> earlier;
     for (const Source& source : searchOrder({}, user.catalogs)) {
-        if (!source.bundled && nameKey(source.name) == wanted) {
-            std::vector<std::string> shadowed;
+        if (!source.bundled) {
+            std::vector<std::string>& names = shadowed[source.name];
             forEachGlass(source, [&](const Medium& glass, const GlassNames& n) {
-                if (earlier.count(n.key)) shadowed.push_back(glass.name);
+                if (earlier.count(n.key)) names.push_back(glass.name);
             });
-            return shadowed;
         }
         forEachGlass(source, [&](const Medium&, const GlassNames& n) {
             earlier.insert(n.key);
             if (!n.base.empty()) earlier.insert(n.base);
         });
     }
-    return {};
+    return shadowed;
 }
 
 void clearLoadedGlassCatalogs() {

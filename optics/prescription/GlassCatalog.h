@@ -3,6 +3,7 @@
 // refractiveindex.info database), found by name as lens designers write them. docs/glass.md
 // gives the catalogs, the matching rules and the formulas.
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,9 +49,9 @@ bool isGlassCatalogName(const std::string& name);
 std::vector<std::string> loadedGlassCatalogNames();  // in load order
 // The glasses of the catalogs loaded with that precedence, in search order.
 std::vector<Medium> loadedGlasses(CatalogPrecedence precedence);
-// The names of a loaded catalog's glasses that a lookup by that very name finds in a catalog searched
-// before it (without GCAT lines): the glasses it holds but that no lens gets from it.
-std::vector<std::string> shadowedGlassNames(const std::string& catalogName);
+// For each loaded catalog (by name), the names of its glasses that a lookup by that very name finds
+// in a catalog searched before it (without GCAT lines): the glasses it holds but no lens gets from it.
+std::map<std::string, std::vector<std::string>> shadowedGlassNames();
 void clearLoadedGlassCatalogs();
 std::size_t glassCount();
 const std::vector<Medium>& catalogGlasses();   // every glass, maker by maker

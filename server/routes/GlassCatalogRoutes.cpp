@@ -17,7 +17,15 @@ namespace {
 
 using nlohmann::json;
 
-json catalogSummaryJson(const StoredGlassCatalog& catalog) {
+using ShadowedNames = std::map<std::string, std::vector<std::string>>;  // shadowedGlassNames()
+
+const std::vector<std::string>& shadowedIn(const ShadowedNames& shadowed, const StoredGlassCatalog& catalog) {
+    static const std::vector<std::string> none;
+    const auto it = shadowed.find(catalog.name);
+    return it == shadowed.end() ? none : it->second;
+}
+
+json catalogSummaryJson(const StoredGlassCatalog& catalog, const ShadowedNames& shadowed) {
     std::vector<int> formulas = catalog.formulaNumbers;
     std::sort(formulas.begin(), formulas.end());
     formulas.erase(std::unique(formulas.begin(), formulas.end()), formulas.end());
@@ -26,15 +34,16 @@ json catalogSummaryJson(const StoredGlassCatalog& catalog) {
             {"file_name", catalog.fileName},
             {"glass_count", catalog.glasses.size()},
             {"formulas", formulas},
-            {"shadowed_count", shadowedGlassNames(catalog.name).size()},
+            {"shadowed_count", shadowedIn(shadowed, catalog).size()},
             {"created", catalog.created}};
 }
 
 // Each glass with the maker's nd and Vd (the NM line) and those its formula gives, which a
 // mistyped coefficient makes differ; `shadowed`: a lens naming it gets another catalog's glass.
 json catalogDetailJson(const StoredGlassCatalog& catalog) {
-    json body = catalogSummaryJson(catalog);
-    const std::vector<std::string> shadowed = shadowedGlassNames(catalog.name);
+    const ShadowedNames all = shadowedGlassNames();
+    json body = catalogSummaryJson(catalog, all);
+    const std::vector<std::string>& shadowed = shadowedIn(all, catalog);
     json glasses = json::array();
     for (std::size_t i = 0; i < catalog.glasses.size(); ++i) {
         const Medium& glass = catalog.glasses[i];
@@ -72,7 +81,8 @@ std::vector<std::string> lensesUsing(const LensStore& lenses, const std::string&
 void addGlassCatalogRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Get("/api/glass-catalogs", [&parts](const httplib::Request&, httplib::Response& res) {
         json list = json::array();
-        for (const auto& catalog : parts.glassCatalogs.list()) list.push_back(catalogSummaryJson(*catalog));
+        const ShadowedNames shadowed = shadowedGlassNames();
+        for (const auto& catalog : parts.glassCatalogs.list()) list.push_back(catalogSummaryJson(*catalog, shadowed));
         replyJson(res, 200, {{"catalogs", list}});
     });
 
@@ -84,7 +94,7 @@ void addGlassCatalogRoutes(httplib::Server& server, ServiceParts& parts) {
         try {
             const auto [catalog, body] = parts.work.run([&] {
                 const auto catalog = parts.glassCatalogs.add(file.name, file.text);
-                return std::make_pair(catalog, catalogSummaryJson(*catalog));
+                return std::make_pair(catalog, catalogSummaryJson(*catalog, shadowedGlassNames()));
             });
             res.set_header("Location", "/api/glass-catalogs/" + catalog->id);
             replyJson(res, 201, body);

@@ -36,7 +36,7 @@ const nAt = (nm) => {
 // R1 50, 5 mm, R2 -50 in air: 1/f = (n-1) [1/R1 - 1/R2 + (n-1) t / (n R1 R2)].
 const nd = nAt(587.5618);
 const EFL = 1 / ((nd - 1) * (1 / 50 - 1 / -50 + (nd - 1) * 5 / (nd * 50 * -50)));
-const SINGLET = "# a singlet in our own glass\n50.0 5.0 1.5807 20.0 LLAB-SELL1\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
+const SINGLET = "# a singlet in our own glass\n50.0 5.0 1.5807 20.0 LLAB-SELL1\n-50.0 10.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
 
 const message = (page) => page.$eval("#message", (m) => (m.hidden ? "" : m.textContent));
 const waitForMessage = (page, text) =>

@@ -39,7 +39,7 @@ const double kNd = sellmeierIndex(587.5618);
 
 // R1 50, thickness 5, R2 -50 in the test glass, then the stop: gap-after rows.
 const std::string kSingletInTestGlass =
-    "50.0 5.0 1.5807 20.0 LLAB-SELL1\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
+    "50.0 5.0 1.5807 20.0 LLAB-SELL1\n-50.0 10.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
 
 // The lensmaker's formula for a thick lens in air: 1/f = (n-1) [1/R1 - 1/R2 + (n-1) t / (n R1 R2)].
 double thickLensEfl(double n, double r1, double r2, double t) {
@@ -184,7 +184,7 @@ TEST_F(ServerGlassCatalogs, CatalogsAndTheLensesUsingThemSurviveARestart) {
 // An upload adds glass names: one the bundled makers have keeps the makers' glass (and says so).
 TEST_F(ServerGlassCatalogs, AnUploadNeverChangesABundledGlass) {
     auto c = server_->client();
-    const std::string lens = "50.0 5.0 1.5168 20.0 N-BK7\n-50.0 45.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
+    const std::string lens = "50.0 5.0 1.5168 20.0 N-BK7\n-50.0 10.0 1.0 20.0\n0.0 0.0 0.0 15.0\n";
     const double efl = postRaw(c, "/api/lenses?name=bk7.dat", lens).body["efl"];
     const Reply up = postCatalog(c, "fake.agf", "NM N-BK7 2 0 1.9 30 0 0 0\nCD 2.0 0.01 0 0 0 0\n");
     ASSERT_EQ(up.status, 201) << up.raw;
