@@ -69,7 +69,8 @@ protected:
 };
 
 bool listsGlass(httplib::Client& c, const std::string& name) {
-    for (const json& g : get(c, "/api/glasses").body["glasses"])
+    const Reply glasses = get(c, "/api/glasses");
+    for (const json& g : glasses.body.at("glasses"))
         if (g["name"] == name) return true;
     return false;
 }
