@@ -1,10 +1,8 @@
 // The glass catalogs uploaded to the service (Zemax .agf; docs/api.md, "Glass catalogs"): told from
 // lens files by extension or content, uploaded through the lens panel's file picker and drop zone,
 // listed by name and glass count, deleted. Their glasses join the editor's glass names at once.
-import { $, api, clearMessage, showMessage } from "./api.js";
+import { $, api, clearMessage, showMessage, uploadFile } from "./api.js";
 import { setGlassCatalog } from "./prescription-cells.js";
-
-const MAX_BYTES = 1024 * 1024;  // the service's --max-body default
 
 const glassCount = (n) => `${n} glass${n === 1 ? "" : "es"}`;
 
@@ -54,14 +52,8 @@ export async function loadGlassCatalogs() {
 
 export async function uploadGlassCatalog(file) {
   clearMessage();
-  if (file.size > MAX_BYTES) {
-    showMessage(`"${file.name}" is ${Math.round(file.size / 1024)} KiB; glass catalogs are at most 1 MiB.`);
-    return;
-  }
-  const form = new FormData();
-  form.append("file", file, file.name);
   try {
-    const catalog = await api("/api/glass-catalogs", { method: "POST", body: form });
+    const catalog = await uploadFile("/api/glass-catalogs", file, "glass catalogs");
     await Promise.all([loadGlassCatalogs(), loadGlassNames()]);
     showMessage(`Uploaded the glass catalog ${catalog.name} (${glassCount(catalog.glass_count)}).`, "info");
   } catch (e) {
