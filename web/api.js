@@ -50,6 +50,15 @@ export async function api(path, options = {}) {
   return body;
 }
 
+// Uploads a file as the multipart field "file" (the service's upload routes); `kind` names what it is
+// in the refusal ("lens tables"). Throws an Error past the service's default --max-body, 1 MiB.
+export function uploadFile(path, file, kind) {
+  if (file.size > 1024 * 1024) throw new Error(`"${file.name}" is ${Math.round(file.size / 1024)} KiB; ${kind} are at most 1 MiB`);
+  const form = new FormData();
+  form.append("file", file, file.name);
+  return api(path, { method: "POST", body: form });
+}
+
 export const postJson = (path, body) =>
   api(path, { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
 

@@ -2,7 +2,7 @@
 // no build step and no external resources: lens.js (lenses and their controls), renders.js (renders
 // and their history), viewer.js (exposure, comparison, zoom), report.js (the report build),
 // token.js (the API token field), editor.js (the live prescription editor), analysis.js (the
-// designer's analysis of the lens shown).
+// designer's analysis of the lens shown), glass-catalogs.js (uploaded glass catalogs).
 import { showMessage } from "./api.js";
 import { setUpTokenField } from "./token.js";
 import { loadLenses, setUpLensPanel } from "./lens.js";
@@ -10,6 +10,7 @@ import { followReport, setUpReport } from "./report.js";
 import { loadHistory, loadScenes, setUpRenderPanel } from "./renders.js";
 import { setUpViewer } from "./viewer.js";
 import { setUpEditor } from "./editor.js";
+import { loadGlassCatalogs } from "./glass-catalogs.js";
 
 async function start() {
   setUpTokenField();
@@ -20,7 +21,7 @@ async function start() {
   followReport();
   try {
     await setUpEditor();
-    await Promise.all([loadLenses(), loadScenes()]);
+    await Promise.all([loadLenses(), loadScenes(), loadGlassCatalogs()]);
     await loadHistory();
     document.body.dataset.ready = "true";
   } catch (e) {

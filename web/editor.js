@@ -5,7 +5,8 @@
 // answer overtaken by a newer edit is dropped. A cell whose text is not acceptable is marked with
 // the reason and the lens is not sent until it is corrected.
 import { $, api, authorizedFetch, postJson, showMessage } from "./api.js";
-import { COLUMNS, keptFeatures, needsZemax, newRow, setGlassCatalog } from "./prescription-cells.js";
+import { COLUMNS, keptFeatures, needsZemax, newRow } from "./prescription-cells.js";
+import { loadGlassNames } from "./glass-catalogs.js";
 import { UndoHistory } from "./undo-history.js";
 import { attachEditor, lensPreviewSettings, loadLenses, selectedLens, selectedLensName, showDiagramPng, showLensData } from "./lens.js";
 import { showAnalysis } from "./analysis.js";
@@ -347,7 +348,7 @@ export async function setUpEditor() {
   $("editor-revert").addEventListener("click", () => state.prescription && edit(state.prescription.rows));
   document.addEventListener("keydown", onKey);
   try {
-    setGlassCatalog((await api("/api/glasses")).glasses);
+    await loadGlassNames();
   } catch (e) {
     showMessage("The glass catalog could not be loaded; glass names are checked by the service only: " + e.message);
   }

@@ -1,9 +1,10 @@
 // The lens panel: the lens list and uploads, the selected lens's data and diagram, and its controls
 // driven like the course's lens viewer (↑/↓ f-number by 0.1, Shift+↑/↓ a full stop, m the diagram
 // mode, ←/→ the focus). Out-of-range f-numbers are refused with the lens's range, never clamped.
-import { $, api, authorizedFetch, clearMessage, fixed, showMessage } from "./api.js";
+import { $, api, authorizedFetch, clearMessage, fixed, showMessage, uploadFile } from "./api.js";
 import { analysisChoices, setUpAnalysis, showStoredAnalysis } from "./analysis.js";
 import { showGhosts } from "./ghosts.js";
+import { isGlassCatalogFile, uploadGlassCatalog } from "./glass-catalogs.js";
 
 const state = {
   lenses: [],
@@ -47,17 +48,17 @@ export async function loadLenses(selectId) {
   if (wanted) await selectLens(wanted);
 }
 
+// A lens file, or a glass catalog (glass-catalogs.js) dropped or chosen in the same place.
+async function uploadChosenFile(file) {
+  if (!file) return;
+  if (await isGlassCatalogFile(file)) await uploadGlassCatalog(file);
+  else await uploadLens(file);
+}
+
 async function uploadLens(file) {
   clearMessage();
-  if (!file) return;
-  if (file.size > 1024 * 1024) {
-    showMessage(`"${file.name}" is ${Math.round(file.size / 1024)} KiB; lens tables are at most 1 MiB.`);
-    return;
-  }
-  const form = new FormData();
-  form.append("file", file, file.name);
   try {
-    const lens = await api("/api/lenses", { method: "POST", body: form });
+    const lens = await uploadFile("/api/lenses", file, "lens tables");
     await loadLenses(lens.id);
     showMessage(`Uploaded "${lens.name}" as ${lens.id}.`, "info");
   } catch (e) {
@@ -67,11 +68,11 @@ async function uploadLens(file) {
 
 function setUpUpload() {
   const input = $("lens-file");
-  input.addEventListener("change", () => { uploadLens(input.files[0]); input.value = ""; });
+  input.addEventListener("change", () => { uploadChosenFile(input.files[0]); input.value = ""; });
   const zone = $("drop-zone");
   for (const name of ["dragenter", "dragover"]) zone.addEventListener(name, (e) => { e.preventDefault(); zone.classList.add("dragging"); });
   for (const name of ["dragleave", "drop"]) zone.addEventListener(name, (e) => { e.preventDefault(); zone.classList.remove("dragging"); });
-  zone.addEventListener("drop", (e) => uploadLens(e.dataTransfer.files[0]));
+  zone.addEventListener("drop", (e) => uploadChosenFile(e.dataTransfer.files[0]));
 }
 
 // ---- the f-number ------------------------------------------------------------------------------

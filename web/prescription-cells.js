@@ -11,9 +11,11 @@ const ASPHERIC_TERMS = 8;
 const glasses = new Map();
 const glassKey = (name) => name.toUpperCase().replace(/[\s_-]/g, "");
 
+// The list is in the service's search order: a name's first glass is the one the service takes.
 export function setGlassCatalog(list) {
+  glasses.clear();
   for (const g of list) {
-    glasses.set(glassKey(g.name), g);
+    if (!glasses.has(glassKey(g.name))) glasses.set(glassKey(g.name), g);
     const dash = g.name.indexOf("-");
     if (dash > 0 && !glasses.has(glassKey(g.name.slice(dash + 1)))) glasses.set(glassKey(g.name.slice(dash + 1)), g);
   }

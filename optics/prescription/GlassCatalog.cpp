@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <tuple>
+#include <unordered_set>
 #include <utility>
 
 #include "prescription/GlassCatalogText.h"
@@ -143,10 +144,11 @@ const Catalog& catalog() {
     return parsed;
 }
 
-// Catalogs loaded at run time (AGF files), in load order: searched before the bundled makers.
+// Catalogs loaded at run time (AGF files), in load order.
 struct LoadedCatalog {
     std::string name;
     Catalog glasses;
+    CatalogPrecedence precedence = CatalogPrecedence::BeforeBundled;
 };
 struct LoadedCatalogs {
     std::shared_mutex mutex;
@@ -157,22 +159,35 @@ LoadedCatalogs& loaded() {
     return l;
 }
 
+std::vector<LoadedCatalog>::iterator loadedNamed(std::vector<LoadedCatalog>& catalogs, const std::string& name) {
+    const std::string key = nameKey(name);
+    return std::find_if(catalogs.begin(), catalogs.end(), [&](const LoadedCatalog& l) { return nameKey(l.name) == key; });
+}
+
 // Where one glass comes from in a search: a loaded catalog or a bundled maker, and its glasses.
 struct Source {
     std::string name;
     const Catalog* glasses = nullptr;
     bool bundled = false;
     std::size_t maker = 0;  // bundled: index in kMakers
+    bool preferable = true;  // a GCAT line may move it forward
 };
 
 // Every source in search order: preferred catalogs first (a Zemax catalog name names its maker by
 // its start: "SUMITA_AUG2011"; a loaded catalog by its whole name), then the loaded catalogs, then
-// the makers. Names of no known catalog are passed over.
+// the makers, then the catalogs loaded after them (never moved forward). Names of no known catalog
+// are passed over.
 std::vector<Source> searchOrder(const std::vector<std::string>& preferredCatalogs, const std::vector<LoadedCatalog>& user) {
     std::vector<Source> all;
-    for (const LoadedCatalog& c : user) all.push_back({c.name, &c.glasses, false, 0});
+    const auto addLoaded = [&](CatalogPrecedence precedence) {
+        for (const LoadedCatalog& c : user)
+            if (c.precedence == precedence)
+                all.push_back({c.name, &c.glasses, false, 0, precedence == CatalogPrecedence::BeforeBundled});
+    };
+    addLoaded(CatalogPrecedence::BeforeBundled);
     const Catalog& bundled = catalog();
-    for (std::size_t m = 0; m < kMakers.size(); ++m) all.push_back({std::string(kMakers[m].name), &bundled, true, m});
+    for (std::size_t m = 0; m < kMakers.size(); ++m) all.push_back({std::string(kMakers[m].name), &bundled, true, m, true});
+    addLoaded(CatalogPrecedence::AfterBundled);
     std::vector<Source> order;
     std::vector<bool> taken(all.size(), false);
     for (const std::string& wanted : preferredCatalogs) {
@@ -180,7 +195,7 @@ std::vector<Source> searchOrder(const std::vector<std::string>& preferredCatalog
         for (std::size_t i = 0; i < all.size(); ++i) {
             const std::string name = nameKey(all[i].name);
             const bool named = all[i].bundled ? key.compare(0, name.size(), name) == 0 : key == name;
-            if (named && !taken[i]) {
+            if (named && all[i].preferable && !taken[i]) {
                 taken[i] = true;
                 order.push_back(all[i]);
             }
@@ -267,9 +282,10 @@ GlassLookup findGlass(const std::string& name, const std::vector<std::string>& p
     return lookup;
 }
 
-void addGlassCatalog(const std::string& name, std::vector<Medium> glasses) {
+void addGlassCatalog(const std::string& name, std::vector<Medium> glasses, CatalogPrecedence precedence) {
     LoadedCatalog c;
     c.name = name;
+    c.precedence = precedence;
     for (Medium& glass : glasses) {
         glass.catalog = name;
         c.glasses.names.push_back(namesIn(glass, {}));
@@ -277,11 +293,57 @@ void addGlassCatalog(const std::string& name, std::vector<Medium> glasses) {
     }
     LoadedCatalogs& user = loaded();
     std::unique_lock lock(user.mutex);
-    const std::string key = nameKey(name);
-    const auto same = std::find_if(user.catalogs.begin(), user.catalogs.end(),
-                                   [&](const LoadedCatalog& l) { return nameKey(l.name) == key; });
+    const auto same = loadedNamed(user.catalogs, name);
     if (same != user.catalogs.end()) *same = std::move(c);
     else user.catalogs.push_back(std::move(c));
+}
+
+bool removeGlassCatalog(const std::string& name) {
+    LoadedCatalogs& user = loaded();
+    std::unique_lock lock(user.mutex);
+    const auto same = loadedNamed(user.catalogs, name);
+    if (same == user.catalogs.end()) return false;
+    user.catalogs.erase(same);
+    return true;
+}
+
+bool isGlassCatalogName(const std::string& name) {
+    const std::string key = nameKey(name);
+    if (std::any_of(kMakers.begin(), kMakers.end(), [&](const Maker& m) { return nameKey(m.name) == key; })) return true;
+    LoadedCatalogs& user = loaded();
+    std::shared_lock lock(user.mutex);
+    return loadedNamed(user.catalogs, name) != user.catalogs.end();
+}
+
+std::vector<Medium> loadedGlasses(CatalogPrecedence precedence) {
+    LoadedCatalogs& user = loaded();
+    std::shared_lock lock(user.mutex);
+    std::vector<Medium> glasses;
+    for (const LoadedCatalog& c : user.catalogs)
+        if (c.precedence == precedence) glasses.insert(glasses.end(), c.glasses.glasses.begin(), c.glasses.glasses.end());
+    return glasses;
+}
+
+// A lookup by a glass's own name matches an earlier source's glass by its whole name or its name
+// without the prefix; the earlier sources' names as a set answer that for every glass at once.
+std::map<std::string, std::vector<std::string>> shadowedGlassNames() {
+    LoadedCatalogs& user = loaded();
+    std::shared_lock lock(user.mutex);
+    std::map<std::string, std::vector<std::string>> shadowed;
+    std::unordered_set<std::string> earlier;
+    for (const Source& source : searchOrder({}, user.catalogs)) {
+        if (!source.bundled) {
+            std::vector<std::string>& names = shadowed[source.name];
+            forEachGlass(source, [&](const Medium& glass, const GlassNames& n) {
+                if (earlier.count(n.key)) names.push_back(glass.name);
+            });
+        }
+        forEachGlass(source, [&](const Medium&, const GlassNames& n) {
+            earlier.insert(n.key);
+            if (!n.base.empty()) earlier.insert(n.base);
+        });
+    }
+    return shadowed;
 }
 
 void clearLoadedGlassCatalogs() {

@@ -127,6 +127,7 @@ GlassCatalogFile parseGlassCatalogFile(const std::string& bytes, const std::stri
             glass.vd = r.number(f, 5, lineNo, "Vd");
             if (!(glass.nd >= 1)) r.fail(lineNo, "nd " + f[4] + " of glass " + f[1] + " is below 1");
             catalog.glasses.push_back(glass);
+            catalog.formulaNumbers.push_back(formula);
             nameLine = lineNo;
             haveCoefficients = false;
         } else if (key == "CD" || key == "LD") {

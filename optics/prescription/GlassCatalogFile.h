@@ -12,6 +12,7 @@ namespace lenslab {
 struct GlassCatalogFile {
     std::string name;            // the catalog's name: the file's stem in upper case ("SCHOTT")
     std::vector<Medium> glasses;
+    std::vector<int> formulaNumbers;  // each glass's Zemax formula number (1 to 13), parallel to glasses
 };
 
 // Parses an AGF file (ASCII, UTF-8 or UTF-16 with a byte order mark). Every one of Zemax's 13

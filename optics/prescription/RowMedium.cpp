@@ -46,7 +46,7 @@ const GlassSubstitute* substituteFor(const LensTable& table, const std::string& 
                                                      std::to_string(kMaxGlassNameLength));
     std::string msg = "unknown glass '" + r.glass + "' (searched " + joined(found.searched) + ")";
     if (!found.suggestions.empty()) msg += "; nearest: " + joined(found.suggestions);
-    msg += "; give its nd and Vd instead to use a model glass, load its maker's catalog (--glass-catalog FILE.agf), "
+    msg += "; give its nd and Vd instead to use a model glass, load its maker's catalog (an .agf file: --glass-catalog, or uploaded to the service), "
            "or name a substitute in a .smx file beside the prescription";
     throw LensTableError(table.name, r.line, msg);
 }

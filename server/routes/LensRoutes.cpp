@@ -7,6 +7,7 @@
 #include "core/Identifiers.h"
 #include "LensJson.h"
 #include "core/QueryParameters.h"
+#include "core/UploadedFile.h"
 #include "routes/ServiceParts.h"
 
 namespace lenslab {
@@ -57,21 +58,16 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
     });
 
     server.Post("/api/lenses", [&parts](const httplib::Request& req, httplib::Response& res) {
-        std::string name = queryText(req, "name").value_or("upload.dat"), text = req.body;
-        if (req.is_multipart_form_data()) {
-            if (!req.has_file("file")) throw HttpError(400, "the multipart upload needs a field named 'file'");
-            const auto file = req.get_file_value("file");
-            text = file.content;
-            if (!file.filename.empty()) name = file.filename;
-        }
-        if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw HttpError(400, "the lens table is empty");
+        const UploadedFile file = uploadedFile(req, "upload.dat");
+        if (file.text.find_first_not_of(" \t\r\n") == std::string::npos) throw HttpError(400, "the lens table is empty");
         parts.quota.checkRoomForWrite();
         const std::optional<TableLayout> layout = layoutParameter(req);
         const auto admission = parts.work.admit(clientOf(req));
         try {
             // Parsing and describing a table of up to --max-body bytes is heavy work.
             const auto [lens, body] = parts.work.run([&] {
-                const auto lens = parts.lenses.add(name, text, layout);
+                const auto catalogsKept = parts.glassCatalogs.holdCatalogs();
+                const auto lens = parts.lenses.add(file.name, file.text, layout);
                 return std::make_pair(lens, lensDetailJson(*lens, LensSettings{}));
             });
             res.set_header("Location", "/api/lenses/" + lens->id);

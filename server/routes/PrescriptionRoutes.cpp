@@ -156,7 +156,10 @@ void preview(ServiceParts& parts, const httplib::Request& req, httplib::Response
         const DiagramOptions drawing = previewDiagramOptions(body, settings);
         const DesignAnalysisInputs inputs = previewAnalysisInputs(body, settings);
         const auto answer = parts.work.cachedOrComputed(parts.analyses, "preview|" + contentDigest(req.body), clientOf(req),
-                                                        [&] { return textBytes(previewJson(table, drawing, inputs)); });
+                                                        [&] {
+                                                            const auto catalogsKept = parts.glassCatalogs.holdCatalogs();
+                                                            return textBytes(previewJson(table, drawing, inputs));
+                                                        });
         res.status = 200;
         res.set_content(reinterpret_cast<const char*>(answer->data()), answer->size(), "application/json");
     } catch (const LensTableError& e) {

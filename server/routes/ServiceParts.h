@@ -5,6 +5,7 @@
 #include "storage/DataFolderQuota.h"
 #include "storage/ResultCache.h"
 #include "jobs/JobQueue.h"
+#include "storage/GlassCatalogStore.h"
 #include "storage/LensStore.h"
 #include "jobs/RenderSettingsChecks.h"
 #include "jobs/ReportJob.h"
@@ -17,6 +18,7 @@ namespace lenslab {
 struct ServiceParts {
     const ServiceConfig& config;
     LensStore& lenses;
+    GlassCatalogStore& glassCatalogs;  // uploaded .agf files, their glasses in the lookup
     const SceneCatalog& scenes;
     RenderSettingsChecks& renderChecks;  // render requests against their scene's camera and lens
     ResultCache& diagrams;   // PNGs by lens id and drawing
@@ -39,6 +41,7 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts);
 void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts);
 void addPrescriptionRoutes(httplib::Server& server, ServiceParts& parts);  // the live editor
 void addGlassRoutes(httplib::Server& server, ServiceParts& parts);
+void addGlassCatalogRoutes(httplib::Server& server, ServiceParts& parts);
 void addDiagramRoutes(httplib::Server& server, ServiceParts& parts);
 void addRenderRoutes(httplib::Server& server, ServiceParts& parts);
 void addReportRoutes(httplib::Server& server, ServiceParts& parts);

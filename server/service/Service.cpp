@@ -57,6 +57,7 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
       accessLog_(config_.accessLogPath),
       lock_(config_.dataDir),
       database_(databasePath(config_)),
+      glassCatalogs_((fs::path(config_.dataDir) / "glass-catalogs").string(), database_),
       lenses_(config_.lensesDir, (fs::path(config_.dataDir) / "lenses").string(), database_, config_.maxUploadedLenses),
       scenes_(config_.scenesDir),
       diagrams_(config_.diagramCacheBytes),
@@ -67,7 +68,7 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
       jobs_(jobStore_, *renderer_, config_.limits, (fs::path(config_.dataDir) / "renders").string()),
       report_(work_),
       quota_(config_.dataDir, dataQuota(config_), [this] { collectFinishedRenders(); }),
-      parts_{config_, lenses_, scenes_, renderChecks_, diagrams_, analyses_, work_, jobs_, report_, quota_, secondsSinceEpoch()},
+      parts_{config_, lenses_, glassCatalogs_, scenes_, renderChecks_, diagrams_, analyses_, work_, jobs_, report_, quota_, secondsSinceEpoch()},
       http_(config_, accessLog_) {
     recoverJobs();
     jobs_.setAfterJob([this] { collectFinishedRenders(); });
@@ -76,6 +77,7 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
     addAnalysisRoutes(http_.routes(), parts_);
     addPrescriptionRoutes(http_.routes(), parts_);
     addGlassRoutes(http_.routes(), parts_);
+    addGlassCatalogRoutes(http_.routes(), parts_);
     addDiagramRoutes(http_.routes(), parts_);
     addRenderRoutes(http_.routes(), parts_);
     addReportRoutes(http_.routes(), parts_);

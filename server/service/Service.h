@@ -41,6 +41,7 @@ private:
     AccessLog accessLog_;
     DataFolderLock lock_;  // before anything touches the folder
     Database database_;
+    GlassCatalogStore glassCatalogs_;  // before any lens is read: their glasses may come from these
     LensStore lenses_;
     SceneCatalog scenes_;
     RenderSettingsChecks renderChecks_;

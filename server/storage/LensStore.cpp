@@ -87,7 +87,7 @@ std::string printableText(const std::string& text) {
 
 }  // namespace
 
-std::string uploadDisplayName(const std::string& clientName) {
+std::string uploadDisplayName(const std::string& clientName, const std::string& fallback) {
     const std::size_t slash = clientName.find_last_of("/\\");
     const std::string base = slash == std::string::npos ? clientName : clientName.substr(slash + 1);
     std::string name;
@@ -108,7 +108,7 @@ std::string uploadDisplayName(const std::string& clientName) {
         ++characters;
     }
     name.erase(0, name.find_first_not_of(". "));
-    return name.empty() ? "upload.dat" : name;
+    return name.empty() ? fallback : name;
 }
 
 // An entry registered at start (or added); its lens is described once, lazily.
@@ -244,6 +244,18 @@ std::shared_ptr<LensStore::Entry> LensStore::entryOf(const std::string& id) cons
 std::shared_ptr<const StoredLens> LensStore::find(const std::string& id) const {
     const auto entry = entryOf(id);
     return entry ? described(*entry) : nullptr;
+}
+
+std::vector<std::string> LensStore::lensesWhere(const std::function<bool(const StoredLens&)>& test) const {
+    std::vector<std::shared_ptr<Entry>> entries;
+    {
+        std::shared_lock<std::shared_mutex> lock(mutex_);
+        entries = entries_;
+    }
+    std::vector<std::string> ids;
+    for (const auto& entry : entries)
+        if (const auto lens = described(*entry); lens && test(*lens)) ids.push_back(lens->id);
+    return ids;
 }
 
 std::shared_ptr<const StoredLens> LensStore::add(const std::string& uploadName, const std::string& text,

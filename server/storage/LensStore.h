@@ -3,6 +3,7 @@
 // uploaded ones (stored under DATA/lenses/<id>.dat, listed in the database, id chosen by the
 // service; the upload's own name is only shown, never used as a path).
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -66,6 +67,9 @@ public:
     std::shared_ptr<const StoredLens> add(const std::string& uploadName, const std::string& text,
                                           std::optional<TableLayout> layout);
 
+    // The ids of the lenses for which `test` is true, every upload described first if it was not yet.
+    std::vector<std::string> lensesWhere(const std::function<bool(const StoredLens&)>& test) const;
+
     enum class Removal { Removed, NotFound, ReadOnly };
     Removal remove(const std::string& id);
 
@@ -86,7 +90,8 @@ private:
     std::thread describer_;
 };
 
-// The name shown for an upload: its last path component, limited to a safe alphabet and length.
-std::string uploadDisplayName(const std::string& clientName);
+// The name shown for an upload: its last path component, limited to a safe alphabet and length;
+// `fallback` when nothing is left.
+std::string uploadDisplayName(const std::string& clientName, const std::string& fallback = "upload.dat");
 
 }  // namespace lenslab

@@ -144,6 +144,38 @@ TEST(GlassCatalogFile, LoadedCatalogsAreSearchedFirst) {
     EXPECT_FALSE(findGlass("SPECIAL-1").glass);
 }
 
+// A catalog added after the bundled makers (the service's uploads) only adds names: a name the
+// makers or an earlier catalog have keeps its glass, a GCAT line naming it does not move it forward,
+// and it can be removed by name.
+TEST(GlassCatalogFile, CatalogsAddedAfterTheMakersOnlyAddNames) {
+    Medium mine = constantIndex(1.7);
+    mine.name = "N-BK7";
+    Medium special = constantIndex(1.65);
+    special.name = "SPECIAL-1";
+    addGlassCatalog("UPLOADED", {mine, special}, CatalogPrecedence::AfterBundled);
+    Medium later = constantIndex(1.9);
+    later.name = "SPECIAL-1";
+    addGlassCatalog("LATER", {later}, CatalogPrecedence::AfterBundled);
+    EXPECT_EQ(findGlass("N-BK7").glass->catalog, "SCHOTT");
+    EXPECT_EQ(findGlass("N-BK7", {"UPLOADED"}).glass->catalog, "SCHOTT");
+    EXPECT_EQ(findGlass("SPECIAL-1").glass->nd, 1.65);
+    EXPECT_EQ(findGlass("SPECIAL-1", {"LATER"}).glass->nd, 1.65);
+    EXPECT_EQ(findGlass("N-BK7").searched.back(), "LATER");
+    EXPECT_TRUE(isGlassCatalogName("uploaded"));
+    EXPECT_TRUE(isGlassCatalogName("Schott"));
+    EXPECT_FALSE(isGlassCatalogName("NOSUCH"));
+    EXPECT_EQ(loadedGlasses(CatalogPrecedence::AfterBundled).size(), 3u);
+    EXPECT_TRUE(loadedGlasses(CatalogPrecedence::BeforeBundled).empty());
+    const auto shadowed = shadowedGlassNames();
+    EXPECT_EQ(shadowed.at("UPLOADED"), (std::vector<std::string>{"N-BK7"}));
+    EXPECT_EQ(shadowed.at("LATER"), (std::vector<std::string>{"SPECIAL-1"}));
+    EXPECT_TRUE(removeGlassCatalog("uploaded"));
+    EXPECT_FALSE(removeGlassCatalog("UPLOADED"));
+    EXPECT_EQ(findGlass("SPECIAL-1").glass->nd, 1.9);
+    clearLoadedGlassCatalogs();
+    EXPECT_FALSE(findGlass("SPECIAL-1").glass);
+}
+
 // A moulded variant no catalog has is read as its base glass, with a warning naming both.
 TEST(GlassCatalogFile, MouldedVariantFallsBackToItsBaseGlassWithAWarning) {
     LensTable t;
