@@ -129,7 +129,7 @@ TEST_F(ServerAccess, RequestsNamingAnotherHostAreRefused) {
     ASSERT_TRUE(read);
     EXPECT_EQ(read->status, 421);
 
-    for (const std::string host : {"127.0.0.1:" + port, "localhost:" + port, "[::1]:" + port, std::string("lab.example")}) {
+    for (const std::string& host : {"127.0.0.1:" + port, "localhost:" + port, "[::1]:" + port, std::string("lab.example")}) {
         const auto ok = c.Get("/api/health", {{"Host", host}});
         ASSERT_TRUE(ok);
         EXPECT_EQ(ok->status, 200) << host;

@@ -333,6 +333,22 @@ TEST_F(ServerApi, BuildsTheReportAsAJobWithProgress) {
     EXPECT_EQ(page->body.find("telephoto.250mm"), std::string::npos);  // only the lenses asked for
 }
 
+// A tilt-shift render is taken; what a moved lens cannot do is refused before it is queued.
+TEST_F(ServerApi, TiltAndShiftRenderAndRefuseWhatAMovedLensCannotDo) {
+    auto c = client();
+    const Reply tilted = postJson(c, "/api/renders", {{"scene", "depth-of-field"}, {"lens", "dgauss.50mm"}, {"tilt", 4},
+                                                      {"shift", {2, 3}}, {"spp", 1}, {"width", 32}, {"height", 24}});
+    EXPECT_EQ(tilted.status, 202) << tilted.raw;
+    EXPECT_EQ(tilted.body["request"]["tilt"], 4) << tilted.raw;
+    const Reply spectral = postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"tilt", 4}, {"spectral", true}});
+    EXPECT_EQ(spectral.status, 422) << spectral.raw;
+    EXPECT_NE(spectral.body["error"].get<std::string>().find("tilted or shifted lens renders in RGB"), std::string::npos) << spectral.raw;
+    const Reply flare = postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"swing", 2}, {"ghosts", "all"}});
+    EXPECT_EQ(flare.status, 422) << flare.raw;
+    EXPECT_NE(flare.body["error"].get<std::string>().find("lens flare is not modelled"), std::string::npos) << flare.raw;
+    EXPECT_EQ(postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"tilt", 60}}).status, 400);
+}
+
 // Lens settings are checked once, by optics, and the error names the field it came from.
 TEST_F(ServerApi, RenderSettingsOutsideTheLensNameTheirField) {
     auto c = client();

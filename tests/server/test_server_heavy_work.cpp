@@ -118,7 +118,7 @@ TEST(ServerHeavyWork, ReadsThatSpendCpuNeedTheToken) {
         EXPECT_EQ(anonymous.status, 401) << path;
         EXPECT_EQ(anonymous.header("WWW-Authenticate"), "Bearer") << path;
     }
-    for (const std::string& path : {"/api/health", "/api/lenses", "/api/lenses/dgauss.50mm", "/api/lenses/dgauss.50mm/prescription"})
+    for (const char* path : {"/api/health", "/api/lenses", "/api/lenses/dgauss.50mm", "/api/lenses/dgauss.50mm/prescription"})
         EXPECT_EQ(get(c, path).status, 200) << path;
     c.set_bearer_token_auth(token);
     EXPECT_EQ(get(c, kLightAnalysis).status, 200);

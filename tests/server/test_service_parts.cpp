@@ -45,8 +45,10 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
     EXPECT_FALSE(parseRenderRequest(json{{"spectral", nullptr}}, limits, "s").spectral.has_value());
     const json full = {{"scene", "s"}, {"lens", "l"}, {"fstop", 2.8}, {"focaldistance", 1500}, {"filmdiagonal", 43.3},
                        {"mode", "thick"}, {"spectral", true}, {"spp", 4}, {"width", 64}, {"height", 48},
-                       {"ghosts", "12"}, {"ghost_model", "paraxial"}};
+                       {"ghosts", "12"}, {"ghost_model", "paraxial"}, {"tilt", 6}, {"swing", -2.5},
+                       {"shift", {3, -4}}};
     EXPECT_EQ(renderRequestJson(parseRenderRequest(full, limits, "")), full);
+    EXPECT_TRUE(renderRequestJson(r)["shift"].is_null());  // the scene's own
     EXPECT_FALSE(r.ghosts.has_value());  // the scene's own
     EXPECT_EQ(parseRenderRequest(json{{"ghosts", 7}}, limits, "s").ghosts, "7");
     EXPECT_EQ(parseRenderRequest(json{{"ghosts", "auto"}}, limits, "s").ghosts, "auto");
@@ -55,7 +57,8 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
                             json{{"filmdiagonal", "big"}}, json{{"mode", "fast"}}, json{{"scene", "../x"}},
                             json{{"lens", ""}}, json{{"colour", 1}}, json{{"spp", 1.5}}, json{{"spectral", "on"}},
                             json{{"ghosts", "some"}}, json{{"ghosts", 0}}, json{{"ghosts", 1001}}, json{{"ghosts", true}},
-                            json{{"ghost_model", "fast"}}}) {
+                            json{{"ghost_model", "fast"}}, json{{"tilt", 46}}, json{{"swing", "left"}},
+                            json{{"shift", {1}}}, json{{"shift", {1, 101}}}, json{{"shift", "up"}}, json{{"shift", {1, "a"}}}}) {
         try {
             parseRenderRequest(bad, limits, "s");
             ADD_FAILURE() << "accepted " << bad.dump();
