@@ -32,6 +32,11 @@ function renderRequest(mode) {
     request.ghosts = $("render-ghosts").value;
     request.ghost_model = $("render-ghost-model").value;
   }
+  if ($("render-tilt").value) request.tilt = Number($("render-tilt").value);
+  if ($("render-swing").value) request.swing = Number($("render-swing").value);
+  // "x,y" as typed; anything else goes to the service as written, which refuses it by name.
+  const shift = $("render-shift").value.trim();
+  if (shift) request.shift = shift.split(",").map((v) => (v.trim() === "" || isNaN(Number(v)) ? v.trim() : Number(v)));
   return request;
 }
 
@@ -40,7 +45,9 @@ function describeRequest(r) {
   const focus = r.focaldistance ? `focus ${Math.round(r.focaldistance)} mm` : "scene focus";
   const film = r.spectral === true ? " · spectral" : r.spectral === false ? " · RGB" : "";
   const ghosts = r.ghosts && r.ghosts !== "off" ? ` · ghosts ${r.ghosts} (${r.ghost_model})` : "";
-  return `${r.lens} · ${r.scene} · ${fstop} · ${focus} · ${r.width}×${r.height} · ${r.spp} spp${film}${ghosts}`;
+  const turns = [r.tilt ? `tilt ${r.tilt}°` : "", r.swing ? `swing ${r.swing}°` : "", r.shift ? `shift ${r.shift.join(", ")} mm` : ""];
+  const mount = turns.filter(Boolean).map((t) => ` · ${t}`).join("");
+  return `${r.lens} · ${r.scene} · ${fstop} · ${focus} · ${r.width}×${r.height} · ${r.spp} spp${film}${ghosts}${mount}`;
 }
 
 // ---- the viewer's renders ------------------------------------------------------------------------

@@ -2,7 +2,8 @@
 // surface's coating and reflectance; the ghost panel lists dgauss.50mm's 45 ghosts brightest first,
 // as the API ranks them, and plots them; a coating edited to bare glass and saved raises that
 // surface's reflectance and its ghosts' intensity; a render of the sun scene with all ghosts runs
-// to the end and its statistics count 45 ghost paths. Screenshot: tests/browser/artifacts/ghosts.png.
+// to the end and its statistics count 45 ghost paths; a tilted, shifted render (the lens moved on its
+// mount) runs with its request in the history. Screenshot: tests/browser/artifacts/ghosts.png.
 // usage: node ghosts.test.mjs LENSLAB_BINARY SOURCE_DIR
 import { mkdirSync, mkdtempSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -87,12 +88,35 @@ async function checkFlareRender(page, base) {
         `the render modelled ${job.stats.flare_paths} ghost paths (${job.request.ghost_model})`);
 }
 
+// The render form's tilt and shift reach the job and its history; a shift the service refuses is
+// shown with the service's words.
+async function checkTiltShiftRender(page, base) {
+  await page.selectOption("#render-ghosts", "off");
+  await page.selectOption("#scene", "depth-of-field");
+  await page.fill("#render-tilt", "4");
+  await page.fill("#render-shift", "2,1");
+  const finished = await page.$$eval('.history-item[data-state="done"]', (items) => items.length);
+  await page.click("#render-button");
+  await page.waitForFunction((n) => document.querySelectorAll('.history-item[data-state="done"]').length > n, finished,
+                             { timeout: 120000 });
+  const job = (await (await page.request.get(`${base}api/renders`)).json()).renders[0];
+  check(job.request.tilt === 4 && job.request.swing === null && job.request.shift.join() === "2,1" && job.state === "done",
+        `the render was tilted and shifted as asked: ${JSON.stringify([job.request.tilt, job.request.shift, job.state])}`);
+  check((await page.textContent(".history-item")).includes("tilt 4° · shift 2, 1 mm"), "the history names the tilt and shift");
+  await page.fill("#render-shift", "2");
+  await page.click("#render-button");
+  await page.waitForSelector("#message:not(.info):not([hidden])");
+  const refusal = await page.textContent("#message");
+  check(refusal.includes("shift must be two numbers"), `a one-number shift is refused in words: "${refusal}"`);
+}
+
 async function main() {
   const { server, base, context, page } = await openPage(binary, work, { width: 1280, height: 900 });
   try {
     const before = await checkGhostPanel(page, base);
     await checkEditedCoating(page, base, before);
     await checkFlareRender(page, base);
+    await checkTiltShiftRender(page, base);
   } finally {
     await closeAll(context, server, work);
   }
