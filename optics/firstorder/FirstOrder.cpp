@@ -3,10 +3,37 @@
 #include <cmath>
 
 #include "prescription/AutomaticApertures.h"
+#include "trace/ExactTrace.h"
 #include "trace/NearAxis.h"
 #include "prescription/OpticsError.h"
 
 namespace lenslab {
+
+namespace {
+
+// Where the axis, traced from a focal point at z = focusZ toward the lens, meets the outermost
+// surface that bends light (a decentred lens's dummy surfaces beyond it only place what follows):
+// its z in the coordinates the ray starts in. A decentred or tilted lens's vertices lie off its
+// axis ray, so its focal distances are measured from these points, not from the vertices; a
+// centred lens's axis meets every surface at its vertex.
+double axisMeetsOutermostSurfaceZ(const LensSystem& lens, double focusZ, TraceDirection towardLens, double vertexZ) {
+    if (!lens.decentred) return vertexZ;
+    std::vector<Vec3> path;
+    TraceOptions o;
+    o.ignoreApertures = true;
+    o.path = &path;
+    const double dz = towardLens == TraceDirection::FilmToScene ? 1.0 : -1.0;
+    const TraceResult r = traceRay(lens, {{0, 0, focusZ}, {0, 0, dz}}, towardLens, o);
+    const int n = static_cast<int>(lens.surfaces.size());
+    // path[k + 1] is the k-th surface met: from the rear toward the film's side, from the front otherwise.
+    for (int k = 0; k + 1 < static_cast<int>(path.size()); ++k) {
+        const int i = towardLens == TraceDirection::FilmToScene ? n - 1 - k : k;
+        if (!isDummy(lens, i)) return r.surface == i && !r.ok() ? vertexZ : path[k + 1].z;
+    }
+    return vertexZ;
+}
+
+}  // namespace
 
 FirstOrder computeFirstOrder(const LensSystem& lens) {
     // No power along the axis (flat surfaces only, or terms from r^4 on): afocal at first order,
@@ -30,8 +57,8 @@ FirstOrder computeFirstOrder(const LensSystem& lens) {
     fo.zP = paraxialLimit([&](double y) { return zAtHeight(fromFilm(y), y); }, h);
     fo.efl = fo.zPPrime - fo.zFPrime;
     fo.eflFront = fo.zF - fo.zP;
-    fo.backFocalDistance = lens.rearZ() - fo.zFPrime;
-    fo.frontFocalDistance = fo.zF - lens.frontZ();
+    fo.backFocalDistance = axisMeetsOutermostSurfaceZ(lens, fo.zFPrime, TraceDirection::FilmToScene, lens.rearZ()) - fo.zFPrime;
+    fo.frontFocalDistance = fo.zF - axisMeetsOutermostSurfaceZ(lens, fo.zF, TraceDirection::SceneToFilm, lens.frontZ());
     if (!std::isfinite(fo.efl) || std::fabs(fo.efl) > 1e12)
         throw AfocalError("the lens is afocal: parallel rays leave parallel");
     return fo;

@@ -12,8 +12,10 @@ struct FirstOrder {
     double zFPrime = 0;   // rear (image-side) focal point
     double zP = 0;        // front principal plane
     double zPPrime = 0;   // rear principal plane
-    double backFocalDistance = 0;   // rear vertex to F'
-    double frontFocalDistance = 0;  // F to front vertex
+    // Rear vertex to F', and F to the front vertex; for a decentred lens, from where its axis ray
+    // meets the outermost surfaces that bend light (its vertices and dummy surfaces lie off it).
+    double backFocalDistance = 0;
+    double frontFocalDistance = 0;
 };
 
 // Throws AfocalError for an afocal system, OpticsError for one a near-axis ray cannot pass.

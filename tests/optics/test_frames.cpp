@@ -247,3 +247,23 @@ TEST(Frames, OffAxisParaboloidIsMeasuredAlongItsAxisRay) {
     EXPECT_NEAR(fo.efl, toFocus, 1e-6 * toFocus);
     EXPECT_NEAR(fo.zFPrime, r.ray.origin.z - toFocus, 1e-6 * toFocus);
 }
+
+// A decentred lens's vertices lie off its axis: its focal distances run from where the axis meets
+// its outermost surfaces that bend light, not from the dummy surfaces that only place what follows
+// (HoO-V2C18Ex46's back focal distance read 210.93 mm from a coordinate break, 208.15 mm along its
+// axis ray). Decentred dummies before and after a singlet leave the thick-lens formula's distances.
+TEST(Frames, FocalDistancesRunFromTheSurfacesOnTheAxisNotFromDummies) {
+    const double r1 = 40, r2 = -60, t = 5, n = 1.6;
+    const std::string singlet = "s 40 5 1.6,40\nsto\ns -60 30\n";
+    const LensSystem plain = buildLensSystem(parseCodeV("rdm\nso 0 1e10\n" + singlet + "si 0 0\nepd 10; wl 587.5618\n", "p.seq"));
+    const LensSystem dummies = buildLensSystem(
+        parseCodeV("rdm\nso 0 1e10\ns 0 12\nyde 2\n" + singlet + "s 0 10\nyde 3\nsi 0 0\nepd 10; wl 587.5618\n", "d.seq"));
+    ASSERT_TRUE(dummies.decentred);
+    const double f = 1 / ((n - 1) * (1 / r1 - 1 / r2 + (n - 1) * t / (n * r1 * r2)));
+    const FirstOrder a = computeFirstOrder(plain), b = computeFirstOrder(alongAxisRay(dummies));
+    EXPECT_NEAR(a.backFocalDistance, f * (1 - (n - 1) * t / (n * r1)), 1e-9 * f);
+    EXPECT_NEAR(a.frontFocalDistance, f * (1 + (n - 1) * t / (n * r2)), 1e-9 * f);
+    EXPECT_NEAR(b.efl, a.efl, 1e-9 * f);
+    EXPECT_NEAR(b.backFocalDistance, a.backFocalDistance, 1e-9 * f);
+    EXPECT_NEAR(b.frontFocalDistance, a.frontFocalDistance, 1e-9 * f);
+}

@@ -156,9 +156,9 @@ const char* kSingletBehindStop =
 // sharp edge of the same total light would lie) is measured along the diagonal; the optics
 // predicts it as the channel's average over wavelength of the chief ray's height, weighted by the
 // channel's response to a white spectrum at that wavelength.
-class LateralColour : public ::testing::TestWithParam<int> {};
+class LateralColourFringe : public ::testing::TestWithParam<int> {};
 
-TEST_P(LateralColour, FringeMatchesTheChiefRays) {
+TEST_P(LateralColourFringe, FringeMatchesTheChiefRays) {
     test::TempDir dir;
     const std::string lensFile = dir.write("singlet.dat", kSingletBehindStop);
     const int width = 2400, height = 1600;
@@ -240,6 +240,6 @@ TEST_P(LateralColour, FringeMatchesTheChiefRays) {
 }
 
 // One wavelength per sample, and several sharing each sample's scene path (docs/spectral.md).
-INSTANTIATE_TEST_SUITE_P(SpectralCamera, LateralColour, ::testing::Values(1, 2, 4, 8));
+INSTANTIATE_TEST_SUITE_P(SpectralCamera, LateralColourFringe, ::testing::Values(1, 2, 4, 8));
 
 }  // namespace lenslab

@@ -159,7 +159,7 @@ TEST_F(ReportPage, EveryLensAndSceneAppears) {
         const std::size_t begin = html_.find("<article class=\"lens\" id=\"lens-" + lens + "\">");
         ASSERT_NE(begin, std::string::npos);
         const std::string article = html_.substr(begin, html_.find("</article>", begin) - begin);
-        for (const std::string& panel : {"illumination-", "distortion-"})
+        for (const std::string panel : {"illumination-", "distortion-"})
             EXPECT_EQ(article.find("<title id=\"" + panel + lens + "-title\">") == std::string::npos, curves) << panel;
         EXPECT_EQ(article.find("distortion.svg\"") != std::string::npos, curves);
     }
