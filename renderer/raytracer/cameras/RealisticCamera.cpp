@@ -256,8 +256,9 @@ TraceResult RealisticCamera::traceShaped(const LensSystem& lens, const Ray& ray,
 
 bool RealisticCamera::finish(const Ray& leaving, double weight, CameraRay& out) const {
     // A moved lens's rays leave it in its own coordinates; camera space is the body's.
-    const Ray lensRay = !mounted_ ? leaving
-                                  : Ray{movedPoint(bodyFromLens_, leaving.origin), movedDirection(bodyFromLens_, leaving.direction)};
+    Ray moved;
+    if (mounted_) moved = {movedPoint(bodyFromLens_, leaving.origin), movedDirection(bodyFromLens_, leaving.direction)};
+    const Ray& lensRay = mounted_ ? moved : leaving;
     const double unit = 1.0 / params_.cameraUnitMm;
     const Vec3f o{float(lensRay.origin.x * unit), float(lensRay.origin.y * unit), float((lensRay.origin.z - originZ_) * unit)};
     const Vec3f dir{float(lensRay.direction.x), float(lensRay.direction.y), float(lensRay.direction.z)};
