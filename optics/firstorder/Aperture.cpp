@@ -28,7 +28,9 @@ bool conePasses(const LensSystem& lens, const FirstOrder& fo, double sinTheta, b
     return traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options).ok();
 }
 
-// Height at the stop plane of the marginal ray traced from F' through the surfaces behind the stop.
+// How far from the stop's centre, in its plane, the marginal ray traced from F' through the surfaces
+// behind the stop crosses it (in the stop's own frame: a decentred stop's centre is off the axis
+// of the coordinates arriving at it).
 double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta, bool stopOnly, bool* blocked) {
     TraceOptions options;
     options.begin = lens.stopIndex + 1;
@@ -36,7 +38,9 @@ double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta,
     options.stopApertureOnly = stopOnly;
     const TraceResult r = traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options);
     *blocked = !r.ok();
-    return std::fabs(heightAtZ(r.ray, lens.stop().z));
+    const Ray inStop = movedRay(motionInto(lens.stop(), TraceDirection::FilmToScene), r.ray);
+    const double t = (lens.stop().z - inStop.origin.z) / inStop.direction.z;
+    return std::hypot(inStop.origin.x + t * inStop.direction.x, inStop.origin.y + t * inStop.direction.y);
 }
 
 // The narrowest f-number at which some light still passes on axis. A central obscuration (a reflex

@@ -68,6 +68,21 @@ std::optional<Ray> axisRay(const LensSystem& lens) {
     return std::nullopt;
 }
 
+std::optional<AxisAtStop> axisRayAtStop(const LensSystem& lens) {
+    const std::optional<Ray> in = axisRay(lens);
+    if (!in) return std::nullopt;
+    TraceOptions options;
+    options.ignoreApertures = true;
+    options.end = lens.stopIndex;
+    const TraceResult before = traceRay(lens, *in, TraceDirection::SceneToFilm, options);
+    options.end = lens.stopIndex + 1;
+    const TraceResult after = traceRay(lens, *in, TraceDirection::SceneToFilm, options);
+    if (!before.ok() || !after.ok()) return std::nullopt;
+    const Surface& stop = lens.stop();
+    return AxisAtStop{movedRay(motionInto(stop, TraceDirection::SceneToFilm), before.ray).direction,
+                      movedRay(motionOutOf(stop, TraceDirection::SceneToFilm).inverse(), after.ray).direction};
+}
+
 LensSystem alongAxisRay(const LensSystem& lens) {
     if (!lens.hasMovedSurfaces() && std::none_of(lens.surfaces.begin(), lens.surfaces.end(),
                                                  [](const Surface& s) { return s.clearShape.has_value(); }))

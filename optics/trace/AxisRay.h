@@ -13,6 +13,14 @@ namespace lenslab {
 // otherwise. nullopt when no such ray passes (apertures ignored).
 std::optional<Ray> axisRay(const LensSystem& lens);
 
+// The axis ray at the stop, in the stop's own frame: its directions arriving and (refracted or
+// reflected by the stop's surface) leaving toward the film; for a decentred or tilted stop these
+// are not the stop's normal. nullopt when no axis ray passes.
+struct AxisAtStop {
+    Vec3 arriving, leaving;
+};
+std::optional<AxisAtStop> axisRayAtStop(const LensSystem& lens);
+
 // The lens with its object space shifted across z so that the axis ray enters on the z axis, and its
 // image space turned about the last vertex and shifted so that the ray leaves along -z on the axis.
 // The last vertex keeps its z. A lens whose axis ray is the z axis already comes back unchanged, and

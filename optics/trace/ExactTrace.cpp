@@ -90,6 +90,12 @@ RigidMotion motionOutOf(const Surface& s, TraceDirection direction) {
     return direction == TraceDirection::SceneToFilm ? s.after : s.before.inverse();
 }
 
+Ray movedRay(const RigidMotion& m, const Ray& r) {
+    Ray out = r;
+    move(m, out.origin.x, out.origin.y, out.origin.z, out.direction.x, out.direction.y, out.direction.z);
+    return out;
+}
+
 template <class Scalar>
 TraceResult traceRayT(const LensSystem& lens, const Ray& ray, TraceDirection direction,
                       const TraceOptions& options) {

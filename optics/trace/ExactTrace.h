@@ -44,6 +44,8 @@ GeneralSurface<T> generalSurface(const LensSystem& lens, const Surface& s, const
 // in `direction`: into the surface's frame before it is met, and on to the next surface's after.
 RigidMotion motionInto(const Surface& s, TraceDirection direction);
 RigidMotion motionOutOf(const Surface& s, TraceDirection direction);
+// The ray in the coordinates the motion m takes its own to (origin and direction both moved).
+Ray movedRay(const RigidMotion& m, const Ray& r);
 
 // Traces `ray` (lens space, unit direction) through the surfaces. SceneToFilm rays travel toward -z
 // and meet the surfaces front to rear; FilmToScene rays travel toward +z, rear to front. Through a
