@@ -899,10 +899,13 @@ def compare(path, binary, paraxial_flag, with_spots=True):
             try:
                 aimer = Aimer(opm, stop, 0.0, nm)
                 ax = axis_ray_first_order(aimer)
-                first = {'efl': ax['efl_y'], 'efl_x': ax['efl_x'], 'bfl': vertex_bfl(aimer, ax, idx[-1]),
-                         'bfl_hit': ax['bfl_y'], 'enp_pos': None,
-                         'enp_d': paraxial_entrance_d(aimer, stop_r, (1, 0)),
-                         'enp_d_y': paraxial_entrance_d(aimer, stop_r, (0, 1)),
+                # compared as lenslab defines them: the BFL from the axis ray's point on the last
+                # surface that bends the light, the entrance pupil in the meridional (y) section
+                # (every tilt in these files is about x); the others in the notes
+                first = {'efl': ax['efl_y'], 'efl_x': ax['efl_x'], 'bfl': ax['bfl_y'],
+                         'bfl_vertex': vertex_bfl(aimer, ax, idx[-1]), 'enp_pos': None,
+                         'enp_d': paraxial_entrance_d(aimer, stop_r, (0, 1)),
+                         'enp_d_x': paraxial_entrance_d(aimer, stop_r, (1, 0)),
                          'exp_pos': None, 'exp_d': None, 'fno': None, 'fstop': None}
             except (RuntimeError, ro.TraceError, np.linalg.LinAlgError) as e:
                 row['error'] = f'ray-optics: no axis ray ({e})'
@@ -1178,9 +1181,9 @@ def print_tables(header, results, spots):
             if 'ro_paraxial' in row:
                 p = row['ro_paraxial']
                 print(f'- {base} {row["line"]}: along the axis ray, ray-optics EFL y {fmt(row["ro"]["efl"], 10)}, '
-                      f'x {fmt(row["ro"].get("efl_x"), 10)}, BFL {fmt(row["ro"]["bfl"], 10)} from the foot of the last '
-                      f'vertex, {fmt(row["ro"].get("bfl_hit"), 10)} from its point on the last surface that bends the light, '
-                      f'entrance pupil diameter x {fmt(row["ro"].get("enp_d"), 10)}, y {fmt(row["ro"].get("enp_d_y"), 10)}; '
+                      f'x {fmt(row["ro"].get("efl_x"), 10)}, BFL {fmt(row["ro"]["bfl"], 10)} from its point on the last '
+                      f'surface that bends the light, {fmt(row["ro"].get("bfl_vertex"), 10)} from the foot of the last vertex, '
+                      f'entrance pupil diameter y {fmt(row["ro"].get("enp_d"), 10)}, x {fmt(row["ro"].get("enp_d_x"), 10)}; '
                       f'its paraxial (tilts left out) EFL {fmt(p["efl"], 10)}, BFL {fmt(p["bfl"], 10)}')
             if 'error' in row:
                 print(f'- {base} {row["line"]}: {row["error"]}')

@@ -11,8 +11,14 @@ namespace lenslab {
 
 namespace {
 
+// A flat surface between equal media (a dummy, a baffle's plane) turns no ray; every other does.
+bool bendsLight(const LensSystem& lens, int i) {
+    const Surface& s = lens.surfaces[i];
+    return s.mirror || s.curvature != 0 || s.isAspheric() || !s.form.isEvenAsphere() || s.indexAfter != lens.indexBefore(i);
+}
+
 // Where the axis, traced from a focal point at z = focusZ toward the lens, meets the outermost
-// surface that bends light (a decentred lens's dummy surfaces beyond it only place what follows):
+// surface that bends light (a decentred lens's dummy surfaces and baffles beyond it do not):
 // its z in the coordinates the ray starts in. A decentred or tilted lens's vertices lie off its
 // axis ray, so its focal distances are measured from these points, not from the vertices; a
 // centred lens's axis meets every surface at its vertex.
@@ -28,7 +34,7 @@ double axisMeetsOutermostSurfaceZ(const LensSystem& lens, double focusZ, TraceDi
     // path[k + 1] is the k-th surface met: from the rear toward the film's side, from the front otherwise.
     for (int k = 0; k + 1 < static_cast<int>(path.size()); ++k) {
         const int i = towardLens == TraceDirection::FilmToScene ? n - 1 - k : k;
-        if (!isDummy(lens, i)) return r.surface == i && !r.ok() ? vertexZ : path[k + 1].z;
+        if (bendsLight(lens, i)) return r.surface == i && !r.ok() ? vertexZ : path[k + 1].z;
     }
     return vertexZ;
 }
