@@ -95,13 +95,7 @@ FilmPlanePupilBounds computeFilmPlanePupilBounds(const LensSystem& lens, const F
     if (!(halfU > 0 && halfV > 0) || nodesU < 2 || nodesV < 2 || !(aimRadius > 0))
         throw OpticsError("film plane pupil bounds need a film of positive size, at least 2 x 2 nodes and an aiming radius");
     checkFilmBehindLens(lens, film, halfU, halfV);
-    FilmPlanePupilBounds b;
-    b.film = film;
-    b.aimZ = aimZ;
-    b.halfU = halfU;
-    b.halfV = halfV;
-    b.nodesU = nodesU;
-    b.nodesV = nodesV;
+    FilmPlanePupilBounds b{film, aimZ, halfU, halfV, nodesU, nodesV, {}};
     RayBatch batch;
     for (int j = 0; j < nodesV; ++j)
         for (int i = 0; i < nodesU; ++i) {
