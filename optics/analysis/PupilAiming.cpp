@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "firstorder/ChiefRay.h"
+#include "trace/AxisRay.h"
 #include "trace/ExactTrace.h"
 #include "firstorder/Pupils.h"
 
@@ -23,14 +24,12 @@ struct StopPoint {
     double x = 0, y = 0;
 };
 
-// Where the ray meets the stop surface, every aperture ignored; nullopt when it cannot get there.
+// Where the ray meets the stop surface, in the stop's own frame (a decentred stop's centre is off
+// the axis of the coordinates arriving at it), every aperture ignored; nullopt when it cannot get there.
 std::optional<StopPoint> stopPoint(const LensSystem& lens, const Ray& ray) {
-    TraceOptions options;
-    options.end = lens.stopIndex + 1;
-    options.ignoreApertures = true;
-    const TraceResult r = traceRay(lens, ray, TraceDirection::SceneToFilm, options);
-    if (!r.ok()) return std::nullopt;
-    return StopPoint{r.ray.origin.x, r.ray.origin.y};
+    const std::optional<Vec3> p = stopCrossing(lens, ray);
+    if (!p) return std::nullopt;
+    return StopPoint{p->x, p->y};
 }
 
 // Fills aim.inverseJacobian at the aim point (u, v) by differences; returns the stop point there.

@@ -23,14 +23,17 @@ struct FieldRays {
         return {{0, vertexHeight + t * sinT, zIn}, {0, -sinT, -cosT}};
     }
 
-    // Height at the stop plane after the elements in front of it; nullopt when the ray cannot get there.
+    // Height at the stop plane after the elements in front of it, in the stop's own frame (a
+    // decentred stop's centre is off the axis of the coordinates arriving at it); nullopt when the
+    // ray cannot get there.
     std::optional<double> stopHeight(double vertexHeight) const {
         TraceOptions options;
         options.end = lens.stopIndex;
         options.ignoreApertures = true;
         const TraceResult r = traceRay(lens, at(vertexHeight), TraceDirection::SceneToFilm, options);
         if (!r.ok() || !(r.ray.direction.z * lens.zDirectionAfter(lens.stopIndex - 1) > 0)) return std::nullopt;
-        return heightAtZ(r.ray, lens.stop().z);
+        const RigidMotion intoStop = motionInto(lens.stop(), TraceDirection::SceneToFilm);
+        return heightAtZ(intoStop.isIdentity() ? r.ray : movedRay(intoStop, r.ray), lens.stop().z);
     }
 };
 

@@ -7,18 +7,6 @@ namespace lenslab {
 
 namespace {
 
-// Where a ray meets the stop, in the stop's own frame (apertures ignored).
-std::optional<Vec3> stopHit(const LensSystem& lens, const Ray& ray) {
-    TraceOptions options;
-    options.end = lens.stopIndex + 1;
-    options.ignoreApertures = true;
-    const TraceResult r = traceRay(lens, ray, TraceDirection::SceneToFilm, options);
-    if (!r.ok()) return std::nullopt;
-    const auto p = motionOutOf(lens.stop(), TraceDirection::SceneToFilm).inverse().applyToPoint(
-        {r.ray.origin.x, r.ray.origin.y, r.ray.origin.z});
-    return Vec3{p[0], p[1], p[2]};
-}
-
 // The object-space ray of parameters (u, v): across the axis at the start plane for an object at
 // infinity, the direction's x and y from the axial object point otherwise.
 Ray fieldZeroRay(const LensSystem& lens, double u, double v, double zIn) {
@@ -43,6 +31,18 @@ std::array<double, 9> rotationOnto(const Vec3& d) {
 
 }  // namespace
 
+std::optional<Vec3> stopCrossing(const LensSystem& lens, const Ray& ray) {
+    TraceOptions options;
+    options.end = lens.stopIndex + 1;
+    options.ignoreApertures = true;
+    const TraceResult r = traceRay(lens, ray, TraceDirection::SceneToFilm, options);
+    if (!r.ok()) return std::nullopt;
+    const RigidMotion intoStop = motionOutOf(lens.stop(), TraceDirection::SceneToFilm).inverse();
+    if (intoStop.isIdentity()) return r.ray.origin;
+    const auto p = intoStop.applyToPoint({r.ray.origin.x, r.ray.origin.y, r.ray.origin.z});
+    return Vec3{p[0], p[1], p[2]};
+}
+
 std::optional<Ray> axisRay(const LensSystem& lens) {
     double reach = 0;
     for (const Surface& s : lens.surfaces) reach = std::max(reach, s.apertureRadius);
@@ -53,9 +53,9 @@ std::optional<Ray> axisRay(const LensSystem& lens) {
     const double step = infinite ? 1e-6 * std::max(reach, 1.0) : 1e-7;
     double u = 0, v = 0;
     for (int it = 0; it < 30; ++it) {
-        const auto h = stopHit(lens, fieldZeroRay(lens, u, v, zIn));
-        const auto hu = stopHit(lens, fieldZeroRay(lens, u + step, v, zIn));
-        const auto hv = stopHit(lens, fieldZeroRay(lens, u, v + step, zIn));
+        const auto h = stopCrossing(lens, fieldZeroRay(lens, u, v, zIn));
+        const auto hu = stopCrossing(lens, fieldZeroRay(lens, u + step, v, zIn));
+        const auto hv = stopCrossing(lens, fieldZeroRay(lens, u, v + step, zIn));
         if (!h || !hu || !hv) return std::nullopt;
         if (std::hypot(h->x, h->y) <= 1e-13 * std::max(reach, 1.0)) return fieldZeroRay(lens, u, v, zIn);
         const double a = (hu->x - h->x) / step, b = (hv->x - h->x) / step;

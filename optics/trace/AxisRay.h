@@ -8,6 +8,10 @@
 
 namespace lenslab {
 
+// Where a ray from the scene meets the stop, in the stop's own frame (its centre at (0, 0, z);
+// apertures ignored); nullopt when it cannot get there.
+std::optional<Vec3> stopCrossing(const LensSystem& lens, const Ray& ray);
+
 // The zero field's ray through the stop's centre (in the stop's own frame), in object-space
 // coordinates: parallel to the z axis for an object at infinity, from the axial object point
 // otherwise. nullopt when no such ray passes (apertures ignored).
