@@ -38,6 +38,7 @@ double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta,
     options.stopApertureOnly = stopOnly;
     const TraceResult r = traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options);
     *blocked = !r.ok();
+    if (lens.stop().after.isIdentity()) return std::fabs(heightAtZ(r.ray, lens.stop().z));
     const Ray inStop = movedRay(motionInto(lens.stop(), TraceDirection::FilmToScene), r.ray);
     const double t = (lens.stop().z - inStop.origin.z) / inStop.direction.z;
     return std::hypot(inStop.origin.x + t * inStop.direction.x, inStop.origin.y + t * inStop.direction.y);

@@ -32,7 +32,7 @@ struct FieldRays {
         options.ignoreApertures = true;
         const TraceResult r = traceRay(lens, at(vertexHeight), TraceDirection::SceneToFilm, options);
         if (!r.ok() || !(r.ray.direction.z * lens.zDirectionAfter(lens.stopIndex - 1) > 0)) return std::nullopt;
-        const RigidMotion intoStop = motionInto(lens.stop(), TraceDirection::SceneToFilm);
+        const RigidMotion& intoStop = lens.stop().before;  // motionInto(stop, SceneToFilm)
         return heightAtZ(intoStop.isIdentity() ? r.ray : movedRay(intoStop, r.ray), lens.stop().z);
     }
 };

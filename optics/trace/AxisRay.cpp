@@ -37,9 +37,11 @@ std::optional<Vec3> stopCrossing(const LensSystem& lens, const Ray& ray) {
     options.ignoreApertures = true;
     const TraceResult r = traceRay(lens, ray, TraceDirection::SceneToFilm, options);
     if (!r.ok()) return std::nullopt;
-    const RigidMotion intoStop = motionOutOf(lens.stop(), TraceDirection::SceneToFilm).inverse();
-    if (intoStop.isIdentity()) return r.ray.origin;
-    const auto p = intoStop.applyToPoint({r.ray.origin.x, r.ray.origin.y, r.ray.origin.z});
+    // Out of the stop toward the film the coordinates moved by its `after`: undone (a centred stop's
+    // is the identity, and the aiming's Newton calls this for every step).
+    const RigidMotion& out = lens.stop().after;
+    if (out.isIdentity()) return r.ray.origin;
+    const auto p = out.inverse().applyToPoint({r.ray.origin.x, r.ray.origin.y, r.ray.origin.z});
     return Vec3{p[0], p[1], p[2]};
 }
 
