@@ -26,15 +26,6 @@ const std::vector<double> kPupilBandEdgesNm = {360, 410, 460, 520, 590, 680, 830
 // and the square root costs a fraction of std::hypot's on every camera ray.
 double filmRadius(double x, double y) { return std::sqrt(x * x + y * y); }
 
-Vec3 movedPoint(const RigidMotion& m, const Vec3& p) {
-    const auto q = m.applyToPoint({p.x, p.y, p.z});
-    return {q[0], q[1], q[2]};
-}
-Vec3 movedDirection(const RigidMotion& m, const Vec3& d) {
-    const auto q = m.applyToDirection({d.x, d.y, d.z});
-    return {q[0], q[1], q[2]};
-}
-
 }  // namespace
 
 RealisticParams realisticParams(const std::string& lensPath, std::optional<double> fstop, double focusDistanceMm) {
@@ -257,7 +248,7 @@ TraceResult RealisticCamera::traceShaped(const LensSystem& lens, const Ray& ray,
 bool RealisticCamera::finish(const Ray& leaving, double weight, CameraRay& out) const {
     // A moved lens's rays leave it in its own coordinates; camera space is the body's.
     Ray moved;
-    if (mounted_) moved = {movedPoint(bodyFromLens_, leaving.origin), movedDirection(bodyFromLens_, leaving.direction)};
+    if (mounted_) moved = movedRay(bodyFromLens_, leaving);
     const Ray& lensRay = mounted_ ? moved : leaving;
     const double unit = 1.0 / params_.cameraUnitMm;
     const Vec3f o{float(lensRay.origin.x * unit), float(lensRay.origin.y * unit), float((lensRay.origin.z - originZ_) * unit)};
@@ -401,8 +392,9 @@ void RealisticCamera::makeMountedRays(const CameraSample* samples, std::size_t n
 }
 
 FilmPlane RealisticCamera::mountedFilm(double filmZ) const {
-    return {movedPoint(lensFromBody_, {0, 0, filmZ}), movedDirection(lensFromBody_, {1, 0, 0}),
-            movedDirection(lensFromBody_, {0, 1, 0})};
+    // The film's centre and its x and y axes, carried into lens space as two rays from the centre.
+    const Ray u = movedRay(lensFromBody_, {{0, 0, filmZ}, {1, 0, 0}});
+    return {u.origin, u.direction, movedRay(lensFromBody_, {{0, 0, filmZ}, {0, 1, 0}}).direction};
 }
 
 // Irradiance from a patch dA of the aiming plane: L cos^2 / dist^2 dA = L cos^4 / dz^2 dA.
