@@ -1,7 +1,7 @@
 // The glass catalogs uploaded to the service (Zemax .agf; docs/api.md, "Glass catalogs"): told from
 // lens files by extension or content, uploaded through the lens panel's file picker and drop zone,
 // listed by name and glass count, deleted. Their glasses join the editor's glass names at once.
-import { $, api, clearMessage, showMessage, uploadFile } from "./api.js";
+import { $, api, showMessage, uploadFile } from "./api.js";
 import { setGlassCatalog } from "./prescription-cells.js";
 
 const glassCount = (n) => `${n} glass${n === 1 ? "" : "es"}`;
@@ -51,7 +51,6 @@ export async function loadGlassCatalogs() {
 }
 
 export async function uploadGlassCatalog(file) {
-  clearMessage();
   try {
     const catalog = await uploadFile("/api/glass-catalogs", file, "glass catalogs");
     await Promise.all([loadGlassCatalogs(), loadGlassNames()]);

@@ -49,14 +49,16 @@ export async function loadLenses(selectId) {
 }
 
 // A lens file, or a glass catalog (glass-catalogs.js) dropped or chosen in the same place.
+// The last upload's message goes at once, before the file is read: a message still on the page
+// while the next file is on its way would be taken for that file's answer.
 async function uploadChosenFile(file) {
   if (!file) return;
+  clearMessage();
   if (await isGlassCatalogFile(file)) await uploadGlassCatalog(file);
   else await uploadLens(file);
 }
 
 async function uploadLens(file) {
-  clearMessage();
   try {
     const lens = await uploadFile("/api/lenses", file, "lens tables");
     await loadLenses(lens.id);

@@ -56,6 +56,9 @@ async function main() {
     await page.press("#token-input", "Enter");
     await page.setInputFiles("#lens-file", table);
     await page.waitForFunction(() => document.querySelector("#token-status").textContent.includes("not the server's token"));
+    // The refusal reaches the upload's message after the token field; the next upload waits for it.
+    await page.waitForFunction(() => !document.querySelector("#message").hidden &&
+                                     document.querySelector("#message").textContent.includes("was not accepted"));
     check(true, `a wrong token is told apart: "${await page.textContent("#token-status")}"`);
 
     await page.fill("#token-input", token);
