@@ -145,6 +145,13 @@ RenderSettings renderSettings(const ArgParser& p) {
     if (p.has("--ghosts")) s.camera.ghosts = p.get("--ghosts");
     if (p.has("--ghost-model")) s.camera.ghostModel = p.get("--ghost-model");
     if (auto v = p.integer("--wavelengths-per-sample")) s.wavelengthsPerSample = int(*v);
+    if (p.has("--sensor")) {
+        try {
+            s.sensor = sensorSpecFromPairs(parseSensorPairs(p.get("--sensor")));
+        } catch (const SensorSpecError& e) {
+            throw UsageError(std::string("render --") + e.what());
+        }
+    }
     return s;
 }
 
@@ -200,6 +207,9 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
              "all | N (the N brightest ghosts of the ghost analysis); default off");
     p.option("--ghost-model", "M", "with --ghosts: exact (every ghost traced through the coated lens) | paraxial (its\n"
              "ray-transfer matrices: the stop's shape, uniform); default exact");
+    p.option("--sensor", "K=V,...", "realistic camera: a real sensor's noisy readout instead of the noiseless film (docs/sensor.md):\n"
+             "iso exposure(s; default metered) gain(e-/DN) qe fill pitch(um) fullwell(e-) read(e-) dark(e-/s) dsnu prnu\n"
+             "bits black(DN) nits(cd/m^2 per unit radiance) pattern(seed); e.g. --sensor iso=3200,exposure=0.004");
     p.flag("--quiet", "no progress bar, no summary");
     p.flag("--progress-json", "print one JSON line per finished tile on stdout, and the statistics last");
     p.flag("--mpi", "spread the tiles over the processes of an MPI job: mpirun -np N lenslab render ... --mpi");

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "film/SensorSpec.h"
 #include "settings/LensSettings.h"
 #include "prescription/LensTable.h"
 
@@ -56,6 +57,8 @@ struct RenderSettings {
     // Crop window x0, x1, y0, y1 as fractions of the image (pbrt's cropwindow); unset = the scene's.
     // The output image holds only the cropped pixels.
     std::optional<std::array<double, 4>> crop;
+    // A real camera sensor behind the film (film/SensorSpec.h, docs/sensor.md); unset: the noiseless film.
+    std::optional<SensorSpec> sensor;
 };
 
 struct Image {

@@ -78,14 +78,14 @@ public:
         MasterResult result;
         result.finalize = !anyLost;
         RenderOutput& out = result.output;
-        if (tilesDone_ == int(done_.size())) frame_.addSplats(splats_.sum(), image_);
+        out.metadata = frame_.metadata();
+        if (tilesDone_ == int(done_.size())) frame_.finishImage(splats_.sum(), image_, out.metadata);
         out.image = std::move(image_);
         out.stats.setupSeconds = frame_.setupSeconds();
         out.stats.renderSeconds = std::chrono::duration<double>(Clock::now() - start).count();
         out.stats.cameraRays = counters_.cameraRays;
         out.stats.blockedCameraRays = counters_.blockedCameraRays;
         out.stats.raysTraced = counters_.raysTraced;
-        out.metadata = frame_.metadata();
         return result;
     }
 

@@ -33,6 +33,7 @@ RenderSettings renderSettings(const RenderJobInput& job) {
     settings.camera.tiltDegrees = job.request.tilt;
     settings.camera.swingDegrees = job.request.swing;
     settings.camera.shiftMm = job.request.shift;
+    if (job.request.sensor) settings.sensor = sensorSpecFromPairs(*job.request.sensor);
     settings.spp = job.request.spp;
     settings.width = job.request.width;
     settings.height = job.request.height;

@@ -7,6 +7,7 @@
 #include "core/Identifiers.h"
 #include "cameras/GhostSelection.h"
 #include "cameras/LensModeMap.h"
+#include "film/SensorSpec.h"
 
 namespace lenslab {
 
@@ -61,13 +62,31 @@ std::string identifierField(const json& body, const char* field, const std::stri
     return id;
 }
 
+// An object of numbers, each key checked as the renderer will take it.
+std::optional<std::vector<std::pair<std::string, double>>> sensorField(const json& body) {
+    if (!body.contains("sensor") || body.at("sensor").is_null()) return std::nullopt;
+    const json& v = body.at("sensor");
+    if (!v.is_object()) throw HttpError(400, "sensor must be an object of numbers, as {\"iso\": 800}");
+    std::vector<std::pair<std::string, double>> pairs;
+    for (const auto& item : v.items()) {
+        if (!item.value().is_number()) throw HttpError(400, "sensor: " + item.key().substr(0, 40) + " must be a number");
+        pairs.emplace_back(item.key(), item.value().get<double>());
+    }
+    try {
+        sensorSpecFromPairs(pairs);
+    } catch (const SensorSpecError& e) {
+        throw HttpError(400, e.what());
+    }
+    return pairs;
+}
+
 }  // namespace
 
 RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, const std::string& defaultScene) {
     if (!body.is_object()) throw HttpError(400, "the render request must be a JSON object");
     static const char* kFields[] = {"scene", "lens", "fstop", "focaldistance", "filmdiagonal",
                                     "mode", "spectral", "spp", "width", "height", "ghosts", "ghost_model",
-                                    "tilt", "swing", "shift"};
+                                    "tilt", "swing", "shift", "sensor"};
     for (const auto& item : body.items()) {
         bool known = false;
         for (const char* f : kFields) known = known || item.key() == f;
@@ -101,6 +120,7 @@ RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, c
     r.tilt = fieldNumber(body, "tilt", -45, 45);
     r.swing = fieldNumber(body, "swing", -45, 45);
     r.shift = fieldPair(body, "shift", 100);
+    r.sensor = sensorField(body);
     r.spp = fieldInteger(body, "spp", r.spp, 1, limits.maxSpp, "the service's spp limit");
     r.width = fieldInteger(body, "width", r.width, 8, limits.maxWidth, "the service's width limit");
     r.height = fieldInteger(body, "height", r.height, 8, limits.maxHeight, "the service's height limit");
@@ -113,6 +133,17 @@ LensSettings lensSettings(const RenderRequest& r) {
     if (r.focusDistance) s.focusDistance = Setting{*r.focusDistance, "field focaldistance"};
     return s;
 }
+
+namespace {
+
+json sensorJson(const std::optional<std::vector<std::pair<std::string, double>>>& sensor) {
+    if (!sensor) return nullptr;
+    json object = json::object();
+    for (const auto& [key, value] : *sensor) object[key] = value;
+    return object;
+}
+
+}  // namespace
 
 nlohmann::json renderRequestJson(const RenderRequest& r) {
     auto optional = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
@@ -128,6 +159,7 @@ nlohmann::json renderRequestJson(const RenderRequest& r) {
             {"tilt", optional(r.tilt)},
             {"swing", optional(r.swing)},
             {"shift", r.shift ? json(*r.shift) : json(nullptr)},
+            {"sensor", sensorJson(r.sensor)},
             {"spp", r.spp},
             {"width", r.width},
             {"height", r.height}};

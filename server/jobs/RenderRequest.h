@@ -6,6 +6,8 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "settings/LensSettings.h"
 #include "core/ServiceConfig.h"
@@ -25,6 +27,9 @@ struct RenderRequest {
     // A tilt-shift lens (renderer/raytracer/cameras/LensMount.h): degrees, and x, y millimetres.
     std::optional<double> tilt, swing;
     std::optional<std::array<double, 2>> shift;
+    // A real camera sensor (renderer/raytracer/film/SensorSpec.h): its keys and values as given,
+    // checked; unset: the noiseless film.
+    std::optional<std::vector<std::pair<std::string, double>>> sensor;
     int spp = 16;
     int width = 320, height = 240;
 };

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/Vec3f.h"
@@ -33,6 +34,13 @@ struct FilmLanding {
                           // time, a shaped stop's transmission): a ray's weight is response / density
 };
 
+// A lens camera's film as a light meter sees it.
+struct FilmRadiometry {
+    double exposurePerValue = 0;  // focal-plane radiant exposure (scene radiance x sr x s) per film value
+    double exposureSeconds = 1;   // the shutter's, included in exposurePerValue
+    double diagonalMm = 0;        // the film's
+};
+
 class Camera {
 public:
     virtual ~Camera() = default;
@@ -59,6 +67,9 @@ public:
     // Whether its rays depend on each sample's wavelength (a lens traced with dispersion): the
     // frame is then rendered spectrally unless told otherwise.
     virtual bool spectral() const { return false; }
+    // What a sensor behind the film collects (film/SensorReadout.h); none for a camera without a
+    // lens, whose film values are radiance, not exposure.
+    virtual std::optional<FilmRadiometry> filmRadiometry() const { return std::nullopt; }
     // Camera and lens parameters for the image metadata.
     virtual std::map<std::string, std::string> describe() const = 0;
 };

@@ -19,6 +19,7 @@ public:
     void generateSpectralRays(const CameraSample* samples, std::size_t n, const double* wavelengthsNm, int perSample,
                               CameraRay* out, FilmLanding* landings) const override;
     bool spectral() const override { return still_->spectral(); }
+    std::optional<FilmRadiometry> filmRadiometry() const override { return still_->filmRadiometry(); }
     std::map<std::string, std::string> describe() const override;
 
 private:

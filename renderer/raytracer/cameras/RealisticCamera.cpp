@@ -147,6 +147,12 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
     }
 }
 
+std::optional<FilmRadiometry> RealisticCamera::filmRadiometry() const {
+    const double scale = modes_.usesExact() ? weightScaleExact_ : weightScaleThick_;
+    if (!(scale > 0)) return std::nullopt;
+    return FilmRadiometry{params_.exposureTime / scale, params_.exposureTime, params_.filmDiagonalMm};
+}
+
 double RealisticCamera::findFilmRadiusRange(double filmMarginPixels) {
     // The crop window in pixels (pbrt-v3's rounding), widened by the pixel filter's reach.
     const std::array<double, 4>& c = params_.crop;

@@ -82,6 +82,9 @@ public:
                               CameraRay* out, FilmLanding* landings) const override;
     std::map<std::string, std::string> describe() const override;
     bool spectral() const override { return params_.spectral; }
+    // The exposure per value is the exposure time over the weight scale of the model the film is
+    // rendered with (the exact trace's where it traces any ray exactly): each normalises its own.
+    std::optional<FilmRadiometry> filmRadiometry() const override;
 
     const LensAnalysis& analysis() const { return analysis_; }
     double filmZ() const;  // mm, lens space: the thick-lens film in approximate mode, else the exact one

@@ -104,10 +104,23 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     tiles_ = makeTiles(area_, settings.tileSize);
     scene_.film.crop = c;  // the camera prepares only the film radii this window covers
 
+    if (settings_.sensor && settings_.sensor->pitchMicrometres) {
+        // A sensor's pitch sets the film's size.
+        const double diagonal = *settings_.sensor->pitchMicrometres * 1e-3 * std::hypot(double(width_), double(height_));
+        if (settings_.camera.filmDiagonal && std::fabs(*settings_.camera.filmDiagonal - diagonal) > 1e-6 * diagonal)
+            throw SceneError("the sensor's pitch makes a film diagonal of " + std::to_string(diagonal) +
+                             " mm, not the " + std::to_string(*settings_.camera.filmDiagonal) + " mm asked for");
+        settings_.camera.filmDiagonal = diagonal;
+    }
     arena_.execute([&] {
-        camera_ = makeCamera(scene_, settings.camera, width_, height_, filter_.radius(), cancel);
+        camera_ = makeCamera(scene_, settings_.camera, width_, height_, filter_.radius(), cancel);
         geometry_ = std::make_unique<SceneGeometry>(scene_);
     });
+    if (settings_.sensor) {
+        radiometry_ = camera_->filmRadiometry();
+        if (!radiometry_)
+            throw SceneError(sensorWithoutLens(scene_.camera.type));
+    }
     integrator_ = makeIntegrator(*geometry_, scene_.integrator, scene_.camera.medium.get());
     spectral_ = settings.camera.spectral.value_or(camera_->spectral());
     arena_.execute([&] {
@@ -116,6 +129,21 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     const int byFilter = scene_.filter.type == FilterType::Box ? 1 : 3;
     wavelengths_ = spectral_ ? (settings.wavelengthsPerSample > 0 ? settings.wavelengthsPerSample : byFilter) : 0;
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void PreparedFrame::finishImage(const SplatBuffer& splats, Image& image, std::map<std::string, std::string>& metadata) const {
+    addSplats(splats, image);
+    if (!settings_.sensor) return;
+    double luminanceSum = 0;
+    for (std::size_t i = 0; i < image.rgb.size(); i += 3)
+        luminanceSum += luminance({image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]});
+    // The film's values carry its exposure scale: the sensor sees the radiometric exposure.
+    const SensorExposureInput input{radiometry_->exposurePerValue / scene_.film.scale, radiometry_->exposureSeconds,
+                                    radiometry_->diagonalMm * 1e3 / std::hypot(double(width_), double(height_)),
+                                    luminanceSum / double(std::size_t(image.width) * image.height)};
+    const SensorCalibration calibration = calibrateSensor(*settings_.sensor, input);
+    const SensorReadoutStats stats = readOutSensor(*settings_.sensor, calibration, settings_.seed, area_.x0, area_.y0, image);
+    for (auto& [key, value] : describeSensor(*settings_.sensor, calibration, stats)) metadata[key] = value;
 }
 
 void PreparedFrame::addSplats(const SplatBuffer& splats, Image& image) const {

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "cameras/Shutter.h"
 #include "integrators/Integrator.h"
 #include "film/PixelFilter.h"
+#include "film/SensorReadout.h"
 #include "film/SpectralSensor.h"
 #include "Render.h"
 #include "scene/SceneDescription.h"
@@ -66,9 +68,10 @@ public:
     bool renderRect(const PixelRect& rect, float* dst, std::size_t rowStride, TileCounters& counters,
                     SplatBuffer& splats, const std::atomic<bool>* cancel = nullptr) const;
 
-    // Adds a frame's splats (every tile's, SplatImage) onto its image, through the film's exposure
-    // scale and white balance as renderRect's pixels.
-    void addSplats(const SplatBuffer& splats, Image& image) const;
+    // The last step on the whole image: the frame's splats (every tile's, SplatImage) added through
+    // the film's exposure scale and white balance as renderRect's pixels, then the sensor read out
+    // when the settings name one (film/SensorReadout.h), its calibration added to metadata.
+    void finishImage(const SplatBuffer& splats, Image& image, std::map<std::string, std::string>& metadata) const;
 
     bool spectral() const { return spectral_; }
     const FlareStats& flareStats() const { return flare_.stats; }
@@ -76,6 +79,8 @@ public:
     std::map<std::string, std::string> metadata() const;
 
 private:
+    void addSplats(const SplatBuffer& splats, Image& image) const;
+
     std::chrono::steady_clock::time_point start_;  // setupSeconds counts from here, the scene parse included
     RenderSettings settings_;
     SceneDescription scene_;
@@ -92,6 +97,7 @@ private:
     int wavelengths_ = 0;            // spectral: per sample (RenderSettings::wavelengthsPerSample)
     SpectralSensor sensor_;
     FlareLayer flare_;               // lens flare, added to every pixel; empty: none
+    std::optional<FilmRadiometry> radiometry_;  // the camera's, for a sensor (settings.sensor)
     double setupSeconds_ = 0;
 };
 

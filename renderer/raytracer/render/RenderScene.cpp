@@ -56,7 +56,8 @@ RenderOutput renderScene(const RenderSettings& settings, const std::function<voi
         });
     });
     if (cancelled()) throw RenderCancelled();
-    frame.addSplats(splats.sum(), image);
+    out.metadata = frame.metadata();
+    frame.finishImage(splats.sum(), image, out.metadata);
 
     out.stats.renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
     out.stats.cameraRays = counters.cameraRays;
@@ -66,7 +67,6 @@ RenderOutput renderScene(const RenderSettings& settings, const std::function<voi
     out.stats.flarePaths = frame.flareStats().paths;
     out.stats.flareRays = frame.flareStats().raysTraced;
     out.stats.flareSeconds = frame.flareStats().seconds;
-    out.metadata = frame.metadata();
     return out;
 }
 

@@ -1,6 +1,7 @@
 // checkRenderSettings: the camera's checks of renderScene, on the scene's options block alone.
 #include "Render.h"
 #include "cameras/CameraFactory.h"
+#include "film/SensorReadout.h"
 #include "scene/SceneDescription.h"
 
 namespace lenslab {
@@ -10,6 +11,7 @@ void checkRenderSettings(const RenderSettings& settings) {
     options.confined = settings.confined;
     options.optionsOnly = true;
     SceneDescription scene = parseSceneFile(settings.scenePath, options);
+    if (settings.sensor && scene.camera.type != "realistic") throw SceneError(sensorWithoutLens(scene.camera.type));
     checkCameraSettings(scene, settings.camera);
 }
 

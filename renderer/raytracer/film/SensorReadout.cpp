@@ -1,0 +1,122 @@
+#include "film/SensorReadout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "sampling/Sampling.h"
+
+namespace lenslab {
+
+namespace {
+
+// Photons per square metre in one lux second of 555 nm light (683 lm/W there): lambda / (h c 683).
+constexpr double kPhotonsPerLuxSecondM2 = 555e-9 / (6.62607015e-34 * 299792458.0 * 683.0);
+constexpr double kWellElectronsPerUm2 = 2700;  // Nikon D850: about 51,000 e- in 4.35 um pixels
+constexpr double kStandardOutputExposure = 10;  // lux s x ISO that reads 0.18 (ISO 12232 SOS)
+constexpr double kSaturationExposure = 78;      // lux s x ISO at the ADC's full scale (ISO 12232 S_sat)
+
+// Pcg32 as the standard library's distributions take it (a uniform random bit generator).
+struct PcgBits {
+    using result_type = std::uint32_t;
+    Pcg32 pcg;
+    static constexpr result_type min() { return 0; }
+    static constexpr result_type max() { return 0xffffffffu; }
+    result_type operator()() { return pcg.next(); }
+};
+
+std::uint64_t siteKey(std::uint64_t seed, int x, int y, int channel) {
+    return hashCombine(hashCombine(seed, (std::uint64_t(std::uint32_t(y)) << 32) | std::uint32_t(x)), std::uint64_t(channel));
+}
+
+double normal(PcgBits& bits, double sigma) {
+    return sigma > 0 ? std::normal_distribution<double>(0.0, sigma)(bits) : 0.0;
+}
+
+std::string shown(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+}  // namespace
+
+std::string sensorWithoutLens(const std::string& cameraType) {
+    return "the sensor needs a lens to expose through (Camera \"realistic\"); this scene's camera is \"" + cameraType + "\"";
+}
+
+SensorCalibration calibrateSensor(const SensorSpec& spec, const SensorExposureInput& input) {
+    if (!(input.exposurePerValue > 0) || !std::isfinite(input.exposurePerValue))
+        throw SensorSpecError("sensor: the film has no exposure to read (its camera has no lens)");
+    SensorCalibration c;
+    c.pitchMicrometres = input.filmPitchMicrometres;
+    if (spec.pitchMicrometres && std::fabs(*spec.pitchMicrometres - c.pitchMicrometres) > 1e-6 * c.pitchMicrometres)
+        throw SensorSpecError("sensor: pitch " + shown(*spec.pitchMicrometres) + " um disagrees with the film's " +
+                              shown(c.pitchMicrometres) + " um (its diagonal over the pixel diagonal)");
+    const double areaM2 = c.pitchMicrometres * c.pitchMicrometres * 1e-12;
+    c.fullWellElectrons = spec.fullWellElectrons.value_or(kWellElectronsPerUm2 * c.pitchMicrometres * c.pitchMicrometres);
+    c.electronsPerLuxSecond = spec.quantumEfficiency * spec.fillFactor * areaM2 * kPhotonsPerLuxSecondM2;
+    const double luxSecondsPerValueAtCamera = spec.nits * input.exposurePerValue;
+    // Metered: the time at which the frame's mean luminance reads the standard output's 0.18.
+    const double metered = input.meanLuminance > 0
+                               ? input.cameraSeconds * kStandardOutputExposure / (spec.iso * input.meanLuminance * luxSecondsPerValueAtCamera)
+                               : input.cameraSeconds;
+    c.exposureSeconds = spec.exposureSeconds.value_or(metered);
+    c.luxSecondsPerValue = luxSecondsPerValueAtCamera * c.exposureSeconds / input.cameraSeconds;
+    c.fullScaleDn = std::ldexp(1.0, spec.adcBits) - 1;
+    c.blackLevelDn = spec.blackLevelDn.value_or(std::ldexp(1.0, std::max(0, spec.adcBits - 5)));
+    const double saturationElectrons = std::min(c.fullWellElectrons, kSaturationExposure / spec.iso * c.electronsPerLuxSecond);
+    c.gainElectronsPerDn = spec.gainElectronsPerDn.value_or(saturationElectrons / (c.fullScaleDn - c.blackLevelDn));
+    c.baseIso = kSaturationExposure * c.electronsPerLuxSecond / c.fullWellElectrons;
+    c.outputPerLuxSecond = 0.18 * spec.iso / kStandardOutputExposure;
+    return c;
+}
+
+SensorReadoutStats readOutSensor(const SensorSpec& spec, const SensorCalibration& c, std::uint64_t seed, int x0, int y0,
+                                 Image& image) {
+    SensorReadoutStats stats;
+    const double electronsPerValue = c.luxSecondsPerValue * c.electronsPerLuxSecond;
+    const double outputPerElectron = c.outputPerLuxSecond / c.electronsPerLuxSecond;
+    const double readDn = spec.readNoiseElectrons / c.gainElectronsPerDn;
+    const std::uint64_t noiseSeed = hashCombine(seed, 0x5e45041e7ea1ULL);  // apart from the renderer's own uses of the seed
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int ch = 0; ch < 3; ++ch) {
+                float& value = image.rgb[(std::size_t(y) * image.width + x) * 3 + ch];
+                PcgBits pattern{Pcg32(siteKey(spec.patternSeed, x0 + x, y0 + y, ch))};
+                const double response = 1 + normal(pattern, spec.prnu);
+                const double darkRate = std::max(0.0, spec.darkCurrentElectronsPerSecond + normal(pattern, spec.dsnuElectronsPerSecond));
+                const double mean = std::max(0.0, double(value) * electronsPerValue * response) + darkRate * c.exposureSeconds;
+                PcgBits noise{Pcg32(siteKey(noiseSeed, x0 + x, y0 + y, ch))};
+                double electrons = mean > 0 ? double(std::poisson_distribution<long long>(mean)(noise)) : 0.0;
+                if (electrons >= c.fullWellElectrons) {
+                    electrons = c.fullWellElectrons;
+                    ++stats.wellClipped;
+                }
+                double dn = std::nearbyint(electrons / c.gainElectronsPerDn + c.blackLevelDn + normal(noise, readDn));
+                if (dn >= c.fullScaleDn) ++stats.adcClipped;
+                dn = std::clamp(dn, 0.0, c.fullScaleDn);
+                value = float((dn - c.blackLevelDn) * c.gainElectronsPerDn * outputPerElectron);
+            }
+    return stats;
+}
+
+std::map<std::string, std::string> describeSensor(const SensorSpec& spec, const SensorCalibration& c,
+                                                  const SensorReadoutStats& stats) {
+    std::ostringstream s;
+    s << "ISO " << shown(spec.iso) << (spec.exposureSeconds ? ", exposure " : ", metered exposure ") << shown(c.exposureSeconds)
+      << " s, pitch " << shown(c.pitchMicrometres) << " um, fill " << shown(spec.fillFactor) << ", QE " << shown(spec.quantumEfficiency)
+      << ", full well " << shown(c.fullWellElectrons) << " e-, gain " << shown(c.gainElectronsPerDn) << " e-/DN, "
+      << spec.adcBits << "-bit ADC, black " << shown(c.blackLevelDn) << " DN, read noise " << shown(spec.readNoiseElectrons)
+      << " e-, dark current " << shown(spec.darkCurrentElectronsPerSecond) << " e-/s (DSNU " << shown(spec.dsnuElectronsPerSecond)
+      << "), PRNU " << shown(spec.prnu) << ", base ISO " << shown(c.baseIso) << ", " << shown(spec.nits)
+      << " cd/m^2 per unit radiance; developed by standard output sensitivity (0.18 at 10 / ISO lux s)";
+    return {{"sensor", s.str()},
+            {"sensorElectronsPerValue", shown(c.luxSecondsPerValue * c.electronsPerLuxSecond)},
+            {"sensorClipped", std::to_string(stats.wellClipped) + " channels at the full well, " +
+                                  std::to_string(stats.adcClipped) + " at the ADC's full scale"}};
+}
+
+}  // namespace lenslab

@@ -1,0 +1,94 @@
+#include "film/SensorSpec.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <sstream>
+
+namespace lenslab {
+
+namespace {
+
+struct SensorKey {
+    const char* name;
+    double min, max;
+    bool whole;  // a whole number
+    std::function<void(SensorSpec&, double)> set;
+};
+
+std::string shown(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+const std::vector<SensorKey>& sensorKeys() {
+    static const std::vector<SensorKey> keys = {
+        {"iso", 1, 1e7, false, [](SensorSpec& s, double v) { s.iso = v; }},
+        {"exposure", 1e-9, 1e5, false, [](SensorSpec& s, double v) { s.exposureSeconds = v; }},
+        {"gain", 1e-6, 1e9, false, [](SensorSpec& s, double v) { s.gainElectronsPerDn = v; }},
+        {"qe", 1e-6, 1, false, [](SensorSpec& s, double v) { s.quantumEfficiency = v; }},
+        {"fill", 1e-6, 1, false, [](SensorSpec& s, double v) { s.fillFactor = v; }},
+        {"pitch", 0.1, 1000, false, [](SensorSpec& s, double v) { s.pitchMicrometres = v; }},
+        {"fullwell", 1, 1e12, false, [](SensorSpec& s, double v) { s.fullWellElectrons = v; }},
+        {"read", 0, 1e6, false, [](SensorSpec& s, double v) { s.readNoiseElectrons = v; }},
+        {"dark", 0, 1e9, false, [](SensorSpec& s, double v) { s.darkCurrentElectronsPerSecond = v; }},
+        {"dsnu", 0, 1e9, false, [](SensorSpec& s, double v) { s.dsnuElectronsPerSecond = v; }},
+        {"prnu", 0, 0.5, false, [](SensorSpec& s, double v) { s.prnu = v; }},
+        {"bits", 1, 24, true, [](SensorSpec& s, double v) { s.adcBits = int(v); }},
+        {"black", 0, 1 << 24, true, [](SensorSpec& s, double v) { s.blackLevelDn = v; }},
+        {"nits", 1e-12, 1e12, false, [](SensorSpec& s, double v) { s.nits = v; }},
+        {"pattern", 0, 9007199254740992.0, true, [](SensorSpec& s, double v) { s.patternSeed = std::uint64_t(v); }},
+    };
+    return keys;
+}
+
+std::string keyList() {
+    std::string list;
+    for (const SensorKey& k : sensorKeys()) list += (list.empty() ? "" : " ") + std::string(k.name);
+    return list;
+}
+
+}  // namespace
+
+SensorSpec sensorSpecFromPairs(const std::vector<std::pair<std::string, double>>& pairs) {
+    SensorSpec spec;
+    std::vector<std::string> seen;
+    for (const auto& [name, value] : pairs) {
+        const SensorKey* key = nullptr;
+        for (const SensorKey& k : sensorKeys())
+            if (name == k.name) key = &k;
+        if (!key) throw SensorSpecError("sensor: unknown key '" + name.substr(0, 40) + "' (keys: " + keyList() + ")");
+        for (const std::string& s : seen)
+            if (s == name) throw SensorSpecError("sensor: " + name + " is given twice");
+        seen.push_back(name);
+        if (!std::isfinite(value) || value < key->min || value > key->max || (key->whole && value != std::floor(value)))
+            throw SensorSpecError("sensor: " + name + " must be " + (key->whole ? "a whole number " : "") + "between " +
+                                  shown(key->min) + " and " + shown(key->max) + ", got " + shown(value));
+        key->set(spec, value);
+    }
+    const double fullScale = std::ldexp(1.0, spec.adcBits) - 1;
+    if (spec.blackLevelDn && *spec.blackLevelDn >= fullScale)
+        throw SensorSpecError("sensor: black " + shown(*spec.blackLevelDn) + " DN must lie below the " +
+                              std::to_string(spec.adcBits) + "-bit full scale " + shown(fullScale));
+    return spec;
+}
+
+std::vector<std::pair<std::string, double>> parseSensorPairs(const std::string& text) {
+    std::vector<std::pair<std::string, double>> pairs;
+    std::stringstream items(text);
+    for (std::string item; std::getline(items, item, ',');) {
+        const auto eq = item.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw SensorSpecError("sensor: '" + item.substr(0, 40) + "' is not key=value (as in iso=800,exposure=0.01)");
+        const std::string value = item.substr(eq + 1);
+        char* end = nullptr;
+        const double v = std::strtod(value.c_str(), &end);
+        if (value.empty() || end != value.c_str() + value.size())
+            throw SensorSpecError("sensor: " + item.substr(0, eq) + "'s value '" + value.substr(0, 40) + "' is not a number");
+        pairs.emplace_back(item.substr(0, eq), v);
+    }
+    return pairs;
+}
+
+}  // namespace lenslab
