@@ -349,6 +349,28 @@ TEST_F(ServerApi, TiltAndShiftRenderAndRefuseWhatAMovedLensCannotDo) {
     EXPECT_EQ(postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"tilt", 60}}).status, 400);
 }
 
+TEST_F(ServerApi, ASensorRendersItsReadoutAndRefusesUnknownKeys) {
+    auto c = client();
+    const Reply noisy = postJson(c, "/api/renders", {{"scene", "depth-of-field"}, {"lens", "dgauss.50mm"},
+                                                     {"sensor", {{"iso", 25600}, {"exposure", 1e-4}}}, {"spp", 1},
+                                                     {"width", 32}, {"height", 24}});
+    ASSERT_EQ(noisy.status, 202) << noisy.raw;
+    EXPECT_EQ(noisy.body["request"]["sensor"]["iso"], 25600) << noisy.raw;
+    const json done = waitForRenderState(c, noisy.body["id"], {"done", "failed", "cancelled"}, 120);
+    ASSERT_EQ(done["state"], "done") << done.dump();
+    const auto exr = c.Get("/api/renders/" + noisy.body["id"].get<std::string>() + "/image.exr");
+    ASSERT_EQ(exr->status, 200);
+    EXPECT_NE(exr->body.find("ISO 25600, exposure 0.0001 s"), std::string::npos);  // the header's sensor line
+    const Reply unknown = postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"sensor", {{"isp", 100}}}});
+    EXPECT_EQ(unknown.status, 400);
+    EXPECT_NE(unknown.body["error"].get<std::string>().find("sensor: unknown key 'isp'"), std::string::npos) << unknown.raw;
+    const Reply range = postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"sensor", {{"bits", 40}}}});
+    EXPECT_EQ(range.status, 400);
+    EXPECT_NE(range.body["error"].get<std::string>().find("bits must be a whole number between 1 and 24"), std::string::npos) << range.raw;
+    EXPECT_EQ(postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"sensor", 800}}).status, 400);
+    EXPECT_EQ(postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"sensor", {{"iso", "fast"}}}}).status, 400);
+}
+
 // Lens settings are checked once, by optics, and the error names the field it came from.
 TEST_F(ServerApi, RenderSettingsOutsideTheLensNameTheirField) {
     auto c = client();

@@ -46,9 +46,10 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
     const json full = {{"scene", "s"}, {"lens", "l"}, {"fstop", 2.8}, {"focaldistance", 1500}, {"filmdiagonal", 43.3},
                        {"mode", "thick"}, {"spectral", true}, {"spp", 4}, {"width", 64}, {"height", 48},
                        {"ghosts", "12"}, {"ghost_model", "paraxial"}, {"tilt", 6}, {"swing", -2.5},
-                       {"shift", {3, -4}}};
+                       {"shift", {3, -4}}, {"sensor", {{"iso", 800}, {"read", 1.5}}}};
     EXPECT_EQ(renderRequestJson(parseRenderRequest(full, limits, "")), full);
     EXPECT_TRUE(renderRequestJson(r)["shift"].is_null());  // the scene's own
+    EXPECT_TRUE(renderRequestJson(r)["sensor"].is_null());  // the noiseless film
     EXPECT_FALSE(r.ghosts.has_value());  // the scene's own
     EXPECT_EQ(parseRenderRequest(json{{"ghosts", 7}}, limits, "s").ghosts, "7");
     EXPECT_EQ(parseRenderRequest(json{{"ghosts", "auto"}}, limits, "s").ghosts, "auto");
