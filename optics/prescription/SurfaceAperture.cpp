@@ -15,6 +15,19 @@ double SurfaceAperture::reach() const {
     return std::hypot(cx, cy) + halfWidthX;
 }
 
+std::optional<std::pair<double, double>> SurfaceAperture::meridionalSpan() const {
+    // Half the chord the line x = 0 cuts, about centreY.
+    const double u = std::fabs(centreX);
+    double half = -1;
+    switch (kind) {
+        case ApertureKind::Rectangular: half = u <= halfWidthX ? halfWidthY : -1; break;
+        case ApertureKind::Elliptical: half = u <= halfWidthX ? halfWidthY * std::sqrt(1 - (u / halfWidthX) * (u / halfWidthX)) : -1; break;
+        case ApertureKind::Circular: half = u <= halfWidthX ? std::sqrt(halfWidthX * halfWidthX - u * u) : -1; break;
+    }
+    if (half < 0) return std::nullopt;
+    return std::pair{centreY - half, centreY + half};
+}
+
 const char* apertureKindName(ApertureKind kind) {
     switch (kind) {
         case ApertureKind::Circular: return "circular";

@@ -3,6 +3,8 @@
 // ellipse, decentred in the surface's own x and y (Zemax SQAP, ELAP, SQOB, ELOB with OBDC; Code V
 // CIR, REX/REY, ELX/ELY with ADX/ADY).
 #include <cstdint>
+#include <optional>
+#include <utility>
 
 namespace lenslab {
 
@@ -26,6 +28,9 @@ struct SurfaceAperture {
     }
     // The radius about the vertex that holds the whole shape (the semi-diameter it needs).
     double reach() const;
+    // The heights y where the line x = 0 runs inside the shape (the meridional section, as a lens
+    // drawing shows it), low then high; nullopt when the line misses it.
+    std::optional<std::pair<double, double>> meridionalSpan() const;
 };
 
 const char* apertureKindName(ApertureKind kind);  // "circular", "rectangular", "elliptical"

@@ -6,8 +6,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "DiagramStyle.h"
+#include "LensLayout.h"
 
 namespace lenslab {
 
@@ -109,45 +111,56 @@ struct Composer {
         }
     }
 
+    // A point at height y and z of a space of the lens (object space, image space: LensLayout.h).
+    Point2 at(const RigidMotion& space, double y, double z) const { return at(LensLayout::place(space, {0, y, z})); }
+
     void stop(const StopBlades& s) {
-        for (double sign : {1.0, -1.0})
-            addLine(pic.shapes, at({s.z, sign * s.openingRadius}), at({s.z, sign * s.outerRadius}), 3.5 * lw, kStop);
-        rowLabel(true, at({s.z, s.outerRadius}), "stop f/" + formatFNumber(a.fstop), kStop);
+        for (const Bar& blade : {s.upper, s.lower}) addLine(pic.shapes, at(blade.from), at(blade.to), 3.5 * lw, kStop);
+        rowLabel(true, at(s.upper.to), "stop f/" + formatFNumber(a.fstop), kStop);
     }
 
-    void axis() {
+    // Across the picture; a folded or decentred lens's axis is the path of its axis ray, from the
+    // scene to the film.
+    void axis(const std::vector<ZY>& folded) {
         const double y = pic.view.yAtAxis;
-        addDashedPolyline(pic.shapes, {{pic.content.left, y}, {pic.content.right, y}}, lw, 9 * lw, 4 * lw, kAxis);
+        if (folded.empty()) {
+            addDashedPolyline(pic.shapes, {{pic.content.left, y}, {pic.content.right, y}}, lw, 9 * lw, 4 * lw, kAxis);
+        } else {
+            std::vector<Point2> points{{pic.content.left, y}};
+            for (const ZY& p : folded) points.push_back(at(p));
+            for (const auto& piece : clipPolyline(points, pic.content)) addDashedPolyline(pic.shapes, piece, lw, 9 * lw, 4 * lw, kAxis);
+        }
         label({pic.content.left + 0.2 * small, y - 0.35 * small}, "optical axis", small, kNote, TextAnchor::Left);
     }
 
-    void film(double filmZ, double halfHeight) {
-        addLine(pic.shapes, at({filmZ, halfHeight}), at({filmZ, -halfHeight}), 2.5 * lw, kFilm);
-        rowLabel(false, at({filmZ, -halfHeight}), "film", kFilm);
+    void film(const RigidMotion& space, double filmZ, double halfHeight) {
+        addLine(pic.shapes, at(space, halfHeight, filmZ), at(space, -halfHeight, filmZ), 2.5 * lw, kFilm);
+        rowLabel(false, at(space, -halfHeight, filmZ), "film", kFilm);
     }
 
-    void principalPlane(double z, double halfHeight, const std::string& name) {
-        addDashedPolyline(pic.shapes, {at({z, halfHeight}), at({z, -halfHeight})}, lw, 5 * lw, 4 * lw, faded(kCardinal));
-        rowLabel(false, at({z, -halfHeight}), name, kCardinal);
+    void principalPlane(const RigidMotion& space, double z, double halfHeight, const std::string& name) {
+        addDashedPolyline(pic.shapes, {at(space, halfHeight, z), at(space, -halfHeight, z)}, lw, 5 * lw, 4 * lw, faded(kCardinal));
+        rowLabel(false, at(space, -halfHeight, z), name, kCardinal);
     }
 
-    void focalPoint(double z, const std::string& name) {
-        const Point2 p = at({z, 0});
+    void focalPoint(const RigidMotion& space, double z, const std::string& name) {
+        const Point2 p = at(space, 0, z);
         addDisc(pic.shapes, p, 3.5 * lw, kCardinal);
         label({p.x, p.y + 1.3 * small}, name, small, kCardinal);
     }
 
-    void pupil(double z, double diameter, const std::string& name) {
+    void pupil(const RigidMotion& space, double z, double diameter, const std::string& name) {
         const double r = diameter / 2, tick = 5 * lw;
-        const Point2 top = at({z, r}), bottom = at({z, -r});
+        const Point2 top = at(space, r, z), bottom = at(space, -r, z);
         addDashedPolyline(pic.shapes, {top, bottom}, lw, 2 * lw, 3 * lw, kPupil);
         for (const Point2& end : {top, bottom}) addLine(pic.shapes, {end.x - tick, end.y}, {end.x + tick, end.y}, 2.5 * lw, kPupil);
         rowLabel(true, top, name, kPupil);
     }
 
-    // A marker outside the picture: an arrow at the edge on the axis, stacked per edge.
-    void offPicture(double z, const std::string& name, int stackIndex) {
-        const bool leftEdge = pic.view.toPicture({z, 0}).x < pic.content.left;
+    // A marker outside the picture (at `where`, z of its space): an arrow at the edge on the axis,
+    // stacked per edge.
+    void offPicture(ZY where, double z, const std::string& name, int stackIndex) {
+        const bool leftEdge = pic.view.toPicture(where).x < pic.content.left;
         const double x = leftEdge ? pic.content.left : pic.content.right;
         const double y = pic.view.yAtAxis + (1.8 + 1.4 * stackIndex) * small;
         addArrowHead(pic.shapes, {x, y}, leftEdge ? -1 : 1, 0, 9 * lw, kCardinal);
@@ -172,8 +185,8 @@ struct Composer {
             addPolyline(pic.shapes, points, 4 * lw, kMirror);
         }
         for (const Obscuration& o : outline.obscurations) {
-            addLine(pic.shapes, at({o.z, o.radius}), at({o.z, -o.radius}), 5 * lw, kStop);
-            rowLabel(false, at({o.z, -o.radius}), "obscuration", kStop);
+            addLine(pic.shapes, at(o.from), at(o.to), 5 * lw, kStop);
+            rowLabel(false, at(o.to), "obscuration", kStop);
         }
     }
 
@@ -209,8 +222,9 @@ struct Composer {
         return variants.back();
     }
 
-    // Two lines at the top. On narrow pictures they shorten; the orientation always shows.
-    void caption(const std::string& lensName, double filmZ) {
+    // Two lines at the top. On narrow pictures they shorten; the orientation always shows, and so does
+    // a folded or decentred lens's being drawn as laid out in space.
+    void caption(const std::string& lensName, double filmZ, bool laidOut) {
         const FocusResult& f = a.focus;
         const std::string focus = f.infinity ? "\u221E" : millimetres(f.objectZ);
         const std::string lens = lensName + "   EFL " + formatFixed(a.firstOrder.efl, 2) + " mm   f/" + formatFNumber(a.fstop);
@@ -222,11 +236,14 @@ struct Composer {
               em, kText, TextAnchor::Left);
         const bool offAxis = pic.fieldDegrees > 0;
         const std::string field = offAxis ? formatFixed(pic.fieldDegrees, 2) + "\u00B0" : "";
+        const std::string full = laidOut ? "laid out in space (folds, tilts and decentres placed), the scene on the left"
+                                         : "front (scene side) on the left, film on the right";
+        const std::string brief = laidOut ? "laid out in space" : "front on the left";
+        const std::string filmAt = millimetres(filmZ) + (laidOut ? " (image space)" : "");
         const std::string note = firstFitting(
-            {"front (scene side) on the left, film on the right;  film at z = " + millimetres(filmZ) +
+            {full + ";  film at z = " + filmAt +
                  (offAxis ? ";  field " + field + ", imaged " + millimetres(pic.fieldHeight) + " below the axis" : ""),
-             "front on the left;  film z = " + millimetres(filmZ) + (offAxis ? ";  field " + field : ""),
-             "front on the left"},
+             brief + ";  film z = " + filmAt + (offAxis ? ";  field " + field : ""), brief},
             small, room);
         label({pic.content.left, 1.35 * em + 1.3 * small}, note, small, kNote, TextAnchor::Left);
     }
@@ -294,7 +311,54 @@ struct Marker {
     enum Kind { FocalPoint, PrincipalPlane, Pupil } kind;
     double z;
     std::string name;
-    double diameter = 0;  // pupils
+    double diameter = 0;     // pupils
+    bool imageSide = false;  // in image space (F', P', the exit pupil), else in object space
+};
+
+// The view of a lens whose surfaces never move, along its axis: film to a little in front of the
+// lens, or to the focused object when it is near; cardinal points and pupils join when they are not
+// far off (the others get edge arrows).
+ViewTransform axialView(const LensAnalysis& a, const LensOutline& outline, const std::vector<Marker>& markers,
+                        double filmHalf, const PictureBox& content) {
+    const double filmZ = a.focus.imageZExact, frontZ = a.lens.frontZ();
+    const double span = frontZ - filmZ;
+    const bool objectInView = !a.focus.infinity && a.focus.objectZ - frontZ <= 2 * span;
+    double zMax = objectInView ? a.focus.objectZ + 0.04 * span : frontZ + 0.45 * span;
+    double zMin = std::min(filmZ, a.firstOrder.zFPrime) - 0.04 * span;
+    for (const Marker& m : markers) {
+        if (m.z > frontZ + 1.2 * span || m.z < filmZ - 0.5 * span) continue;
+        zMax = std::max(zMax, m.z + 0.04 * span);
+        zMin = std::min(zMin, m.z - 0.04 * span);
+    }
+    const double yHalf = 1.08 * std::max({outline.maxRadius, filmHalf, a.pupils.entrance.diameter / 2,
+                                          a.pupils.exit.diameter / 2});
+    return fitView(zMin, zMax, yHalf, content);
+}
+
+// The drawn points of a marker (a pupil's or a plane's ends, a focal point), where its space lies.
+std::vector<ZY> markerPoints(const Marker& m, const LensLayout& layout, double planeHalf) {
+    const RigidMotion space = m.imageSide ? layout.imageSpace : RigidMotion{};
+    const double half = m.kind == Marker::Pupil ? m.diameter / 2 : m.kind == Marker::PrincipalPlane ? planeHalf : 0;
+    return {LensLayout::place(space, {0, half, m.z}), LensLayout::place(space, {0, -half, m.z})};
+}
+
+// A folded or decentred lens is drawn as laid out: the lens, the film and the rays, each where it
+// lies; a marker joins the view when it lies within half the lens's size of them.
+struct LaidOutView {
+    ZYBounds lens;  // the outline and the film
+    ViewTransform fit(const std::vector<ZY>& drawn, const std::vector<Marker>& markers, const LensLayout& layout,
+                      double planeHalf, const PictureBox& content) const {
+        std::vector<ZY> all = drawn;
+        const ZYBounds near = lens.grownBy(0.5 * lens.span());
+        for (const Marker& m : markers) {
+            const std::vector<ZY> points = markerPoints(m, layout, planeHalf);
+            if (std::all_of(points.begin(), points.end(), [&](ZY p) { return near.holds(p); }))
+                all.insert(all.end(), points.begin(), points.end());
+        }
+        const ZYBounds b = ZYBounds::around(all);
+        const ZYBounds shown = b.grownBy(0.04 * b.span());
+        return fitView(shown.zMin, shown.zMax, shown.yMin, shown.yMax, content);
+    }
 };
 
 }  // namespace
@@ -309,45 +373,44 @@ DiagramPicture composeDiagram(const LensAnalysis& a, const std::string& lensName
     c.small = std::clamp(static_cast<int>(std::lround(14 * unit)), 10, 40);
     c.lw = std::clamp(unit, 0.8, 4.0);
 
-    LensOutline outline = buildLensOutline(a.lens);  // holes in mirrors follow once the rays are known
-    const double filmZ = a.focus.imageZExact, frontZ = a.lens.frontZ();
-    const double span = frontZ - filmZ;
+    const LensLayout layout = layOutLens(a.lens);
+    LensOutline outline = buildLensOutline(a.lens, layout, MirrorBores{});  // holes in mirrors follow once the rays are known
+    const double filmZ = a.focus.imageZExact;
     pic.fieldDegrees = options.fieldHeight ? fieldForFilmHeight(a, filmZ, *options.fieldHeight) : automaticFanField(a);
     pic.fieldHeight = chiefFilmHeight(a, filmZ, pic.fieldDegrees);
     const double filmHalf = std::max(1.25 * pic.fieldHeight, 0.3 * outline.maxRadius);
-
-    // The view: film to a little in front of the lens, or to the focused object when it is near;
-    // cardinal points and pupils join when they are not far off, the others get edge arrows.
-    const bool objectInView = !a.focus.infinity && a.focus.objectZ - frontZ <= 2 * span;
-    double zMax = objectInView ? a.focus.objectZ + 0.04 * span : frontZ + 0.45 * span;
-    double zMin = std::min(filmZ, a.firstOrder.zFPrime) - 0.04 * span;
+    const double planeHalf = 1.05 * outline.maxRadius;
     const std::vector<Marker> markers{
         {Marker::FocalPoint, a.firstOrder.zF, "F"},
-        {Marker::FocalPoint, a.firstOrder.zFPrime, "F\u2032"},
+        {Marker::FocalPoint, a.firstOrder.zFPrime, "F\u2032", 0, true},
         {Marker::PrincipalPlane, a.firstOrder.zP, "P"},
-        {Marker::PrincipalPlane, a.firstOrder.zPPrime, "P\u2032"},
+        {Marker::PrincipalPlane, a.firstOrder.zPPrime, "P\u2032", 0, true},
         {Marker::Pupil, a.pupils.entrance.z, "entrance pupil", a.pupils.entrance.diameter},
-        {Marker::Pupil, a.pupils.exit.z, "exit pupil", a.pupils.exit.diameter}};
-    for (const Marker& m : markers) {
-        if (m.z > frontZ + 1.2 * span || m.z < filmZ - 0.5 * span) continue;
-        zMax = std::max(zMax, m.z + 0.04 * span);
-        zMin = std::min(zMin, m.z - 0.04 * span);
-    }
-    const double yHalf = 1.08 * std::max({outline.maxRadius, filmHalf, a.pupils.entrance.diameter / 2,
-                                          a.pupils.exit.diameter / 2});
+        {Marker::Pupil, a.pupils.exit.z, "exit pupil", a.pupils.exit.diameter, true}};
     c.above = {1.35 * c.em + 1.3 * c.small + 2.9 * c.small, -1.3 * c.small};
     pic.content = {1.0 * c.em, c.above.firstBaseline + 0.5 * c.small, pic.width - 1.0 * c.em,
                    pic.height - 1.6 * c.small - 2.9 * c.small};
     c.below = {pic.content.bottom + 1.2 * c.small, 1.3 * c.small};
-    pic.view = fitView(zMin, zMax, yHalf, pic.content);
 
     FanSetup setup;
     setup.filmZ = filmZ;
     setup.fieldDegrees = pic.fieldDegrees;
     setup.rays = options.rays;
-    setup.startZ = pic.view.zAt(pic.content.left);
-    if (a.lens.hasMirrors()) setup.bores = findMirrorBores(a.lens, passingLightPaths(a, setup));
-    outline = buildLensOutline(a.lens, setup.bores);
+    std::optional<LaidOutView> laidOut;
+    if (layout.moved) {
+        std::vector<ZY> lens = outline.points();
+        for (double y : {filmHalf, -filmHalf}) lens.push_back(layout.inImageSpace(y, filmZ));
+        laidOut = LaidOutView{ZYBounds::around(lens)};
+        // The rays start in front of everything drawn, or at the object when it is near.
+        const double span = laidOut->lens.span(), front = laidOut->lens.zMax;
+        const bool objectInView = !a.focus.infinity && a.focus.objectZ - front <= 2 * span;
+        setup.startZ = objectInView ? a.focus.objectZ + 0.04 * span : front + 0.45 * span;
+    } else {
+        pic.view = axialView(a, outline, markers, filmHalf, pic.content);
+        setup.startZ = pic.view.zAt(pic.content.left);
+    }
+    if (a.lens.hasMirrors()) setup.bores = findMirrorBores(a.lens, layout, passingLightPaths(a, setup));
+    outline = buildLensOutline(a.lens, layout, setup.bores);
     // Thick-lens rays first, so in overlay the real rays lie on top and the approximation shows
     // where it departs from them. A folded lens gets none (the legend says so).
     if (options.mode != DiagramMode::Exact && !a.lens.hasMirrors()) pic.rays = traceRayFans(a, RayModel::Thick, setup);
@@ -355,29 +418,40 @@ DiagramPicture composeDiagram(const LensAnalysis& a, const std::string& lensName
         std::vector<FanRay> exact = options.colourFans ? traceColourFans(a, setup) : traceRayFans(a, RayModel::Exact, setup);
         pic.rays.insert(pic.rays.end(), exact.begin(), exact.end());
     }
+    std::vector<ZY> foldedAxis;
+    if (laidOut) {
+        std::vector<ZY> drawn = outline.points();
+        for (double y : {filmHalf, -filmHalf}) drawn.push_back(layout.inImageSpace(y, filmZ));
+        for (const FanRay& ray : pic.rays) drawn.insert(drawn.end(), ray.points.begin(), ray.points.end());
+        pic.view = laidOut->fit(drawn, markers, layout, planeHalf, pic.content);
+        foldedAxis = opticalAxisPath(a, setup);
+    }
 
     c.glass(outline);
-    const double planeHalf = 1.05 * outline.maxRadius;
     const double zLeftEdge = pic.view.zAt(pic.content.left), zRightEdge = pic.view.zAt(pic.content.right);
     int offLeft = 0, offRight = 0;
     std::vector<const Marker*> shown;
+    auto spaceOf = [&](const Marker& m) { return m.imageSide ? layout.imageSpace : RigidMotion{}; };
     for (const Marker& m : markers) {
-        if (m.z <= zLeftEdge && m.z >= zRightEdge) shown.push_back(&m);
-        else c.offPicture(m.z, m.name, m.z > zLeftEdge ? offLeft++ : offRight++);
+        const ZY where = LensLayout::place(spaceOf(m), {0, 0, m.z});
+        const double y = pic.view.toPicture(where).y;
+        const bool inView = where.z <= zLeftEdge && where.z >= zRightEdge && (!laidOut || (y >= pic.content.top && y <= pic.content.bottom));
+        if (inView) shown.push_back(&m);
+        else c.offPicture(where, m.z, m.name, where.z > zLeftEdge ? offLeft++ : offRight++);
     }
     for (const Marker* m : shown)
-        if (m->kind == Marker::PrincipalPlane) c.principalPlane(m->z, planeHalf, m->name);
-    c.axis();
+        if (m->kind == Marker::PrincipalPlane) c.principalPlane(spaceOf(*m), m->z, planeHalf, m->name);
+    c.axis(foldedAxis);
     c.lensLines(outline);
     c.mirrors(outline);
     c.stop(outline.stop);
-    c.film(filmZ, filmHalf);
+    c.film(layout.imageSpace, filmZ, filmHalf);
     c.rays(pic.rays);
     for (const Marker* m : shown) {
-        if (m->kind == Marker::FocalPoint) c.focalPoint(m->z, m->name);
-        if (m->kind == Marker::Pupil) c.pupil(m->z, m->diameter, m->name);
+        if (m->kind == Marker::FocalPoint) c.focalPoint(spaceOf(*m), m->z, m->name);
+        if (m->kind == Marker::Pupil) c.pupil(spaceOf(*m), m->z, m->diameter, m->name);
     }
-    c.caption(lensName, filmZ);
+    c.caption(lensName, filmZ, layout.moved);
     c.legend();
     return pic;
 }

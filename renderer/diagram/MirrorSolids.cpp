@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "LensLayout.h"
+
 namespace lenslab {
 
 namespace {
@@ -17,10 +19,14 @@ struct Crossing {
     ZY point;
 };
 
+// How far a point (in the surface's own frame) lies off the surface's profile along z, at its height.
+double gapToProfile(const Surface& s, ZY p) { return p.z - profileZ(s, std::abs(p.y)); }
+
 ZY along(ZY a, ZY b, double t) { return {a.z + t * (b.z - a.z), a.y + t * (b.y - a.y)}; }
 
 // The first place strictly inside segment a-b where it crosses the profile of `s` at a height |y|
-// between rMin and rMax. The segment is searched only where its z lies within the profile's.
+// between rMin and rMax, within the surface's section (a shaped mirror is solid only over its own
+// segment). The segment is searched only where its z lies within the profile's.
 std::optional<Crossing> firstProfileCrossing(const Surface& s, ZY a, ZY b, double rMin, double rMax) {
     if (!(rMax > rMin)) return std::nullopt;
     const double length = std::hypot(b.z - a.z, b.y - a.y);
@@ -43,10 +49,7 @@ std::optional<Crossing> firstProfileCrossing(const Surface& s, ZY a, ZY b, doubl
         return std::nullopt;
     }
     if (!(t1 > t0)) return std::nullopt;
-    auto gap = [&](double t) {
-        const ZY p = along(a, b, t);
-        return p.z - profileZ(s, std::abs(p.y));
-    };
+    auto gap = [&](double t) { return gapToProfile(s, along(a, b, t)); };
     constexpr int kSteps = 64;
     double tPrev = t0, gPrev = gap(t0);
     for (int k = 1; k <= kSteps; ++k) {
@@ -61,7 +64,7 @@ std::optional<Crossing> firstProfileCrossing(const Surface& s, ZY a, ZY b, doubl
             const double root = 0.5 * (lo + hi);
             const ZY p = along(a, b, root);
             const bool clear = root * length > kEndClearance && (1 - root) * length > kEndClearance;
-            if (clear && std::abs(p.y) >= rMin && std::abs(p.y) <= rMax) return Crossing{root, p};
+            if (clear && std::abs(p.y) >= rMin && std::abs(p.y) <= rMax && drawnSection(s).holds(p.y)) return Crossing{root, p};
         }
         tPrev = t;
         gPrev = g;
@@ -71,29 +74,40 @@ std::optional<Crossing> firstProfileCrossing(const Surface& s, ZY a, ZY b, doubl
 
 bool hasGlassAfter(const LensSystem& lens, int i) { return lens.surfaces[i].indexAfter != 1.0; }
 
-// Whether a point lies in the glass between two consecutive surfaces of the element.
-bool insideElementGlass(const LensSystem& lens, const std::vector<int>& element, ZY p) {
+// A flat between equal media that is no mirror: a stop's diaphragm or a dummy plane, no solid a
+// mirror would need a hole for (off-axis telescopes set their stop at a mirror).
+bool isDiaphragm(const LensSystem& lens, int i) {
+    const Surface& s = lens.surfaces[i];
+    return s.vertexCurvature() == 0 && !s.mirror && s.indexAfter == lens.indexBefore(i);
+}
+
+// Whether a drawn point lies in the glass between two consecutive surfaces of the element: on the
+// film side of one face and the scene side of the other, each face judged in its own frame.
+bool insideElementGlass(const LensSystem& lens, const LensLayout& layout, const std::vector<int>& element, ZY p) {
     for (std::size_t k = 0; k + 1 < element.size(); ++k) {
-        const Surface &front = lens.surfaces[element[k]], &rear = lens.surfaces[element[k + 1]];
-        if (!hasGlassAfter(lens, element[k])) continue;
-        const double y = std::abs(p.y);
-        if (y > std::max(front.apertureRadius, rear.apertureRadius)) continue;
-        const double z1 = profileZ(front, y), z2 = profileZ(rear, y);
-        if (p.z > std::min(z1, z2) && p.z < std::max(z1, z2)) return true;
+        const int f = element[k], r = element[k + 1];
+        const Surface &front = lens.surfaces[f], &rear = lens.surfaces[r];
+        if (!hasGlassAfter(lens, f)) continue;
+        const ZY inFront = intoSpace(layout.own[f], p), inRear = intoSpace(layout.own[r], p);
+        if (std::abs(inFront.y) > std::max(front.apertureRadius, rear.apertureRadius)) continue;
+        if (gapToProfile(front, inFront) * gapToProfile(rear, inRear) < 0) return true;
     }
     return false;
 }
 
 // Whether surface `other` is set inside the element: part of its arc in the element's glass, or
 // crossing the mirror itself.
-bool setInside(const LensSystem& lens, const std::vector<int>& element, int mirror, const Surface& other) {
+bool setInside(const LensSystem& lens, const LensLayout& layout, const std::vector<int>& element, int mirror, int other) {
     constexpr int kArcSamples = 32;
-    const Surface& m = lens.surfaces[mirror];
-    ZY previous{profileZ(other, 0), 0};
+    const Surface &m = lens.surfaces[mirror], &o = lens.surfaces[other];
+    // The other surface's arc where it is drawn, and in the mirror's frame.
+    auto arcPoint = [&](double y) { return LensLayout::place(layout.own[other], {0, y, profileZ(o, y)}); };
+    const Section section = drawnSection(o);
+    ZY previous = intoSpace(layout.own[mirror], arcPoint(section.low));
     for (int k = 0; k <= kArcSamples; ++k) {
-        const double y = other.apertureRadius * k / kArcSamples;
-        const ZY p{profileZ(other, y), y};
-        if (insideElementGlass(lens, element, p)) return true;
+        const ZY drawn = arcPoint(section.low + (section.high - section.low) * k / kArcSamples);
+        const ZY p = intoSpace(layout.own[mirror], drawn);
+        if (insideElementGlass(lens, layout, element, drawn)) return true;
         if (k > 0 && firstProfileCrossing(m, previous, p, 0, m.apertureRadius)) return true;
         previous = p;
     }
@@ -111,7 +125,7 @@ std::vector<int> mirrorElement(const LensSystem& lens, int surface) {
     return element;
 }
 
-MirrorBores findMirrorBores(const LensSystem& lens, const std::vector<std::vector<ZY>>& passingLight) {
+MirrorBores findMirrorBores(const LensSystem& lens, const LensLayout& layout, const std::vector<std::vector<ZY>>& passingLight) {
     const int n = static_cast<int>(lens.surfaces.size());
     MirrorBores bores;
     bores.radius.assign(n, 0.0);
@@ -120,21 +134,30 @@ MirrorBores findMirrorBores(const LensSystem& lens, const std::vector<std::vecto
         if (!mirror.mirror) continue;
         const std::vector<int> element = mirrorElement(lens, i);
         double bore = mirror.obscurationRadius;
-        // Light comes to the mirror travelling this way along z; passing light that crosses the
-        // element travelling the same way comes from the reflecting side and needs a hole.
-        const double arrival = lens.zDirectionAfter(i - 1);
+        // Light comes to the mirror travelling this way along its own frame's z; passing light that
+        // crosses the element travelling the same way comes from the reflecting side and needs a hole.
+        const double arrival = mirror.before.applyToDirection({0, 0, lens.zDirectionAfter(i - 1)})[2];
+        // The light on its way to the mirror through the diaphragms just before it is arriving light
+        // (a decentred system's stop may lie past the mirror's rim, met by virtual propagation).
+        int arriving = element.front();
+        while (arriving > 0 && isDiaphragm(lens, arriving - 1)) --arriving;
         for (const auto& path : passingLight) {
             for (std::size_t k = 1; k < path.size(); ++k) {
-                if ((path[k].z - path[k - 1].z) * arrival <= 0) continue;
+                // Segment k ends at surface k - 1 (path[0] is the start).
+                const int endsAt = static_cast<int>(k) - 1;
+                if (endsAt >= arriving && endsAt < element.front()) continue;
+                const ZY from = intoSpace(layout.own[i], path[k - 1]), to = intoSpace(layout.own[i], path[k]);
+                if ((to.z - from.z) * arrival <= 0) continue;
                 for (int j : element) {
                     const Surface& s = lens.surfaces[j];
-                    if (const auto c = firstProfileCrossing(s, path[k - 1], path[k], bore, s.apertureRadius))
-                        bore = std::max(bore, std::abs(c->point.y));
+                    const ZY a = intoSpace(layout.own[j], path[k - 1]), b = intoSpace(layout.own[j], path[k]);
+                    if (const auto c = firstProfileCrossing(s, a, b, bore, s.apertureRadius)) bore = std::max(bore, std::abs(c->point.y));
                 }
             }
         }
         for (int j = 0; j < n; ++j)
-            if (std::find(element.begin(), element.end(), j) == element.end() && setInside(lens, element, i, lens.surfaces[j]))
+            if (std::find(element.begin(), element.end(), j) == element.end() && !isDiaphragm(lens, j) &&
+                setInside(lens, layout, element, i, j))
                 bore = std::max(bore, lens.surfaces[j].apertureRadius);
         bore = std::min(bore, mirror.apertureRadius);
         for (int j : element) bores.radius[j] = std::max(bores.radius[j], bore);
@@ -142,13 +165,17 @@ MirrorBores findMirrorBores(const LensSystem& lens, const std::vector<std::vecto
     return bores;
 }
 
-std::optional<ZY> firstSolidMirrorCrossing(const LensSystem& lens, const MirrorBores& bores, ZY a, ZY b) {
+std::optional<ZY> firstSolidMirrorCrossing(const LensSystem& lens, const LensLayout& layout, const MirrorBores& bores, ZY a, ZY b) {
+    // Where along a-b is the same in every frame: the first crossing is found mirror by mirror, each
+    // in its own frame, and brought back to the drawing.
     std::optional<Crossing> first;
     for (int i = 0; i < static_cast<int>(lens.surfaces.size()); ++i) {
         const Surface& s = lens.surfaces[i];
         if (!s.mirror) continue;
-        const auto c = firstProfileCrossing(s, a, b, bores.at(i), s.apertureRadius);
-        if (c && (!first || c->t < first->t)) first = c;
+        auto c = firstProfileCrossing(s, intoSpace(layout.own[i], a), intoSpace(layout.own[i], b), bores.at(i), s.apertureRadius);
+        if (!c || (first && c->t >= first->t)) continue;
+        c->point = LensLayout::place(layout.own[i], {0, c->point.y, c->point.z});
+        first = c;
     }
     if (!first) return std::nullopt;
     return first->point;

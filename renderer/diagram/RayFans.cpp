@@ -8,6 +8,7 @@
 #include "firstorder/FieldOfView.h"
 #include "firstorder/ThickLens.h"
 #include "trace/ExactTrace.h"
+#include "LensLayout.h"
 
 namespace lenslab {
 
@@ -19,7 +20,11 @@ ZY toZY(const Vec3& p) { return {p.z, p.y}; }
 
 // The point where the ray's line reaches plane z (behind its origin too: the thick lens's planes
 // can lie anywhere).
-ZY onPlane(const Ray& r, double z) { return toZY(pointAt(r, (z - r.origin.z) / r.direction.z)); }
+Vec3 onPlaneAt(const Ray& r, double z) { return pointAt(r, (z - r.origin.z) / r.direction.z); }
+ZY onPlane(const Ray& r, double z) { return toZY(onPlaneAt(r, z)); }
+
+// A point of a space placed by `space` (LensLayout.h), where the drawing shows it.
+ZY drawn(const RigidMotion& space, const Vec3& p) { return LensLayout::place(space, {p.x, p.y, p.z}); }
 
 double objectZ(const LensAnalysis& a) { return a.focus.infinity ? std::numeric_limits<double>::infinity() : a.focus.objectZ; }
 
@@ -67,9 +72,10 @@ std::vector<double> stopHeights(int rays, double reach) {
     return heights;
 }
 
-// Where a blocked ray meets the surface that stopped it: the surface made a plain interface (no
-// rim, no bending) to find the hit; its rim's plane when the ray misses the surface altogether.
-ZY blockedAt(const LensSystem& lens, const TraceResult& r) {
+// Where a blocked ray meets the surface that stopped it, in the surface's own frame: the surface made
+// a plain interface (no rim, no bending) to find the hit; its rim's plane when the ray misses the
+// surface altogether.
+Vec3 blockedAt(const LensSystem& lens, const TraceResult& r) {
     TraceOptions plain;
     plain.ignoreApertures = true;
     SurfaceConstants<double> c = surfaceConstants<double>(lens, r.surface, TraceDirection::SceneToFilm, plain);
@@ -77,9 +83,9 @@ ZY blockedAt(const LensSystem& lens, const TraceResult& r) {
     c.mirror = false;
     double px = r.ray.origin.x, py = r.ray.origin.y, pz = r.ray.origin.z;
     double dx = r.ray.direction.x, dy = r.ray.direction.y, dz = r.ray.direction.z;
-    if (stepThroughSurface(px, py, pz, dx, dy, dz, c) == BlockReason::None) return {pz, py};
+    if (stepThroughSurface(px, py, pz, dx, dy, dz, c) == BlockReason::None) return {px, py, pz};
     const Surface& s = lens.surfaces[r.surface];
-    return onPlane(r.ray, s.z - sag(s, s.apertureRadius));
+    return onPlaneAt(r.ray, s.z - sag(s, s.apertureRadius));
 }
 
 // How mirrors stop a ray beyond the sequential trace.
@@ -88,10 +94,10 @@ enum class Mirrors {
     Solid,       // also where it meets a mirror inside its bore or crosses a mirror's solid part
 };
 
-// The exact path: the start, every surface it passes, then the film or the point where it stops. With
-// solid mirrors a ray stops too where it meets a mirror inside its bore (the light goes into the hole)
-// or crosses a mirror's solid part on its way.
-FanRay exactRay(const LensSystem& lens, const Ray& start, const FanSetup& setup, Mirrors mirrors) {
+// The exact path, where the drawing shows it: the start, every surface it passes, then the film or the
+// point where it stops. With solid mirrors a ray stops too where it meets a mirror inside its bore (the
+// light goes into the hole) or crosses a mirror's solid part on its way.
+FanRay exactRay(const LensSystem& lens, const LensLayout& layout, const Ray& start, const FanSetup& setup, Mirrors mirrors) {
     const MirrorBores none;
     const MirrorBores& bores = mirrors == Mirrors::Solid ? setup.bores : none;
     std::vector<Vec3> path;
@@ -102,22 +108,23 @@ FanRay exactRay(const LensSystem& lens, const Ray& start, const FanSetup& setup,
     ray.points.push_back(toZY(path[0]));
     for (std::size_t k = 1; k < path.size(); ++k) {
         const int surface = static_cast<int>(k) - 1;
-        const ZY hit = toZY(path[k]);
-        const bool intoBore = lens.surfaces[surface].mirror && std::hypot(path[k].x, path[k].y) < bores.at(surface);
-        ray.points.push_back(hit);
+        // The trace records the path in the drawing's coordinates; the bore is the surface's own.
+        const auto own = layout.own[surface].inverse().applyToPoint({path[k].x, path[k].y, path[k].z});
+        const bool intoBore = lens.surfaces[surface].mirror && std::hypot(own[0], own[1]) < bores.at(surface);
+        ray.points.push_back(toZY(path[k]));
         if (intoBore) {
             ray.blocked = true;
             break;
         }
     }
     if (!ray.blocked && !r.ok()) {
-        ray.points.push_back(blockedAt(lens, r));
+        ray.points.push_back(drawn(layout.own[r.surface], blockedAt(lens, r)));
         ray.blocked = true;
     } else if (!ray.blocked && (setup.filmZ - r.ray.origin.z) * r.ray.direction.z > 0) {
-        ray.points.push_back(onPlane(r.ray, setup.filmZ));
+        ray.points.push_back(drawn(layout.imageSpace, onPlaneAt(r.ray, setup.filmZ)));
     }
     for (std::size_t k = 1; mirrors == Mirrors::Solid && k < ray.points.size(); ++k) {
-        if (const auto crossing = firstSolidMirrorCrossing(lens, bores, ray.points[k - 1], ray.points[k])) {
+        if (const auto crossing = firstSolidMirrorCrossing(lens, layout, bores, ray.points[k - 1], ray.points[k])) {
             ray.points.resize(k);
             ray.points.push_back(*crossing);
             ray.blocked = true;
@@ -128,8 +135,8 @@ FanRay exactRay(const LensSystem& lens, const Ray& start, const FanSetup& setup,
 }
 
 // The thick lens's path: to the front principal plane P, across to P' at the same height, on to the
-// film; a ray outside the entrance pupil stops at its plane.
-FanRay thickRay(const ThickLens& thick, const Ray& start, double filmZ) {
+// film (P' and the film in image space); a ray outside the entrance pupil stops at its plane.
+FanRay thickRay(const ThickLens& thick, const LensLayout& layout, const Ray& start, double filmZ) {
     const TraceResult r = traceThick(thick, start, TraceDirection::SceneToFilm);
     FanRay ray;
     ray.model = RayModel::Thick;
@@ -140,8 +147,8 @@ FanRay thickRay(const ThickLens& thick, const Ray& start, double filmZ) {
         return ray;
     }
     ray.points.push_back(onPlane(start, thick.zP));
-    ray.points.push_back(toZY(r.ray.origin));
-    if ((filmZ - r.ray.origin.z) * r.ray.direction.z > 0) ray.points.push_back(onPlane(r.ray, filmZ));
+    ray.points.push_back(drawn(layout.imageSpace, r.ray.origin));
+    if ((filmZ - r.ray.origin.z) * r.ray.direction.z > 0) ray.points.push_back(drawn(layout.imageSpace, onPlaneAt(r.ray, filmZ)));
     return ray;
 }
 
@@ -155,8 +162,10 @@ std::vector<FanRay> traceIncoming(const LensAnalysis& a, const LensSystem& lens,
                                   const std::vector<IncomingRay>& incoming, const FanSetup& setup,
                                   Mirrors mirrors = Mirrors::Solid) {
     std::vector<FanRay> rays;
+    const LensLayout layout = layOutLens(lens);
     for (const IncomingRay& in : incoming) {
-        FanRay ray = model == RayModel::Exact ? exactRay(lens, in.ray, setup, mirrors) : thickRay(a.thick, in.ray, setup.filmZ);
+        FanRay ray = model == RayModel::Exact ? exactRay(lens, layout, in.ray, setup, mirrors)
+                                              : thickRay(a.thick, layout, in.ray, setup.filmZ);
         ray.offAxis = in.offAxis;
         rays.push_back(std::move(ray));
     }
@@ -227,6 +236,21 @@ double automaticFanField(const LensAnalysis& analysis) {
     double radius = 0;
     for (const Surface& s : analysis.lens.surfaces) radius = std::max(radius, s.apertureRadius);
     return std::atan(0.5 * radius / std::abs(analysis.firstOrder.efl)) * 180 / kPi;
+}
+
+std::vector<ZY> opticalAxisPath(const LensAnalysis& analysis, const FanSetup& setup) {
+    const std::vector<IncomingRay> axis = incomingRays(analysis, {0.0}, {0.0}, setup.startZ);
+    if (axis.empty()) return {};
+    std::vector<Vec3> path;
+    TraceOptions options;
+    options.path = &path;
+    options.ignoreApertures = true;
+    const TraceResult r = traceRay(analysis.lens, axis.front().ray, TraceDirection::SceneToFilm, options);
+    std::vector<ZY> points;
+    for (const Vec3& p : path) points.push_back(toZY(p));
+    if (r.ok() && (setup.filmZ - r.ray.origin.z) * r.ray.direction.z > 0)
+        points.push_back(drawn(layOutLens(analysis.lens).imageSpace, onPlaneAt(r.ray, setup.filmZ)));
+    return points;
 }
 
 std::vector<std::vector<ZY>> passingLightPaths(const LensAnalysis& analysis, const FanSetup& setup) {

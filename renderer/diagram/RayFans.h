@@ -2,7 +2,8 @@
 // Ray fans for the diagram, drawn forward as light travels: from the object (or, for a distant or
 // out-of-view object, from a plane in front of the lens) through the sequential trace, mirrors and
 // all, to the film. Each fan is one field's meridional rays, aimed at evenly spaced heights across
-// the aperture stop and a little beyond it, so the outer rays show the stop. Paths are in lens mm.
+// the aperture stop and a little beyond it, so the outer rays show the stop. Paths are in lens mm,
+// where the drawing shows them: a folded or decentred lens's as laid out in space (LensLayout.h).
 #include <vector>
 
 #include "settings/LensAnalysis.h"
@@ -22,10 +23,10 @@ struct FanRay {
 };
 
 struct FanSetup {
-    double filmZ = 0;
+    double filmZ = 0;         // in image space (after the last surface)
     double fieldDegrees = 0;  // the off-axis fan's field (object space, toward +y); 0: the axial fan only
     int rays = 9;
-    double startZ = 0;        // where rays start when the object is farther off than this (infinity included)
+    double startZ = 0;        // object space: where rays start when the object is farther off than this (infinity included)
     MirrorBores bores;        // holes the light passes through mirrors (MirrorSolids.h); empty: none
 };
 
@@ -54,6 +55,11 @@ double chiefFilmHeight(const LensAnalysis& analysis, double filmZ, double fieldD
 // The off-axis fan's field when none is asked: 70% of the lens's largest field (LensAnalysis::field);
 // for a lens that defines none, the field imaged at half its largest clear radius (paraxially).
 double automaticFanField(const LensAnalysis& analysis);
+
+// The optical axis as a folded or decentred lens's drawing shows it: the axial field's ray through the
+// centre of the stop (the axis ray its first order is measured along), every aperture ignored, from
+// the start to the film (as far as it gets).
+std::vector<ZY> opticalAxisPath(const LensAnalysis& analysis, const FanSetup& setup);
 
 // Where the light of the drawn fields (the axis and the off-axis fan's field) runs through the
 // sequential trace: full-aperture meridional fans, exact, the paths of the rays that reach the film as

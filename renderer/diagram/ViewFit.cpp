@@ -5,14 +5,29 @@
 
 namespace lenslab {
 
-ViewTransform fitView(double zMin, double zMax, double yHalf, const PictureBox& box) {
+ViewTransform fitView(double zMin, double zMax, double yMin, double yMax, const PictureBox& box) {
     const double width = box.right - box.left, height = box.bottom - box.top;
     ViewTransform v;
-    v.scale = std::min(width / (zMax - zMin), height / (2 * yHalf));
+    v.scale = std::min(width / (zMax - zMin), height / (yMax - yMin));
     v.xAtZ0 = 0.5 * (box.left + box.right) + 0.5 * (zMin + zMax) * v.scale;
     // On a pixel centre, so the one-pixel axis stays crisp.
-    v.yAtAxis = std::floor(0.5 * (box.top + box.bottom)) + 0.5;
+    v.yAtAxis = std::floor(0.5 * (box.top + box.bottom) + 0.5 * (yMin + yMax) * v.scale) + 0.5;
     return v;
+}
+
+ViewTransform fitView(double zMin, double zMax, double yHalf, const PictureBox& box) {
+    return fitView(zMin, zMax, -yHalf, yHalf, box);
+}
+
+ZYBounds ZYBounds::around(const std::vector<ZY>& points) {
+    ZYBounds b{points.front().z, points.front().z, points.front().y, points.front().y};
+    for (const ZY& p : points) {
+        b.zMin = std::min(b.zMin, p.z);
+        b.zMax = std::max(b.zMax, p.z);
+        b.yMin = std::min(b.yMin, p.y);
+        b.yMax = std::max(b.yMax, p.y);
+    }
+    return b;
 }
 
 namespace {

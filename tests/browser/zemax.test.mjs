@@ -3,8 +3,9 @@
 // conics and aspheric terms, the colour block with the numbers the API gives, and a diagram whose
 // colour fans (F, d, C) appear when the box is ticked. A wavelength outside 180-2500 nm is marked in
 // its field and never sent. A Code V .seq with a tilted plate uploads, its surface table shows the
-// tilts and its colour block the focal lengths at F, d and C. Screenshots:
-// tests/browser/artifacts/zemax-lens.png, codev-tilted-plate.png.
+// tilts and its colour block the focal lengths at F, d and C; a singlet folded by a 45 degree mirror
+// uploads and its diagram is drawn. Screenshots: tests/browser/artifacts/zemax-lens.png,
+// codev-tilted-plate.png, codev-fold-mirror.png.
 // usage: node zemax.test.mjs LENSLAB_BINARY SOURCE_DIR
 import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -63,6 +64,42 @@ async function checkTiltedCodeVUpload(page) {
   const id = await page.getAttribute("#lens-title", "data-id");
   await page.waitForFunction((id) => document.querySelector("#diagram-status").textContent.includes(id), id);
   await (await page.$("#diagram")).screenshot({ path: join(artifacts, "codev-tilted-plate.png") });
+}
+
+// A Code V singlet folded by a flat mirror at 45 degrees (ADE 45, BEN), written here: the page's
+// diagram of it is drawn, rays and the mirror (the diagram lays a folded lens out in space:
+// tests/diagram/test_folded_pictures.cpp checks where). Screenshot: codev-fold-mirror.png.
+const FOLD_MIRROR_SEQ = `RDM
+LEN "A singlet folded by a mirror at 45 degrees"
+WL 587.5618
+EPD 20
+SO 0 1e10
+S 100 5 1.6,40
+STO
+S -150 20
+S 0 -77 REFL
+  ADE 45
+  BEN
+SI 0 0
+GO
+`;
+
+async function checkFoldedCodeVUpload(page) {
+  const upload = join(work, "fold-mirror.seq");
+  writeFileSync(upload, FOLD_MIRROR_SEQ);
+  const oldSrc = await page.getAttribute("#diagram", "src");
+  await page.setInputFiles("#lens-file", upload);
+  await waitForUpload(page);
+  await page.waitForFunction(() => document.querySelector("#lens-title").textContent === "fold-mirror");
+  const id = await page.getAttribute("#lens-title", "data-id");
+  await page.waitForFunction((id) => document.querySelector("#diagram-status").textContent.includes(id), id);
+  await page.waitForFunction((old) => { const img = document.querySelector("#diagram"); return img.src !== old && img.complete && img.naturalWidth > 0; }, oldSrc);
+  // Rays in the exact rays' blue or, with the colour fans ticked above, the F, d and C lines' colours.
+  let rays = 0;
+  for (const rgb of [[25, 95, 215], [0, 150, 190], [185, 150, 0], [235, 45, 0]]) rays += await diagramPixelsNear(page, rgb);
+  const mirror = await diagramPixelsNear(page, [70, 70, 80]);
+  check(rays > 500 && mirror > 50, `the folded .seq's diagram is drawn: ${rays} ray pixels, ${mirror} mirror pixels`);
+  await (await page.$("#diagram")).screenshot({ path: join(artifacts, "codev-fold-mirror.png") });
 }
 
 async function main() {
@@ -144,6 +181,7 @@ async function main() {
     }
     await page.screenshot({ path: join(artifacts, "zemax-lens.png"), fullPage: true });
     await checkTiltedCodeVUpload(page);
+    await checkFoldedCodeVUpload(page);
   } finally {
     await closeAll(context, server, work);
   }

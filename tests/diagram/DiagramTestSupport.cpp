@@ -47,6 +47,13 @@ bool showsColour(Rgba pixel, Rgba colour, double minCoverage) {
     return true;
 }
 
+bool showsNear(const RgbaImage& image, Point2 p, Rgba colour, double coverage) {
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            if (showsColour(pixelAt(image, {p.x + dx, p.y + dy}), colour, coverage)) return true;
+    return false;
+}
+
 std::vector<int> rowsWithColour(const RgbaImage& image, int x, Rgba colour) {
     std::vector<int> rows;
     for (int y = 0; y < image.height; ++y)

@@ -22,6 +22,8 @@ Rgba pixelAt(const RgbaImage& image, Point2 p);
 bool near(Rgba a, Rgba b, int tolerance);
 // `colour` drawn over white with at least `minCoverage` (anti-aliased line edges included).
 bool showsColour(Rgba pixel, Rgba colour, double minCoverage = 0.35);
+// Whether `colour` shows within a pixel of p, at least at `coverage`.
+bool showsNear(const RgbaImage& image, Point2 p, Rgba colour, double coverage = 0.5);
 // Rows in column x that show `colour`.
 std::vector<int> rowsWithColour(const RgbaImage& image, int x, Rgba colour);
 

@@ -84,14 +84,6 @@ void reflect(double vertex, double r, ZY& p, ZY& d) {
     d = d + (-2 * dot(d, n)) * n;
 }
 
-// Whether `colour` shows within a pixel of p.
-bool showsNear(const RgbaImage& image, Point2 p, Rgba colour, double coverage = 0.5) {
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-            if (showsColour(pixelAt(image, {p.x + dx, p.y + dy}), colour, coverage)) return true;
-    return false;
-}
-
 ZY midpoint(ZY a, ZY b) { return {0.5 * (a.z + b.z), 0.5 * (a.y + b.y)}; }
 
 }  // namespace

@@ -22,14 +22,6 @@ int pixelsShowing(const RgbaImage& image, Rgba colour) {
     return count;
 }
 
-// Whether `colour` shows within a pixel of p, at least at `coverage`.
-bool showsNear(const RgbaImage& image, Point2 p, Rgba colour, double coverage = 0.5) {
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-            if (showsColour(pixelAt(image, {p.x + dx, p.y + dy}), colour, coverage)) return true;
-    return false;
-}
-
 LensSystem lensFile(const std::string& relative) { return loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/" + relative); }
 
 }  // namespace
