@@ -120,6 +120,13 @@ void buildItems(ItemRunner& runner, const std::vector<LensSource>& lensSources, 
     }
     const auto edges = std::find_if(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kSlantedEdgeSceneId; });
     if (edges != scenes.end()) content.slantedEdges = buildSlantedEdges(runner, *edges, content.lenses, o);
+    const auto ladderScene =
+        std::find_if(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kSensorLadderSceneId; });
+    const LensEntry* ladderLens = renderIds.empty() ? nullptr : findLens(content.lenses, renderIds.front());
+    if (ladderScene != scenes.end() && ladderLens)
+        content.sensorLadder = buildSensorLadder(runner, *ladderScene, *ladderLens, plan, o);
+    else if (ladderScene != scenes.end() && !renderIds.empty())
+        for (double iso : kSensorLadderIsos) runner.skip("sensor ladder at ISO " + formatNumber(iso));
     const ReportScene* speedScene = nullptr;
     for (const ReportScene& s : content.scenes)
         if (!speedScene && s.scene.realisticCamera) speedScene = &s;
@@ -152,10 +159,13 @@ ReportSummary buildReport(const ReportOptions& options, const std::function<void
     const bool speed = realisticScenes > 0 && !renderIds.empty();
     const bool chart = std::any_of(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kColourChartSceneId; });
     const bool edges = std::any_of(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kSlantedEdgeSceneId; });
+    const bool ladder = !renderIds.empty() &&
+        std::any_of(scenes.begin(), scenes.end(), [](const SceneSource& s) { return s.id == kSensorLadderSceneId; });
     std::vector<std::string> lensIds;
     for (const LensSource& l : lensSources) lensIds.push_back(l.id);
     const int total = (chart ? 7 : 5) * static_cast<int>(lensSources.size()) + 3 * realisticScenes * static_cast<int>(renderIds.size()) +
-                      (speed ? 2 * static_cast<int>(plan.speedSpps.size()) : 0) + (edges ? slantedEdgeItemCount(lensIds) : 0) + 1;
+                      (speed ? 2 * static_cast<int>(plan.speedSpps.size()) : 0) + (edges ? slantedEdgeItemCount(lensIds) : 0) +
+                      (ladder ? static_cast<int>(std::size(kSensorLadderIsos)) : 0) + 1;
 
     ReportSummary summary;
     ItemRunner runner(o.outputDir, readManifest(o.outputDir), total, onProgress, cancel, summary);

@@ -1,10 +1,12 @@
 #include "RenderItems.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
 #include "ImageDifference.h"
+#include "prescription/NumberText.h"
 #include "Render.h"
 #include "SiteFiles.h"
 
@@ -62,10 +64,15 @@ struct RenderJob {
     double fstop;
     std::string ghostModel;                       // for the scenes whose camera asks for ghosts
     std::optional<bool> spectral = std::nullopt;  // unset: as the lens decides
+    // A sensor's readout (the sensor ladder) of the crop window; its text names the item.
+    std::optional<std::string> sensor = std::nullopt;
+    std::optional<std::array<double, 4>> crop = std::nullopt;
+    std::string variant = "";  // told apart in the item's id and image name ("-iso1600")
 
     // The radiometric camera weight averages the exit pupil's solid angle, about pi / (4 N^2) of the
     // scene radiance: scaling by its inverse shows every lens and f-number at the scene's brightness.
-    double exposure() const { return 4 * fstop * fstop / M_PI; }
+    // A sensor's output is developed already.
+    double exposure() const { return sensor ? 1.0 : 4 * fstop * fstop / M_PI; }
 
     RenderSettings settings(int threads) const {
         RenderSettings s;
@@ -79,6 +86,8 @@ struct RenderJob {
         s.width = width;
         s.height = height;
         s.threads = threads;
+        if (sensor) s.sensor = sensorSpecFromPairs(parseSensorPairs(*sensor));
+        s.crop = crop;
         return s;
     }
 
@@ -88,13 +97,16 @@ struct RenderJob {
         h.addFile(lens.facts.path).add(mode).add(double(spp)).add(double(width)).add(double(height)).add(fstop).add(exposure());
         if (spectral) h.add(*spectral ? "spectral" : "rgb");
         if (ghostModel != "exact") h.add(ghostModel);  // the exact model's renders keep their earlier hash
+        if (sensor) h.add("sensor " + *sensor);
+        if (crop)
+            for (double c : *crop) h.add(c);
         return h.hex();
     }
 };
 
 // Runs a render through the cache, counting actual renders; nullopt when it failed.
 std::optional<RenderRecord> renderItem(ItemRunner& runner, const RenderJob& job, int threads) {
-    const std::string film = job.spectral ? (*job.spectral ? "-spectral" : "-rgb") : "";
+    const std::string film = (job.spectral ? (*job.spectral ? "-spectral" : "-rgb") : "") + job.variant;
     const std::string id = "render/" + job.scene.id + "/" + job.lens.facts.id + "/" + job.mode + film;
     const std::string image = "assets/renders/" + job.scene.id + "/" + job.lens.facts.id + "-" + job.mode + film + ".png";
     const ManifestItem* item =
@@ -229,6 +241,56 @@ SpeedStudy buildSpeedStudy(ItemRunner& runner, const ReportScene& scene, const L
         study.points.push_back({"thick", plan.spp, reference->approximate.setupSeconds + reference->approximate.renderSeconds,
                                 reference->rmsDifference});
     return study;
+}
+
+namespace {
+
+// The rms of each pixel's green minus its 5 x 5 neighbourhood's mean, over the image's mean green.
+double relativeNoise(const RgbaImage& im) {
+    double sum = 0, squares = 0, level = 0;
+    int n = 0;
+    const auto green = [&](int x, int y) { return double(im.rgba[(std::size_t(y) * im.width + x) * 4 + 1]); };
+    for (int y = 2; y + 2 < im.height; ++y)
+        for (int x = 2; x + 2 < im.width; ++x) {
+            double local = 0;
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx) local += green(x + dx, y + dy) / 25;
+            const double d = green(x, y) - local;
+            sum += d;
+            squares += d * d;
+            level += green(x, y);
+            ++n;
+        }
+    if (n == 0 || level <= 0) return 0;
+    const double mean = sum / n;
+    return std::sqrt(std::max(0.0, squares / n - mean * mean)) / (level / n);
+}
+
+}  // namespace
+
+SensorLadder buildSensorLadder(ItemRunner& runner, const SceneSource& scene, const LensEntry& lens, const RenderPlan& plan,
+                               const ReportOptions& o) {
+    // A full-frame film of 4.35 um pixels, cropped around the rim of the sphere in focus as
+    // dgauss.50mm frames it (docs/sensor.md).
+    constexpr int kWidth = 8256, kHeight = 5504;
+    const double halfX = 0.5 * plan.width / kWidth, halfY = 0.5 * plan.width * 2 / 3 / kHeight;
+    const std::array<double, 4> crop = {0.415 - halfX, 0.415 + halfX, 0.575 - halfY, 0.575 + halfY};
+    SensorLadder ladder{scene.id, lens.facts.id, {}, ""};
+    const double fstop = renderFstopFor(lens, o.renderFstop);
+    for (const double iso : kSensorLadderIsos) {
+        const std::string isoText = formatNumber(iso);
+        RenderJob job{scene, lens, "exact", plan.spp, kWidth, kHeight, fstop, plan.ghostModel};
+        job.sensor = "iso=" + isoText + ",pitch=4.35";
+        job.crop = crop;
+        job.variant = "-iso" + isoText;
+        const std::optional<RenderRecord> record = renderItem(runner, job, o.threads);
+        if (!record) {
+            ladder.problem = "a render of the ladder failed (see the problems list)";
+            continue;
+        }
+        ladder.rungs.push_back({iso, *record, relativeNoise(decodeSitePng(runner.site(), record->image))});
+    }
+    return ladder;
 }
 
 }  // namespace lenslab

@@ -37,4 +37,12 @@ ColourFringes buildColourFringes(ItemRunner& runner, const SceneSource& chart, c
 SpeedStudy buildSpeedStudy(ItemRunner& runner, const ReportScene& scene, const LensEntry& lens, const RenderPlan& plan,
                            const ReportOptions& options);
 
+// The scene the sensor's ISO ladder is cropped from, by its id, and the ladder's ISO speeds.
+constexpr const char* kSensorLadderSceneId = "depth-of-field";
+constexpr double kSensorLadderIsos[] = {100, 400, 1600, 6400, 25600};
+
+// `lens` in that scene behind a sensor at each ISO: crops of plan.width pixels at 4.35 um.
+SensorLadder buildSensorLadder(ItemRunner& runner, const SceneSource& scene, const LensEntry& lens, const RenderPlan& plan,
+                               const ReportOptions& options);
+
 }  // namespace lenslab

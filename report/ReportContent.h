@@ -98,6 +98,20 @@ struct SpeedStudy {
     std::vector<SpeedPoint> points;
 };
 
+// One scene through one lens at rising ISO, a 100% crop of a full-frame sensor with Nikon D850
+// pixels (docs/sensor.md): the same metered brightness, the noise of less and less light.
+struct SensorRung {
+    double iso = 0;
+    RenderRecord render;
+    double noise = 0;  // rms of pixel minus its 5 x 5 neighbourhood's mean, over the mean (8-bit sRGB green)
+};
+
+struct SensorLadder {
+    std::string sceneId, lensId;
+    std::vector<SensorRung> rungs;
+    std::string problem;  // why rungs are missing
+};
+
 struct ReportContent {
     std::string version, generatedAt;
     std::vector<std::string> parameters;  // "name: value" lines shown in the header
@@ -105,6 +119,7 @@ struct ReportContent {
     std::vector<ReportScene> scenes;
     SpeedStudy speed;
     SlantedEdges slantedEdges;
+    SensorLadder sensorLadder;
     std::vector<std::string> problems;
 };
 

@@ -34,6 +34,11 @@ function renderRequest(mode) {
   }
   if ($("render-tilt").value) request.tilt = Number($("render-tilt").value);
   if ($("render-swing").value) request.swing = Number($("render-swing").value);
+  if ($("render-sensor-iso").value || $("render-sensor-pitch").value) {
+    request.sensor = {};
+    if ($("render-sensor-iso").value) request.sensor.iso = Number($("render-sensor-iso").value);
+    if ($("render-sensor-pitch").value) request.sensor.pitch = Number($("render-sensor-pitch").value);
+  }
   // "x,y" as typed; anything else goes to the service as written, which refuses it by name.
   const shift = $("render-shift").value.trim();
   if (shift) request.shift = shift.split(",").map((v) => (v.trim() === "" || isNaN(Number(v)) ? v.trim() : Number(v)));
@@ -47,7 +52,8 @@ function describeRequest(r) {
   const ghosts = r.ghosts && r.ghosts !== "off" ? ` · ghosts ${r.ghosts} (${r.ghost_model})` : "";
   const turns = [r.tilt ? `tilt ${r.tilt}°` : "", r.swing ? `swing ${r.swing}°` : "", r.shift ? `shift ${r.shift.join(", ")} mm` : ""];
   const mount = turns.filter(Boolean).map((t) => ` · ${t}`).join("");
-  return `${r.lens} · ${r.scene} · ${fstop} · ${focus} · ${r.width}×${r.height} · ${r.spp} spp${film}${ghosts}${mount}`;
+  const sensor = r.sensor ? ` · sensor${r.sensor.iso ? ` ISO ${r.sensor.iso}` : ""}${r.sensor.pitch ? ` ${r.sensor.pitch} µm` : ""}` : "";
+  return `${r.lens} · ${r.scene} · ${fstop} · ${focus} · ${r.width}×${r.height} · ${r.spp} spp${film}${ghosts}${mount}${sensor}`;
 }
 
 // ---- the viewer's renders ------------------------------------------------------------------------

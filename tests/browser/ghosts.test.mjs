@@ -110,6 +110,32 @@ async function checkTiltShiftRender(page, base) {
   check(refusal.includes("shift must be two numbers"), `a one-number shift is refused in words: "${refusal}"`);
 }
 
+// The sensor fields reach the job, the history names them, and the EXR carries the readout's
+// calibration; a film diagonal the pitch contradicts is refused in the service's words.
+async function checkSensorRender(page, base) {
+  await page.fill("#render-tilt", "");
+  await page.fill("#render-shift", "");
+  await page.fill("#render-sensor-iso", "6400");
+  await page.fill("#render-sensor-pitch", "4.35");
+  const finished = await page.$$eval('.history-item[data-state="done"]', (items) => items.length);
+  await page.click("#render-button");
+  await page.waitForFunction((n) => document.querySelectorAll('.history-item[data-state="done"]').length > n, finished,
+                             { timeout: 120000 });
+  const job = (await (await page.request.get(`${base}api/renders`)).json()).renders[0];
+  check(job.request.sensor.iso === 6400 && job.request.sensor.pitch === 4.35 && job.state === "done",
+        `the render was read out by the sensor asked for: ${JSON.stringify(job.request.sensor)}`);
+  check((await page.textContent(".history-item")).includes("sensor ISO 6400 4.35 µm"), "the history names the sensor");
+  const exr = await (await page.request.get(`${base}api/renders/${job.id}/image.exr`)).body();
+  check(exr.includes("ISO 6400, metered exposure"), "the EXR's header carries the sensor's calibration");
+  await page.fill("#film-diagonal", "20");
+  await page.click("#render-button");
+  await page.waitForFunction(() => document.querySelector("#message").textContent.includes("makes a film diagonal of"));
+  check(true, `a film diagonal unlike the pitch's is refused in words: "${await page.textContent("#message")}"`);
+  await page.fill("#film-diagonal", "");
+  await page.fill("#render-sensor-iso", "");
+  await page.fill("#render-sensor-pitch", "");
+}
+
 async function main() {
   const { server, base, context, page } = await openPage(binary, work, { width: 1280, height: 900 });
   try {
@@ -117,6 +143,7 @@ async function main() {
     await checkEditedCoating(page, base, before);
     await checkFlareRender(page, base);
     await checkTiltShiftRender(page, base);
+    await checkSensorRender(page, base);
   } finally {
     await closeAll(context, server, work);
   }

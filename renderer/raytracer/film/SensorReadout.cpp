@@ -47,6 +47,16 @@ std::string sensorWithoutLens(const std::string& cameraType) {
     return "the sensor needs a lens to expose through (Camera \"realistic\"); this scene's camera is \"" + cameraType + "\"";
 }
 
+std::optional<double> sensorFilmDiagonalMm(const SensorSpec& spec, std::optional<double> askedMm, int width, int height) {
+    if (!spec.pitchMicrometres) return std::nullopt;
+    const double diagonal = *spec.pitchMicrometres * 1e-3 * std::hypot(double(width), double(height));
+    if (askedMm && std::fabs(*askedMm - diagonal) > 1e-6 * diagonal)
+        throw SensorSpecError("sensor: pitch " + shown(*spec.pitchMicrometres) + " um over " + std::to_string(width) + "x" +
+                              std::to_string(height) + " pixels makes a film diagonal of " + shown(diagonal) + " mm, not the " +
+                              shown(*askedMm) + " mm asked for");
+    return diagonal;
+}
+
 SensorCalibration calibrateSensor(const SensorSpec& spec, const SensorExposureInput& input) {
     if (!(input.exposurePerValue > 0) || !std::isfinite(input.exposurePerValue))
         throw SensorSpecError("sensor: the film has no exposure to read (its camera has no lens)");

@@ -14,6 +14,7 @@
 // that is reached first (below the base ISO, 78 / the full well's exposure).
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "film/SensorSpec.h"
@@ -41,6 +42,10 @@ struct SensorCalibration {
 
 // The refusal of a sensor behind a camera of this type, which has no lens.
 std::string sensorWithoutLens(const std::string& cameraType);
+
+// The film diagonal (mm) a sensor's pitch makes over width x height pixels; nullopt when it gives
+// none. Throws SensorSpecError when a diagonal asked for as well disagrees.
+std::optional<double> sensorFilmDiagonalMm(const SensorSpec& spec, std::optional<double> askedMm, int width, int height);
 
 // Throws SensorSpecError when the frame cannot be exposed (no lens radiometry, a pitch unlike the film's).
 SensorCalibration calibrateSensor(const SensorSpec& spec, const SensorExposureInput& input);

@@ -104,13 +104,14 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     tiles_ = makeTiles(area_, settings.tileSize);
     scene_.film.crop = c;  // the camera prepares only the film radii this window covers
 
-    if (settings_.sensor && settings_.sensor->pitchMicrometres) {
+    if (settings_.sensor) {
         // A sensor's pitch sets the film's size.
-        const double diagonal = *settings_.sensor->pitchMicrometres * 1e-3 * std::hypot(double(width_), double(height_));
-        if (settings_.camera.filmDiagonal && std::fabs(*settings_.camera.filmDiagonal - diagonal) > 1e-6 * diagonal)
-            throw SceneError("the sensor's pitch makes a film diagonal of " + std::to_string(diagonal) +
-                             " mm, not the " + std::to_string(*settings_.camera.filmDiagonal) + " mm asked for");
-        settings_.camera.filmDiagonal = diagonal;
+        try {
+            if (auto d = sensorFilmDiagonalMm(*settings_.sensor, settings_.camera.filmDiagonal, width_, height_))
+                settings_.camera.filmDiagonal = d;
+        } catch (const SensorSpecError& e) {
+            throw SceneError(e.what());
+        }
     }
     arena_.execute([&] {
         camera_ = makeCamera(scene_, settings_.camera, width_, height_, filter_.radius(), cancel);

@@ -11,7 +11,15 @@ void checkRenderSettings(const RenderSettings& settings) {
     options.confined = settings.confined;
     options.optionsOnly = true;
     SceneDescription scene = parseSceneFile(settings.scenePath, options);
-    if (settings.sensor && scene.camera.type != "realistic") throw SceneError(sensorWithoutLens(scene.camera.type));
+    if (settings.sensor) {
+        if (scene.camera.type != "realistic") throw SceneError(sensorWithoutLens(scene.camera.type));
+        try {
+            sensorFilmDiagonalMm(*settings.sensor, settings.camera.filmDiagonal, settings.width.value_or(scene.film.xresolution),
+                                 settings.height.value_or(scene.film.yresolution));
+        } catch (const SensorSpecError& e) {
+            throw SceneError(e.what());
+        }
+    }
     checkCameraSettings(scene, settings.camera);
 }
 
