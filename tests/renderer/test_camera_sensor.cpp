@@ -258,11 +258,12 @@ std::string skyScene(const std::string& camera) {
 TEST(CameraSensor, ThroughALensTheCentreCollectsTheProjectedSolidAngleThatPasses) {
     // E / L = integral of cos dw over the directions from the film's centre that pass the lens,
     // found here by tracing a cosine-weighted cone through the exact lens; at L = 1000 cd/m^2 and
-    // 1/30 s the centre reads 0.018 ISO times E t. The f-number alone (pi / (4 N^2), the marginal
+    // 1/30 s (the sensor's, not the scene's half-second shutter) the centre reads 0.018 ISO times
+    // E t. The f-number alone (pi / (4 N^2), the marginal
     // ray's from infinity) agrees to 0.5%.
     test::TempDir dir;
     const std::string scene = dir.write("sky.pbrt", skyScene(test::courseCamera("dgauss.50mm.dat",
-        "\"float fstop\" 8 \"float focaldistance\" 1e6 \"float filmdiagonal\" 5")));
+        "\"float fstop\" 8 \"float focaldistance\" 1e6 \"float filmdiagonal\" 5 \"float shutteropen\" 0 \"float shutterclose\" 0.5")));
     RenderSettings s;
     s.sensor = sensorSpecFromPairs(parseSensorPairs("iso=100,exposure=0.0333333333333,nits=1000,read=0,prnu=0,dark=0,dsnu=0"));
     // 4,096 lens samples over the central 0.8 mm: 2% of the sampled pupil region is blocked at
