@@ -145,8 +145,9 @@ TEST_F(ServerInputAndMessages, TheReportAndItsJobNameNoServerPath) {
     const std::string id = upload(kSmallLensTable, "mine.dat");
     auto c = server_->client();
     c.set_read_timeout(60);
-    // The uploaded lens alone: no bundled lens, so no scene is rendered (what the report says of a
-    // path comes from the upload; renders are the ServerApi report test's).
+    // The uploaded lens alone: no bundled lens (it built all thirteen besides, unasked, while only
+    // uploads were named), so no scene is rendered (what the report says of a path comes from the
+    // upload; renders are the ServerApi report test's).
     const Reply started = postJson(c, "/api/report", {{"quick", true}, {"lenses", {id}}});
     ASSERT_EQ(started.status, 202) << started.raw;
     json status;
@@ -156,6 +157,7 @@ TEST_F(ServerInputAndMessages, TheReportAndItsJobNameNoServerPath) {
         std::this_thread::sleep_for(std::chrono::milliseconds(250));
     }
     ASSERT_EQ(status.value("state", ""), "done") << status.dump();
+    EXPECT_EQ(status["summary"]["lenses"], 1) << "only the lens named is built: " << status.dump();
     expectNoServerPath(status.dump(), "GET /api/report");
     for (const std::string& file : {std::string("/report/manifest.json"), "/report/assets/lenses/" + id + ".json"}) {
         const Reply r = get(c, file);
