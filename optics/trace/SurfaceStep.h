@@ -53,8 +53,9 @@ struct SurfaceConstants {
 // product); at the near one, cc / q, the line's F = a t^2 + 2 b t + cc has slope 2 sign(b) sqrt(disc),
 // so it is the forward crossing when b dz >= 0. For a sphere (K = 1) the far root needs no division
 // per ray: q * radius. Returns the parameter t; `missed` when that root is off the cap or behind the
-// ray. kVirtual: behind the ray too (a decentred or folded system's surfaces may lie behind it: design
-// programs propagate the ray back to them, "virtually").
+// ray. kVirtual (a decentred or folded system, whose surfaces may lie behind the ray: design programs
+// propagate it back to them, "virtually"): the nearest root on the cap ahead, else the nearest behind
+// (the crossing sense there broke the off-axis mirrors CODV_35571 and zmax_37992: not yet understood).
 template <class T, bool kConic, bool kVirtual = false>
 inline T intersectQuadric(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConstants<T>& s, bool& missed) {
     const T c = s.curvature, K = kConic ? s.conicFactor : T(1);
@@ -68,10 +69,19 @@ inline T intersectQuadric(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConst
     // The other root. A flat surface (or a paraboloid's axial ray) has none: it comes out +-inf or
     // NaN, which the cap test rejects.
     const T tFar = kConic ? q / a : q * s.radius;
+    if constexpr (kVirtual) {
+        // The nearest root on the cap ahead; without one, the nearest behind.
+        const bool nearCap = (std::fabs(tNear) < T(1e30)) & (T(1) + K * c * (qz + tNear * dz) > T(0));
+        const bool farCap = (std::fabs(tFar) < T(1e30)) & (T(1) + K * c * (qz + tFar * dz) > T(0));
+        const bool nearAhead = nearCap & (tNear >= T(-1e-9)), farAhead = farCap & (tFar >= T(-1e-9));
+        const T t = (nearAhead | farAhead) ? (nearAhead & (!farAhead | (tNear <= tFar)) ? tNear : tFar)
+                                           : (nearCap & (!farCap | (tNear >= tFar)) ? tNear : tFar);
+        missed = !(disc >= T(0)) | !(nearCap | farCap);
+        return t;
+    }
     const T t = b * dz >= T(0) ? tNear : tFar;
     const bool onCap = (std::fabs(t) < T(1e30)) & (T(1) + K * c * (qz + t * dz) > T(0));
-    const bool ahead = kVirtual || t >= T(-1e-9);
-    missed = !(disc >= T(0)) | !onCap | !ahead;
+    missed = !(disc >= T(0)) | !onCap | !(t >= T(-1e-9));
     return t;
 }
 
