@@ -99,29 +99,34 @@ std::optional<Ray> aimedRay(const LensSystem& lens, const FieldAim& aim, double 
     constexpr double kInside = 1 - 1e-9;
     const double tx = px * aim.stopRadius * kInside, ty = py * aim.stopRadius * kInside;
     double J[2][2];
-    double u = aim.chiefAimX, v = aim.chiefAimY, sx = 0, sy = 0;  // the start and its stop point
+    double u = aim.chiefAimX, v = aim.chiefAimY;  // the start (the chief ray's: the stop's centre)
+    StopPoint s;                                   // and where it crosses the stop
     if (guess && guess->valid) {
         std::copy(&guess->inverseJacobian[0][0], &guess->inverseJacobian[0][0] + 4, &J[0][0]);
-        u = guess->aimX, v = guess->aimY, sx = guess->stopX, sy = guess->stopY;
+        u = guess->aimX, v = guess->aimY, s = {guess->stopX, guess->stopY};
     } else {
         std::copy(&aim.inverseJacobian[0][0], &aim.inverseJacobian[0][0] + 4, &J[0][0]);
     }
-    u += J[0][0] * (tx - sx) + J[0][1] * (ty - sy);
-    v += J[1][0] * (tx - sx) + J[1][1] * (ty - sy);
-    std::optional<StopPoint> s = stopPoint(lens, rayThrough(aim, u, v));
     // Broyden's method from the start's Jacobian: one trace per step, the inverse Jacobian updated
     // by each step's secant.
-    for (int it = 0; it < 40 && s; ++it) {
-        const double rx = tx - s->x, ry = ty - s->y;
+    for (int it = 0; it < 40; ++it) {
+        const double rx = tx - s.x, ry = ty - s.y;
         if (std::hypot(rx, ry) <= 1e-10 * aim.stopRadius) {
-            if (guess) *guess = {true, u, v, s->x, s->y, {{J[0][0], J[0][1]}, {J[1][0], J[1][1]}}};
+            if (guess) *guess = {true, u, v, s.x, s.y, {{J[0][0], J[0][1]}, {J[1][0], J[1][1]}}};
             return rayThrough(aim, u, v);
         }
-        const double du = J[0][0] * rx + J[0][1] * ry, dv = J[1][0] * rx + J[1][1] * ry;
-        const std::optional<StopPoint> next = stopPoint(lens, rayThrough(aim, u + du, v + dv));
+        double du = J[0][0] * rx + J[0][1] * ry, dv = J[1][0] * rx + J[1][1] * ry;
+        std::optional<StopPoint> next = stopPoint(lens, rayThrough(aim, u + du, v + dv));
+        // A step past where the rays still reach the stop (beyond the fold where they graze a steep
+        // surface, just outside the rim of a concave stop at a steep field) is halved back toward
+        // the last ray that did: the asked point lies on this side of the fold.
+        for (int halving = 0; halving < 30 && !next; ++halving) {
+            du *= 0.5, dv *= 0.5;
+            next = stopPoint(lens, rayThrough(aim, u + du, v + dv));
+        }
         if (!next) return std::nullopt;
         u += du, v += dv;
-        const double fx = next->x - s->x, fy = next->y - s->y;                   // change of the stop point
+        const double fx = next->x - s.x, fy = next->y - s.y;                     // change of the stop point
         const double jfx = J[0][0] * fx + J[0][1] * fy, jfy = J[1][0] * fx + J[1][1] * fy;
         const double denom = du * jfx + dv * jfy;
         if (std::fabs(denom) > 0) {
@@ -130,7 +135,7 @@ std::optional<Ray> aimedRay(const LensSystem& lens, const FieldAim& aim, double 
             J[0][0] += ex * rowX, J[0][1] += ex * rowY;
             J[1][0] += ey * rowX, J[1][1] += ey * rowY;
         }
-        s = next;
+        s = *next;
     }
     return std::nullopt;
 }

@@ -44,12 +44,18 @@ struct SurfaceConstants {
     T aspheric[8] = {};     // coefficients of r^2, r^4, ..., r^16
 };
 
-// The nearest intersection ahead of the ray with the quadric's cap at the vertex (where the normal
-// c q + K c qz e_z + e_z points toward +z). Both roots are formed without cancellation (one from
-// Vieta's product). For a sphere (K = 1) the far root needs no division per ray: q * radius.
-// Returns the parameter t; `missed` when no root on the cap lies ahead. kVirtual: the root on the
-// cap wherever it lies along the ray's line, behind the ray too (a decentred or folded system's
-// surfaces may lie behind it: design programs propagate the ray back to them, "virtually").
+// The ray's intersection with the quadric's cap at the vertex (where the normal c q + K c qz e_z +
+// e_z points toward +z): the root where the line crosses the surface in the sense it travels along z
+// (from the +z side to the -z side when dz < 0), as light in a sequential system meets each surface
+// from the medium before it. The other root crosses back: where both lie on the cap (a steep ray at a
+// strongly curved surface, far outside its rim), taking the nearer one would make the hit depend on
+// where along its line the ray starts. Both roots are formed without cancellation (one from Vieta's
+// product); at the near one, cc / q, the line's F = a t^2 + 2 b t + cc has slope 2 sign(b) sqrt(disc),
+// so it is the forward crossing when b dz >= 0. For a sphere (K = 1) the far root needs no division
+// per ray: q * radius. Returns the parameter t; `missed` when that root is off the cap or behind the
+// ray. kVirtual (a decentred or folded system, whose surfaces may lie behind the ray: design programs
+// propagate it back to them, "virtually"): the nearest root on the cap ahead, else the nearest behind
+// (the crossing sense there broke the off-axis mirrors CODV_35571 and zmax_37992: not yet understood).
 template <class T, bool kConic, bool kVirtual = false>
 inline T intersectQuadric(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConstants<T>& s, bool& missed) {
     const T c = s.curvature, K = kConic ? s.conicFactor : T(1);
@@ -61,23 +67,21 @@ inline T intersectQuadric(T px, T py, T qz, T dx, T dy, T dz, const SurfaceConst
     const T q = -(b + (b < T(0) ? -root : root));
     const T tNear = cc / q;  // stays finite as curvature -> 0
     // The other root. A flat surface (or a paraboloid's axial ray) has none: it comes out +-inf or
-    // NaN, which farOk rejects.
+    // NaN, which the cap test rejects.
     const T tFar = kConic ? q / a : q * s.radius;
-    const T tMin = T(-1e-9);
     if constexpr (kVirtual) {
         // The nearest root on the cap ahead; without one, the nearest behind.
         const bool nearCap = (std::fabs(tNear) < T(1e30)) & (T(1) + K * c * (qz + tNear * dz) > T(0));
         const bool farCap = (std::fabs(tFar) < T(1e30)) & (T(1) + K * c * (qz + tFar * dz) > T(0));
-        const bool nearAhead = nearCap & (tNear >= tMin), farAhead = farCap & (tFar >= tMin);
+        const bool nearAhead = nearCap & (tNear >= T(-1e-9)), farAhead = farCap & (tFar >= T(-1e-9));
         const T t = (nearAhead | farAhead) ? (nearAhead & (!farAhead | (tNear <= tFar)) ? tNear : tFar)
                                            : (nearCap & (!farCap | (tNear >= tFar)) ? tNear : tFar);
         missed = !(disc >= T(0)) | !(nearCap | farCap);
         return t;
     }
-    const bool nearOk = (tNear >= tMin) & (T(1) + K * c * (qz + tNear * dz) > T(0));
-    const bool farOk = (tFar >= tMin) & (tFar < T(1e30)) & (T(1) + K * c * (qz + tFar * dz) > T(0));
-    const T t = nearOk & (!farOk | (tNear <= tFar)) ? tNear : tFar;
-    missed = !(disc >= T(0)) | !(nearOk | farOk) | !(t < T(1e30));
+    const T t = b * dz >= T(0) ? tNear : tFar;
+    const bool onCap = (std::fabs(t) < T(1e30)) & (T(1) + K * c * (qz + t * dz) > T(0));
+    missed = !(disc >= T(0)) | !onCap | !(t >= T(-1e-9));
     return t;
 }
 

@@ -254,6 +254,63 @@ TEST(DesignAnalysis, VignettedSpotsAreMeasuredOverTheArrivingRays) {
     EXPECT_NEAR(centroid.y, brute.centroid.y, 0.01 * brute.rmsRadius);
 }
 
+TEST(DesignAnalysis, ASteepFieldOnAConcaveStopPassesTheWholeStop) {
+    // A concentric meniscus, the stop on its front face (R -5, centre 5 mm in front of the vertex;
+    // the back face R -7 about the same centre), at 62 deg: a ray through the stop's centre meets
+    // the front sphere's extension first, 4.1 mm off the axis (beyond the 2 mm rim, where no glass
+    // is), and 2.2 mm in front of the vertex, inside the 3 mm the analysis starts its rays at. Its hit
+    // is the stop point it crosses going in; every ray through the stop then leaves the back face
+    // (concentric: sin of the exit angle = 5/7 sin of the entry's), so the transmission is 1. Against
+    // a trace written here: each point of a 300 x 300 grid over the stop is a ray of the field
+    // direction through that point of the front sphere, refracted there and at the back sphere and
+    // carried to the plane z = -20. (Before, the analysis passed no ray of this field.)
+    const double n = 1.5, frontR = 5, backR = 7, thickness = 2, stopRadius = 2, field = 62;
+    LensTableRow front = row(-frontR, thickness, n, 2 * stopRadius);
+    front.stop = true;
+    const LensSystem lens = buildRows({front, row(-backR, 10, 0, 10)});
+    const std::optional<FieldAim> aim = aimField(lens, {field, kInf});
+    ASSERT_TRUE(aim);
+    const double planeZ = -20;
+    const ImageRays rays = settledImageRays(lens, *aim, planeZ, {}, 1e-4, 512);
+
+    const double theta = field * M_PI / 180;
+    const Vec3 d0{0, -std::sin(theta), -std::cos(theta)}, centre{0, 0, frontR};  // the shared centre
+    auto refract = [](Vec3 d, Vec3 normal, double eta) -> std::optional<Vec3> {
+        if (dot(d, normal) > 0) normal = -1.0 * normal;
+        const double cosi = -dot(d, normal), k = 1 - eta * eta * (1 - cosi * cosi);
+        if (k < 0) return std::nullopt;
+        return eta * d + (eta * cosi - std::sqrt(k)) * normal;
+    };
+    constexpr int kGrid = 300;
+    int inside = 0;
+    std::vector<Point2> points;
+    for (int j = 0; j < kGrid; ++j)
+        for (int i = 0; i < kGrid; ++i) {
+            const double x = stopRadius * (-1 + 2 * (i + 0.5) / kGrid), y = stopRadius * (-1 + 2 * (j + 0.5) / kGrid);
+            if (x * x + y * y > stopRadius * stopRadius) continue;
+            ++inside;
+            const Vec3 p{x, y, frontR - std::sqrt(frontR * frontR - x * x - y * y)};
+            const std::optional<Vec3> inGlass = refract(d0, (1 / frontR) * (p - centre), 1 / n);
+            if (!inGlass) continue;
+            // Inside the back sphere: its far root along the ray.
+            const Vec3 pc = p - centre;
+            const double b = dot(pc, *inGlass), t = -b + std::sqrt(b * b - dot(pc, pc) + backR * backR);
+            const Vec3 q = p + t * *inGlass;
+            const std::optional<Vec3> out = refract(*inGlass, (1 / backR) * (q - centre), n);
+            if (!out || q.x * q.x + q.y * q.y > 25) continue;
+            const double s = (planeZ - q.z) / out->z;
+            points.push_back({q.x + s * out->x, q.y + s * out->y});
+        }
+    const double transmission = double(points.size()) / inside;
+    const SpotStatistics brute = spotStatistics(points, std::vector<double>(points.size(), 1.0));
+    ASSERT_EQ(transmission, 1);
+    EXPECT_NEAR(rays.arrivingWeight(), transmission, 1e-6);
+    const SpotStatistics spot = spotStatistics(rays.at, rays.weight);
+    EXPECT_NEAR(spot.rmsRadius, brute.rmsRadius, 0.002 * brute.rmsRadius);
+    EXPECT_NEAR(spot.centroid.y, brute.centroid.y, 0.002 * brute.rmsRadius);
+    EXPECT_NEAR(spot.centroid.x, 0, 1e-9);
+}
+
 TEST(DesignAnalysis, SpotsAreSettledWhenTheSamplingDoubles) {
     // Every bundled lens at its widest, on axis and at its largest field: the RMS radius moves by
     // less than 0.5% when the azimuths double, or the nodes on each line.

@@ -54,6 +54,27 @@ TEST(Trace, SingleSurfaceObeysSnellsLaw) {
     EXPECT_NEAR(length(r.ray.direction), 1, 1e-15);
 }
 
+TEST(Trace, ASteepRayMeetsAConcaveSurfaceWhereItCrossesIntoTheGlass) {
+    // A face concave to the scene (R -5, centre 5 mm in front) and a ray at 62 deg through its
+    // vertex: the ray's line also crosses the sphere 2.2 mm in front of the vertex, 4.14 mm off the
+    // axis, going the other way (out of the glass side). Started in front of that point or behind
+    // it, the ray meets the surface at the vertex.
+    const LensSystem lens = table("-5 0 1.5 8\n0 10 0 30\n");
+    const double a = 62 * M_PI / 180;
+    const Vec3 d{0, -std::sin(a), -std::cos(a)};
+    for (double startZ : {1.0, 3.0, 4.5}) {
+        std::vector<Vec3> path;
+        TraceOptions o;
+        o.end = 1;
+        o.path = &path;
+        const TraceResult r = traceRay(lens, {(startZ / d.z) * d, d}, TraceDirection::SceneToFilm, o);
+        ASSERT_TRUE(r.ok()) << startZ;
+        ASSERT_EQ(path.size(), 2u);
+        EXPECT_NEAR(path[1].y, 0, 1e-12) << startZ;
+        EXPECT_NEAR(path[1].z, 0, 1e-12) << startZ;
+    }
+}
+
 TEST(Trace, TotalInternalReflectionIsReported) {
     // Leaving glass (n 1.8) through a flat face at 40 degrees: sin > 1/1.8, no refracted ray.
     const LensSystem lens = table("0 0 1.8 40\n0 5 1 40\n0 5 0 30\n");
