@@ -108,12 +108,28 @@ TEST(CameraSensor, ShotLimitedSignalToNoiseIsTheRootOfTheElectrons) {
     EXPECT_NEAR(snrDb, 40.0, 0.1);  // 40,000 samples: the variance's own scatter is 0.7%, 0.03 dB
 }
 
-TEST(CameraSensor, PhotonTransferCurveHasSlopeOneOverGainAndTheReadNoiseAsIntercept) {
+// A sensor measured by its photon transfer: 2 e-/DN, 6 e- read noise, a 16-bit ADC, black 1,024 DN.
+SensorSpec photonTransferSensor() {
     SensorSpec s = shotOnly();
     s.gainElectronsPerDn = 2.0;
     s.readNoiseElectrons = 6.0;
     s.adcBits = 16;
     s.blackLevelDn = 1024;
+    return s;
+}
+
+// The message of the SensorSpecError that the command line's text gives, or "(no error)".
+std::string sensorKeyError(const std::string& text) {
+    try {
+        sensorSpecFromPairs(parseSensorPairs(text));
+    } catch (const SensorSpecError& e) {
+        return std::string(e.what());
+    }
+    return std::string("(no error)");
+}
+
+TEST(CameraSensor, PhotonTransferCurveHasSlopeOneOverGainAndTheReadNoiseAsIntercept) {
+    const SensorSpec s = photonTransferSensor();
     const SensorCalibration c = calibrateSensor(s, kUnitFilm);
     // Mean and variance in DN above black, fitted by least squares: the slope over 200 to 80,000 e-,
     // the intercept over 0 to 1,600 e- (where the variances' own scatter is below a DN^2).
@@ -234,23 +250,15 @@ TEST(CameraSensor, MeteredExposurePutsTheMeanLuminanceAtEighteenPercent) {
 }
 
 TEST(CameraSensor, KeysAreCheckedByName) {
-    const auto error = [](const std::string& text) {
-        try {
-            sensorSpecFromPairs(parseSensorPairs(text));
-        } catch (const SensorSpecError& e) {
-            return std::string(e.what());
-        }
-        return std::string("(no error)");
-    };
     EXPECT_EQ(sensorSpecFromPairs(parseSensorPairs("iso=3200,exposure=0.004,bits=12")).adcBits, 12);
-    EXPECT_NE(error("iso=0").find("iso must be between 1 and"), std::string::npos) << error("iso=0");
-    EXPECT_NE(error("isp=100").find("unknown key 'isp'"), std::string::npos);
-    EXPECT_NE(error("iso=100,iso=200").find("iso is given twice"), std::string::npos);
-    EXPECT_NE(error("bits=12.5").find("bits must be a whole number"), std::string::npos);
-    EXPECT_NE(error("iso=fast").find("'fast' is not a number"), std::string::npos);
-    EXPECT_NE(error("iso").find("is not key=value"), std::string::npos);
-    EXPECT_NE(error("bits=10,black=1023").find("must lie below the 10-bit full scale 1023"), std::string::npos);
-    EXPECT_NE(error("prnu=nan").find("prnu must be between"), std::string::npos);
+    EXPECT_NE(sensorKeyError("iso=0").find("iso must be between 1 and"), std::string::npos) << sensorKeyError("iso=0");
+    EXPECT_NE(sensorKeyError("isp=100").find("unknown key 'isp'"), std::string::npos);
+    EXPECT_NE(sensorKeyError("iso=100,iso=200").find("iso is given twice"), std::string::npos);
+    EXPECT_NE(sensorKeyError("bits=12.5").find("bits must be a whole number"), std::string::npos);
+    EXPECT_NE(sensorKeyError("iso=fast").find("'fast' is not a number"), std::string::npos);
+    EXPECT_NE(sensorKeyError("iso").find("is not key=value"), std::string::npos);
+    EXPECT_NE(sensorKeyError("bits=10,black=1023").find("must lie below the 10-bit full scale 1023"), std::string::npos);
+    EXPECT_NE(sensorKeyError("prnu=nan").find("prnu must be between"), std::string::npos);
 }
 
 // A uniform sky seen through dgauss.50mm at f/8 focused far away.
@@ -298,15 +306,24 @@ TEST(CameraSensor, ThroughALensTheCentreCollectsTheProjectedSolidAngleThatPasses
     EXPECT_NE(out.metadata.at("sensor").find("pitch 100 um"), std::string::npos) << out.metadata.at("sensor");
 }
 
-TEST(CameraSensor, NoiseBelongsToTheFullFramesPixelsAndAPitchSetsTheFilm) {
+// The sky through dgauss.50mm at f/4 on 40 x 30 pixels.
+RenderOutput skyAtF4(const RenderSettings& s, int spp) {
     test::TempDir dir;
-    const std::string scene = dir.write("sky.pbrt", skyScene(test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4")));
+    return test::render(dir.write("sky.pbrt", skyScene(test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4"))), 40, 30, spp, s);
+}
+
+// A sensor of 700 um pixels (35 mm over 50 px), exposed for 1e-4 s (a metered exposure would meter
+// the rendered, cropped, part), with more keys.
+SensorSpec coarseSensor(const std::string& keys = "") {
+    return sensorSpecFromPairs(parseSensorPairs("iso=25600,pitch=700,exposure=0.0001" + keys));
+}
+
+TEST(CameraSensor, NoiseBelongsToTheFullFramesPixelsAndAPitchSetsTheFilm) {
     RenderSettings s;
-    // 35 mm over 50 px; an exposure given, since a metered one meters the rendered (cropped) part.
-    s.sensor = sensorSpecFromPairs(parseSensorPairs("iso=25600,pitch=700,exposure=0.0001"));
-    const RenderOutput full = test::render(scene, 40, 30, 2, s);
+    s.sensor = coarseSensor();
+    const RenderOutput full = skyAtF4(s, 2);
     s.crop = std::array<double, 4>{0.5, 1, 0.5, 1};
-    const RenderOutput crop = test::render(scene, 40, 30, 2, s);
+    const RenderOutput crop = skyAtF4(s, 2);
     ASSERT_EQ(crop.image.width, 20);
     for (int y = 0; y < 15; ++y)
         for (int x = 0; x < 20; ++x)
@@ -315,7 +332,7 @@ TEST(CameraSensor, NoiseBelongsToTheFullFramesPixelsAndAPitchSetsTheFilm) {
                           full.image.rgb[(std::size_t(y + 15) * 40 + x + 20) * 3 + ch]);
     s.crop.reset();
     s.camera.filmDiagonal = 24;
-    EXPECT_THROW(test::render(scene, 40, 30, 1, s), SceneError);
+    EXPECT_THROW(skyAtF4(s, 1), SceneError);
 }
 
 TEST(CameraSensor, APinholeHasNoExposureToRead) {
@@ -364,10 +381,8 @@ TEST(CameraSensorMosaic, PatternsAreNamedAndACropStartsItsOwn) {
 }
 
 TEST(CameraSensorMosaic, AFlatRedFieldSignalsOnlyAtTheRedSites) {
-    SensorSpec s = shotOnly();
-    s.adcBits = 16;
-    s.gainElectronsPerDn = 1;
-    s.blackLevelDn = 1000;
+    SensorSpec s = photonTransferSensor();
+    s.readNoiseElectrons = 0;
     const SensorCalibration c = calibrateSensor(s, kUnitFilm);
     const float red = float(5000 / (c.luxSecondsPerValue * c.electronsPerLuxSecond));  // 5,000 e-
     for (const char* pattern : {"rggb", "bggr", "grbg", "gbrg"})
@@ -387,9 +402,9 @@ TEST(CameraSensorMosaic, AFlatRedFieldSignalsOnlyAtTheRedSites) {
                     const double dn = raw.dn[std::size_t(y) * 20 + x];
                     if (filterAt(pattern, x0 + x, y0 + y) == 'r') {
                         ++reds;
-                        EXPECT_NEAR(dn, 1000 + 5000, 5 * std::sqrt(5000.0)) << pattern << " site " << x << "," << y;
+                        EXPECT_NEAR(dn, 1024 + 5000 / 2, 5 * std::sqrt(5000.0) / 2) << pattern << " site " << x << "," << y;
                     } else {
-                        EXPECT_EQ(dn, 1000) << pattern << " site " << x << "," << y;  // no light, no read or dark noise
+                        EXPECT_EQ(dn, 1024) << pattern << " site " << x << "," << y;  // no light, no read or dark noise
                     }
                 }
             EXPECT_EQ(reds, 100);
@@ -454,11 +469,7 @@ TEST(CameraSensorMosaic, AFlatGreyFieldDemosaicsToGreyWithinTheNoise) {
 TEST(CameraSensorMosaic, EverySiteFollowsThePhotonTransferRelation) {
     // EMVA 1288 per colour: variance = mean / gain + (read / gain)^2 + 1/12 in DN, a site's noise
     // drawn once, through its own filter's channel (red 4,000 e-, green 9,000, blue 1,500).
-    SensorSpec s = shotOnly();
-    s.gainElectronsPerDn = 2.0;
-    s.readNoiseElectrons = 6.0;
-    s.adcBits = 16;
-    s.blackLevelDn = 1024;
+    const SensorSpec s = photonTransferSensor();
     const SensorCalibration c = calibrateSensor(s, kUnitFilm);
     const double perValue = c.luxSecondsPerValue * c.electronsPerLuxSecond;
     Image im;
@@ -538,7 +549,11 @@ TEST(CameraSensorMosaic, TheDngFileReadsBackInLibRawWithTheSameNumbers) {
         for (int x = 0; x < 2; ++x) EXPECT_EQ(letters[libraw.COLOR(y, x)], filterAt("grbg", x, y)) << x << "," << y;
     EXPECT_EQ(d.color.black, 512u);  // 2^(14 - 5)
     EXPECT_EQ(d.color.maximum, 16383u);
-    EXPECT_EQ(out.raw->whiteLevelDn, 16383);  // above the base ISO the ADC's full scale, not the well, saturates
+    EXPECT_EQ(out.raw->whiteLevelDn, 16383);  // ISO's gain puts the well at or past the ADC's full scale
+    SensorSpec coarse = s;
+    coarse.gainElectronsPerDn = 10;  // the well's 43,200 e- then read 512 + 4,320 DN
+    Image small;
+    EXPECT_EQ(mosaicOf(coarse, "rggb", calibrateSensor(coarse, kUnitFilm), {0, 0, 0}, 0, 0, small, 4).mosaic->whiteLevelDn, 4832);
     for (std::size_t i = 0; i < out.raw->dn.size(); ++i) ASSERT_EQ(d.rawdata.raw_image[i], out.raw->dn[i]) << "site " << i;
     EXPECT_EQ(std::string(d.idata.model), "simulated sensor");
     ASSERT_EQ(libraw.dcraw_process(), LIBRAW_SUCCESS);
@@ -547,16 +562,14 @@ TEST(CameraSensorMosaic, TheDngFileReadsBackInLibRawWithTheSameNumbers) {
 }
 
 TEST(CameraSensorMosaic, ARenderKeepsTheFullFramesMosaicAndItsKeysAreChecked) {
-    test::TempDir dir;
-    const std::string scene = dir.write("sky.pbrt", skyScene(test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4")));
     RenderSettings s;
-    s.sensor = sensorSpecFromPairs(parseSensorPairs("iso=25600,pitch=700,exposure=0.0001,cfa=rggb"));
-    const RenderOutput full = test::render(scene, 40, 30, 2, s);
+    s.sensor = coarseSensor(",cfa=rggb");
+    const RenderOutput full = skyAtF4(s, 2);
     ASSERT_TRUE(full.raw);
     EXPECT_EQ(full.raw->pattern.name(), "rggb");
     EXPECT_NE(full.metadata.at("sensor").find("a rggb Bayer mosaic"), std::string::npos) << full.metadata.at("sensor");
     s.crop = std::array<double, 4>{0.5, 1, 0.5, 1};  // from pixel (20, 15): an odd row starts gbrg
-    const RenderOutput crop = test::render(scene, 40, 30, 2, s);
+    const RenderOutput crop = skyAtF4(s, 2);
     ASSERT_TRUE(crop.raw);
     EXPECT_EQ(crop.raw->pattern.name(), "gbrg");
     for (int y = 0; y < 15; ++y)
@@ -569,13 +582,14 @@ TEST(CameraSensorMosaic, ARenderKeepsTheFullFramesMosaicAndItsKeysAreChecked) {
                           full.image.rgb[(std::size_t(y + 15) * 40 + x + 20) * 3 + ch]);
         }
     s.crop = std::array<double, 4>{0.5, 0.52, 0, 1};  // one column: nothing to demosaic from
-    EXPECT_THROW(test::render(scene, 40, 30, 1, s), SceneError);
+    EXPECT_THROW(skyAtF4(s, 1), SceneError);
 
     // Without a mosaic a render has no raw numbers, and a DNG is refused by name.
     s.crop.reset();
-    s.sensor = sensorSpecFromPairs(parseSensorPairs("iso=25600,pitch=700,exposure=0.0001"));
-    const RenderOutput plain = test::render(scene, 40, 30, 1, s);
+    s.sensor = coarseSensor();
+    const RenderOutput plain = skyAtF4(s, 1);
     EXPECT_FALSE(plain.raw);
+    test::TempDir dir;
     try {
         writeImageFile(plain, dir.path() + "/plain.dng");
         ADD_FAILURE() << "a DNG without a mosaic";
@@ -583,20 +597,12 @@ TEST(CameraSensorMosaic, ARenderKeepsTheFullFramesMosaicAndItsKeysAreChecked) {
         EXPECT_NE(std::string(e.what()).find("needs a sensor with a colour mosaic"), std::string::npos) << e.what();
     }
 
-    const auto error = [](const std::string& text) {
-        try {
-            sensorSpecFromPairs(parseSensorPairs(text));
-        } catch (const SensorSpecError& e) {
-            return std::string(e.what());
-        }
-        return std::string("(no error)");
-    };
     EXPECT_EQ(sensorSpecFromPairs(parseSensorPairs("cfa=bggr")).colourFilter->name(), "bggr");
-    EXPECT_NE(error("cfa=rgbg").find("cfa must be one of none, rggb, bggr, grbg, gbrg, got 'rgbg'"), std::string::npos)
-        << error("cfa=rgbg");
-    EXPECT_NE(error("cfa=1").find("got 1"), std::string::npos) << error("cfa=1");
-    EXPECT_NE(error("cfa=rggb,cfa=bggr").find("cfa is given twice"), std::string::npos);
-    EXPECT_NE(error("bits=20,cfa=rggb").find("bits must be at most 16 with cfa, got 20"), std::string::npos) << error("bits=20,cfa=rggb");
+    EXPECT_NE(sensorKeyError("cfa=rgbg").find("cfa must be one of none, rggb, bggr, grbg, gbrg, got 'rgbg'"), std::string::npos)
+        << sensorKeyError("cfa=rgbg");
+    EXPECT_NE(sensorKeyError("cfa=1").find("got 1"), std::string::npos) << sensorKeyError("cfa=1");
+    EXPECT_NE(sensorKeyError("cfa=rggb,cfa=bggr").find("cfa is given twice"), std::string::npos);
+    EXPECT_NE(sensorKeyError("bits=20,cfa=rggb").find("bits must be at most 16 with cfa, got 20"), std::string::npos) << sensorKeyError("bits=20,cfa=rggb");
 }
 
 }  // namespace
