@@ -105,12 +105,19 @@ std::vector<std::string> takeOutputs(const std::vector<std::string>& argsIn, std
         }
     }
     for (const auto& o : outputs) {
-        const auto dot = o.rfind('.');
-        const std::string ext = dot == std::string::npos ? "" : o.substr(dot);
-        if (ext != ".exr" && ext != ".png" && ext != ".EXR" && ext != ".PNG")
-            throw UsageError("render: output '" + o + "' must end in .exr or .png");
+        const std::string ext = imageFileExtension(o);
+        if (ext != ".exr" && ext != ".png" && ext != ".dng")
+            throw UsageError("render: output '" + o + "' must end in .exr, .png or .dng");
     }
     return args;
+}
+
+// A raw file holds a mosaic's numbers: refused before the render when the sensor has none.
+void checkRawOutputs(const std::vector<std::string>& outputs, const RenderSettings& s) {
+    for (const auto& o : outputs)
+        if (imageFileExtension(o) == ".dng" && !(s.sensor && s.sensor->colourFilter))
+            throw UsageError("render: output '" + o + "' is a raw DNG file: it needs a sensor with a colour mosaic "
+                             "(--sensor ...,cfa=rggb, bggr, grbg or gbrg)");
 }
 
 RenderSettings renderSettings(const ArgParser& p) {
@@ -181,9 +188,10 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     ArgParser p("render", "SCENE [-o out.exr] [-o out.png] [--spp N] [--threads N] [--tile N] [--crop x0,x1,y0,y1]",
                 "Renders a pbrt-v3 scene (lenslab's subset; world in metres, lens in millimetres) with the\n"
                 "perspective or the realistic lens camera. Output by extension: .exr (linear float RGB, tiled,\n"
-                "camera and lens parameters in the header) or .png (sRGB, scaled by --exposure).");
+                "camera and lens parameters in the header), .png (sRGB, scaled by --exposure) or .dng (a colour\n"
+                "mosaic sensor's raw numbers).");
     p.positional("SCENE", "scene file (.pbrt)");
-    p.option("-o", "FILE", "output image, .exr or .png; repeat for several (default: the scene's Film filename)");
+    p.option("-o", "FILE", "output image, .exr, .png or .dng; repeat for several (default: the scene's Film filename)");
     p.option("--spp", "N", "samples per pixel (default: the scene's)");
     p.option("--threads", "N", "worker threads (default: all cores)");
     p.option("--tile", "N", "tile size in pixels (default 32)");
@@ -209,7 +217,8 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
              "ray-transfer matrices: the stop's shape, uniform); default exact");
     p.option("--sensor", "K=V,...", "realistic camera: a real sensor's noisy readout instead of the noiseless film (docs/sensor.md):\n"
              "iso exposure(s; default metered) gain(e-/DN) qe fill pitch(um) fullwell(e-) read(e-) dark(e-/s) dsnu prnu\n"
-             "bits black(DN) nits(cd/m^2 per unit radiance) pattern(seed); e.g. --sensor iso=3200,exposure=0.004");
+             "bits black(DN) nits(cd/m^2 per unit radiance) pattern(seed) cfa(none|rggb|bggr|grbg|gbrg: a Bayer mosaic,\n"
+             "demosaiced; -o raw.dng writes its raw numbers); e.g. --sensor iso=3200,exposure=0.004,cfa=rggb");
     p.flag("--quiet", "no progress bar, no summary");
     p.flag("--progress-json", "print one JSON line per finished tile on stdout, and the statistics last");
     p.flag("--mpi", "spread the tiles over the processes of an MPI job: mpirun -np N lenslab render ... --mpi");
@@ -221,6 +230,7 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
         return 0;
     }
     RenderSettings s = renderSettings(p);
+    checkRawOutputs(outputs, s);
     const double exposure = p.number("--exposure").value_or(1.0);
     if (!(exposure > 0)) throw UsageError("render: --exposure must be positive");
     const bool quiet = p.has("--quiet");

@@ -85,6 +85,7 @@ struct RenderOutput {
     Image image;
     RenderStats stats;
     std::map<std::string, std::string> metadata;  // camera and lens parameters, for EXR headers
+    std::optional<RawMosaic> raw;  // a sensor's ADC numbers when it has a colour mosaic (a .dng output's)
 };
 
 // Scene problems (file, line, directive) and bad settings.
@@ -113,7 +114,10 @@ void checkRenderSettings(const RenderSettings& settings);
 // PNG: sRGB tone-mapped with an exposure scale. EXR: linear float RGB, tiled, metadata in the header.
 std::vector<std::uint8_t> encodePng(const Image& image, double exposure = 1.0);
 std::vector<std::uint8_t> encodeExr(const RenderOutput& output);
-// Writes .png or .exr by the path's extension, atomically (temporary file, then rename).
+// A path's extension, lower case (".exr"): the format writeImageFile writes.
+std::string imageFileExtension(const std::string& path);
+// Writes .png, .exr or .dng (the raw mosaic, film/DngFile.h; std::invalid_argument without one) by
+// the path's extension, atomically (temporary file, then rename).
 void writeImageFile(const RenderOutput& output, const std::string& path, double exposure = 1.0);
 
 }  // namespace lenslab

@@ -13,6 +13,7 @@ packages=(
   openmpi-bin libopenmpi-dev
   libfreetype-dev fonts-dejavu-core
   libopenimageio-dev libassimp-dev zlib1g-dev
+  libtiff-dev libraw-dev
 )
 if [ "${1:-}" = "--tests" ]; then
   packages+=(chromium)

@@ -79,7 +79,7 @@ public:
         result.finalize = !anyLost;
         RenderOutput& out = result.output;
         out.metadata = frame_.metadata();
-        if (tilesDone_ == int(done_.size())) frame_.finishImage(splats_.sum(), image_, out.metadata);
+        if (tilesDone_ == int(done_.size())) out.raw = frame_.finishImage(splats_.sum(), image_, out.metadata);
         out.image = std::move(image_);
         out.stats.setupSeconds = frame_.setupSeconds();
         out.stats.renderSeconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <variant>
 
 #include "core/HttpError.h"
 #include "core/Identifiers.h"
@@ -62,15 +63,16 @@ std::string identifierField(const json& body, const char* field, const std::stri
     return id;
 }
 
-// An object of numbers, each key checked as the renderer will take it.
-std::optional<std::vector<std::pair<std::string, double>>> sensorField(const json& body) {
+// An object of numbers (and cfa's word), each key checked as the renderer will take it.
+std::optional<SensorPairs> sensorField(const json& body) {
     if (!body.contains("sensor") || body.at("sensor").is_null()) return std::nullopt;
     const json& v = body.at("sensor");
-    if (!v.is_object()) throw HttpError(400, "sensor must be an object of numbers, as {\"iso\": 800}");
-    std::vector<std::pair<std::string, double>> pairs;
+    if (!v.is_object()) throw HttpError(400, "sensor must be an object of numbers, as {\"iso\": 800, \"cfa\": \"rggb\"}");
+    SensorPairs pairs;
     for (const auto& item : v.items()) {
-        if (!item.value().is_number()) throw HttpError(400, "sensor: " + item.key().substr(0, 40) + " must be a number");
-        pairs.emplace_back(item.key(), item.value().get<double>());
+        if (item.value().is_number()) pairs.emplace_back(item.key(), item.value().get<double>());
+        else if (item.value().is_string()) pairs.emplace_back(item.key(), item.value().get<std::string>());
+        else throw HttpError(400, "sensor: " + item.key().substr(0, 40) + " must be a number (cfa: a pattern's name)");
     }
     try {
         sensorSpecFromPairs(pairs);
@@ -136,10 +138,10 @@ LensSettings lensSettings(const RenderRequest& r) {
 
 namespace {
 
-json sensorJson(const std::optional<std::vector<std::pair<std::string, double>>>& sensor) {
+json sensorJson(const std::optional<SensorPairs>& sensor) {
     if (!sensor) return nullptr;
     json object = json::object();
-    for (const auto& [key, value] : *sensor) object[key] = value;
+    for (const auto& [key, value] : *sensor) object[key] = std::visit([](const auto& v) { return json(v); }, value);
     return object;
 }
 

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "film/SensorSpec.h"
 #include "settings/LensSettings.h"
 #include "core/ServiceConfig.h"
 
@@ -29,7 +30,7 @@ struct RenderRequest {
     std::optional<std::array<double, 2>> shift;
     // A real camera sensor (renderer/raytracer/film/SensorSpec.h): its keys and values as given,
     // checked; unset: the noiseless film.
-    std::optional<std::vector<std::pair<std::string, double>>> sensor;
+    std::optional<SensorPairs> sensor;
     int spp = 16;
     int width = 320, height = 240;
 };

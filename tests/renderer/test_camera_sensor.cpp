@@ -1,13 +1,16 @@
 // The real sensor behind the film (film/SensorReadout.h): its calibration against the published
 // constants it is built on, its noise against the photon-transfer relations a sensor is measured
-// by (EMVA 1288), and a render through a lens against the lens's f-number.
+// by (EMVA 1288), and a render through a lens against the lens's f-number. Its Bayer mosaic: the
+// sites' colours, their noise, the demosaiced picture, and the DNG file read back by LibRaw.
 #include <gtest/gtest.h>
+#include <libraw.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
-
+#include "film/Demosaic.h"
 #include "film/SensorReadout.h"
 #include "sampling/Sampling.h"
 #include "settings/LensAnalysis.h"
@@ -105,12 +108,28 @@ TEST(CameraSensor, ShotLimitedSignalToNoiseIsTheRootOfTheElectrons) {
     EXPECT_NEAR(snrDb, 40.0, 0.1);  // 40,000 samples: the variance's own scatter is 0.7%, 0.03 dB
 }
 
-TEST(CameraSensor, PhotonTransferCurveHasSlopeOneOverGainAndTheReadNoiseAsIntercept) {
+// A sensor measured by its photon transfer: 2 e-/DN, 6 e- read noise, a 16-bit ADC, black 1,024 DN.
+SensorSpec photonTransferSensor() {
     SensorSpec s = shotOnly();
     s.gainElectronsPerDn = 2.0;
     s.readNoiseElectrons = 6.0;
     s.adcBits = 16;
     s.blackLevelDn = 1024;
+    return s;
+}
+
+// The message of the SensorSpecError that the command line's text gives, or "(no error)".
+std::string sensorKeyError(const std::string& text) {
+    try {
+        sensorSpecFromPairs(parseSensorPairs(text));
+    } catch (const SensorSpecError& e) {
+        return std::string(e.what());
+    }
+    return std::string("(no error)");
+}
+
+TEST(CameraSensor, PhotonTransferCurveHasSlopeOneOverGainAndTheReadNoiseAsIntercept) {
+    const SensorSpec s = photonTransferSensor();
     const SensorCalibration c = calibrateSensor(s, kUnitFilm);
     // Mean and variance in DN above black, fitted by least squares: the slope over 200 to 80,000 e-,
     // the intercept over 0 to 1,600 e- (where the variances' own scatter is below a DN^2).
@@ -187,7 +206,7 @@ TEST(CameraSensor, FullWellClipsAndStandardOutputSensitivitySetsTheLevels) {
         readOutSensor(s, c, 5, 0, 0, grey);
         EXPECT_NEAR(test::meanLum(grey), 0.18, 0.18 * 0.003) << "ISO " << iso;
         Image bright = flat(10, 10, float(2 * 78 / iso));
-        const SensorReadoutStats stats = readOutSensor(s, c, 5, 0, 0, bright);
+        const SensorReadout stats = readOutSensor(s, c, 5, 0, 0, bright);
         EXPECT_NEAR(bright.rgb[0], 0.018 * 78, 1e-3) << "ISO " << iso;
         EXPECT_EQ(stats.adcClipped, 300u);
         EXPECT_EQ(stats.wellClipped, 0u);  // above the base ISO the ADC clips first
@@ -200,7 +219,7 @@ TEST(CameraSensor, FullWellClipsAndStandardOutputSensitivitySetsTheLevels) {
     const SensorCalibration c = calibrateSensor(low, kUnitFilm);
     ASSERT_LT(low.iso, c.baseIso);
     Image bright = flat(10, 10, 10.0f);
-    const SensorReadoutStats stats = readOutSensor(low, c, 5, 0, 0, bright);
+    const SensorReadout stats = readOutSensor(low, c, 5, 0, 0, bright);
     EXPECT_EQ(stats.wellClipped, 300u);
     EXPECT_NEAR(bright.rgb[0], c.fullWellElectrons / c.electronsPerLuxSecond * 0.018 * 25, 2e-3);
 }
@@ -231,23 +250,15 @@ TEST(CameraSensor, MeteredExposurePutsTheMeanLuminanceAtEighteenPercent) {
 }
 
 TEST(CameraSensor, KeysAreCheckedByName) {
-    const auto error = [](const std::string& text) {
-        try {
-            sensorSpecFromPairs(parseSensorPairs(text));
-        } catch (const SensorSpecError& e) {
-            return std::string(e.what());
-        }
-        return std::string("(no error)");
-    };
     EXPECT_EQ(sensorSpecFromPairs(parseSensorPairs("iso=3200,exposure=0.004,bits=12")).adcBits, 12);
-    EXPECT_NE(error("iso=0").find("iso must be between 1 and"), std::string::npos) << error("iso=0");
-    EXPECT_NE(error("isp=100").find("unknown key 'isp'"), std::string::npos);
-    EXPECT_NE(error("iso=100,iso=200").find("iso is given twice"), std::string::npos);
-    EXPECT_NE(error("bits=12.5").find("bits must be a whole number"), std::string::npos);
-    EXPECT_NE(error("iso=fast").find("'fast' is not a number"), std::string::npos);
-    EXPECT_NE(error("iso").find("is not key=value"), std::string::npos);
-    EXPECT_NE(error("bits=10,black=1023").find("must lie below the 10-bit full scale 1023"), std::string::npos);
-    EXPECT_NE(error("prnu=nan").find("prnu must be between"), std::string::npos);
+    EXPECT_NE(sensorKeyError("iso=0").find("iso must be between 1 and"), std::string::npos) << sensorKeyError("iso=0");
+    EXPECT_NE(sensorKeyError("isp=100").find("unknown key 'isp'"), std::string::npos);
+    EXPECT_NE(sensorKeyError("iso=100,iso=200").find("iso is given twice"), std::string::npos);
+    EXPECT_NE(sensorKeyError("bits=12.5").find("bits must be a whole number"), std::string::npos);
+    EXPECT_NE(sensorKeyError("iso=fast").find("'fast' is not a number"), std::string::npos);
+    EXPECT_NE(sensorKeyError("iso").find("is not key=value"), std::string::npos);
+    EXPECT_NE(sensorKeyError("bits=10,black=1023").find("must lie below the 10-bit full scale 1023"), std::string::npos);
+    EXPECT_NE(sensorKeyError("prnu=nan").find("prnu must be between"), std::string::npos);
 }
 
 // A uniform sky seen through dgauss.50mm at f/8 focused far away.
@@ -296,15 +307,24 @@ TEST(CameraSensor, ThroughALensTheCentreCollectsTheProjectedSolidAngleThatPasses
     EXPECT_NE(out.metadata.at("sensor").find("pitch 100 um"), std::string::npos) << out.metadata.at("sensor");
 }
 
-TEST(CameraSensor, NoiseBelongsToTheFullFramesPixelsAndAPitchSetsTheFilm) {
+// The sky through dgauss.50mm at f/4 on 40 x 30 pixels.
+RenderOutput skyAtF4(const RenderSettings& s, int spp) {
     test::TempDir dir;
-    const std::string scene = dir.write("sky.pbrt", skyScene(test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4")));
+    return test::render(dir.write("sky.pbrt", skyScene(test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4"))), 40, 30, spp, s);
+}
+
+// A sensor of 700 um pixels (35 mm over 50 px), exposed for 1e-4 s (a metered exposure would meter
+// the rendered, cropped, part), with more keys.
+SensorSpec coarseSensor(const std::string& keys = "") {
+    return sensorSpecFromPairs(parseSensorPairs("iso=25600,pitch=700,exposure=0.0001" + keys));
+}
+
+TEST(CameraSensor, NoiseBelongsToTheFullFramesPixelsAndAPitchSetsTheFilm) {
     RenderSettings s;
-    // 35 mm over 50 px; an exposure given, since a metered one meters the rendered (cropped) part.
-    s.sensor = sensorSpecFromPairs(parseSensorPairs("iso=25600,pitch=700,exposure=0.0001"));
-    const RenderOutput full = test::render(scene, 40, 30, 2, s);
+    s.sensor = coarseSensor();
+    const RenderOutput full = skyAtF4(s, 2);
     s.crop = std::array<double, 4>{0.5, 1, 0.5, 1};
-    const RenderOutput crop = test::render(scene, 40, 30, 2, s);
+    const RenderOutput crop = skyAtF4(s, 2);
     ASSERT_EQ(crop.image.width, 20);
     for (int y = 0; y < 15; ++y)
         for (int x = 0; x < 20; ++x)
@@ -313,7 +333,7 @@ TEST(CameraSensor, NoiseBelongsToTheFullFramesPixelsAndAPitchSetsTheFilm) {
                           full.image.rgb[(std::size_t(y + 15) * 40 + x + 20) * 3 + ch]);
     s.crop.reset();
     s.camera.filmDiagonal = 24;
-    EXPECT_THROW(test::render(scene, 40, 30, 1, s), SceneError);
+    EXPECT_THROW(skyAtF4(s, 1), SceneError);
 }
 
 TEST(CameraSensor, APinholeHasNoExposureToRead) {
@@ -329,6 +349,261 @@ TEST(CameraSensor, APinholeHasNoExposureToRead) {
         EXPECT_NE(std::string(e.what()).find("the sensor needs a lens"), std::string::npos) << e.what();
     }
     EXPECT_THROW(test::render(scene, 8, 8, 1, s), SceneError);
+}
+
+// The Bayer mosaic.
+
+// The filter letter over full-frame site (x, y) of the named pattern, from its name alone.
+char filterAt(const std::string& pattern, int x, int y) { return pattern[std::size_t((y % 2) * 2 + x % 2)]; }
+
+int channelOfLetter(char letter) { return letter == 'r' ? 0 : letter == 'g' ? 1 : 2; }
+
+// A frame of the given colour in film values, read through the mosaic with the full frame's origin at (x0, y0).
+SensorReadout mosaicOf(SensorSpec s, const std::string& pattern, const SensorCalibration& c, Vec3f colour, int x0, int y0,
+                       Image& im, int side = 200) {
+    s.colourFilter = bayerPatternNamed(pattern);
+    im = flat(side, side, 0);
+    for (std::size_t i = 0; i < im.rgb.size(); i += 3) {
+        im.rgb[i] = colour.x;
+        im.rgb[i + 1] = colour.y;
+        im.rgb[i + 2] = colour.z;
+    }
+    return readOutSensor(s, c, 21, x0, y0, im);
+}
+
+TEST(CameraSensorMosaic, PatternsAreNamedAndACropStartsItsOwn) {
+    EXPECT_EQ(bayerPatternNamed("rggb")->channels, (std::array<int, 4>{0, 1, 1, 2}));
+    EXPECT_EQ(bayerPatternNamed("gbrg")->channels, (std::array<int, 4>{1, 2, 0, 1}));
+    EXPECT_FALSE(bayerPatternNamed("rgbg"));
+    EXPECT_EQ(bayerPatternNamed("rggb")->from(1, 0).name(), "grbg");
+    EXPECT_EQ(bayerPatternNamed("rggb")->from(0, 1).name(), "gbrg");
+    EXPECT_EQ(bayerPatternNamed("rggb")->from(3, 5).name(), "bggr");
+    EXPECT_EQ(bayerPatternNamed("grbg")->from(2, 4).name(), "grbg");
+}
+
+TEST(CameraSensorMosaic, AFlatRedFieldSignalsOnlyAtTheRedSites) {
+    SensorSpec s = photonTransferSensor();
+    s.readNoiseElectrons = 0;
+    const SensorCalibration c = calibrateSensor(s, kUnitFilm);
+    const float red = float(5000 / (c.luxSecondsPerValue * c.electronsPerLuxSecond));  // 5,000 e-
+    for (const char* pattern : {"rggb", "bggr", "grbg", "gbrg"})
+        for (const auto& [x0, y0] : {std::pair{0, 0}, std::pair{3, 6}, std::pair{1, 5}}) {
+            Image im;
+            const SensorReadout r = mosaicOf(s, pattern, c, {red, 0, 0}, x0, y0, im, 20);
+            ASSERT_TRUE(r.mosaic);
+            const RawMosaic& raw = *r.mosaic;
+            ASSERT_EQ(raw.dn.size(), 400u);
+            std::string own;  // the crop's pattern, from the full frame's at its origin
+            for (int y = 0; y < 2; ++y)
+                for (int x = 0; x < 2; ++x) own += filterAt(pattern, x0 + x, y0 + y);
+            EXPECT_EQ(raw.pattern.name(), own) << pattern << " at " << x0 << "," << y0;
+            int reds = 0;
+            for (int y = 0; y < 20; ++y)
+                for (int x = 0; x < 20; ++x) {
+                    const double dn = raw.dn[std::size_t(y) * 20 + x];
+                    if (filterAt(pattern, x0 + x, y0 + y) == 'r') {
+                        ++reds;
+                        EXPECT_NEAR(dn, 1024 + 5000 / 2, 5 * std::sqrt(5000.0) / 2) << pattern << " site " << x << "," << y;
+                    } else {
+                        EXPECT_EQ(dn, 1024) << pattern << " site " << x << "," << y;  // no light, no read or dark noise
+                    }
+                }
+            EXPECT_EQ(reds, 100);
+        }
+}
+
+TEST(CameraSensorMosaic, DemosaicingKeepsFlatColourEverywhereAndLinearGradientsInside) {
+    // Malvar-He-Cutler's kernels weigh each channel to 1 and correct by a Laplacian, zero on a
+    // linear field: a flat colour comes back exactly, a linear ramp away from the mirrored edges.
+    const int w = 16, h = 12;
+    const auto colour = [](int x, int y, int ch) {
+        const double base[3] = {0.5, 0.3, 0.2}, dx[3] = {0.01, -0.005, 0.003}, dy[3] = {0.02, 0.01, -0.004};
+        return base[ch] + dx[ch] * x + dy[ch] * y;
+    };
+    for (const char* pattern : {"rggb", "bggr", "grbg", "gbrg"}) {
+        std::vector<float> ramp(std::size_t(w) * h), plain(ramp.size());
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const int ch = channelOfLetter(filterAt(pattern, x, y));
+                ramp[std::size_t(y) * w + x] = float(colour(x, y, ch));
+                plain[std::size_t(y) * w + x] = float(colour(0, 0, ch));
+            }
+        const Image fromRamp = demosaic(ramp, w, h, *bayerPatternNamed(pattern));
+        const Image fromPlain = demosaic(plain, w, h, *bayerPatternNamed(pattern));
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                for (int ch = 0; ch < 3; ++ch) {
+                    const std::size_t i = (std::size_t(y) * w + x) * 3 + ch;
+                    ASSERT_NEAR(fromPlain.rgb[i], colour(0, 0, ch), 1e-6) << pattern << " " << x << "," << y << " ch " << ch;
+                    if (x >= 2 && x < w - 2 && y >= 2 && y < h - 2) {
+                        ASSERT_NEAR(fromRamp.rgb[i], colour(x, y, ch), 1e-5) << pattern << " " << x << "," << y << " ch " << ch;
+                    }
+                }
+    }
+    EXPECT_THROW(demosaic(std::vector<float>(5), 1, 5, *bayerPatternNamed("rggb")), std::invalid_argument);
+}
+
+TEST(CameraSensorMosaic, AFlatGreyFieldDemosaicsToGreyWithinTheNoise) {
+    // 10 / ISO lux s reads 0.18 in every channel: each pixel's three colours within the noise of
+    // its sites (1 / sqrt(N) at N electrons a site), their means within 0.3% of 0.18.
+    SensorSpec s;
+    s.iso = 400;
+    s.readNoiseElectrons = 0;
+    s.exposureSeconds = 1;
+    const SensorCalibration c = calibrateSensor(s, kUnitFilm);
+    Image im;
+    mosaicOf(s, "rggb", c, Vec3f{1, 1, 1} * float(10 / 400.0), 0, 0, im);
+    const double electrons = 10 / 400.0 * c.electronsPerLuxSecond, relative = 1 / std::sqrt(electrons);
+    double mean[3] = {0, 0, 0}, chroma = 0;
+    const std::size_t n = std::size_t(im.width) * im.height;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int ch = 0; ch < 3; ++ch) mean[ch] += im.rgb[i * 3 + ch] / n;
+        const double g = im.rgb[i * 3 + 1];
+        chroma += (std::pow(im.rgb[i * 3] - g, 2) + std::pow(im.rgb[i * 3 + 2] - g, 2)) / (2 * n);
+    }
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(mean[ch], 0.18, 0.18 * 0.003) << "channel " << ch;
+    // A colour difference spans two interpolations of independent sites: under twice a site's noise.
+    EXPECT_LT(std::sqrt(chroma) / 0.18, 2 * relative);
+    EXPECT_GT(std::sqrt(chroma) / 0.18, 0.5 * relative);  // and the noise is there, not smoothed away
+}
+
+TEST(CameraSensorMosaic, EverySiteFollowsThePhotonTransferRelation) {
+    // EMVA 1288 per colour: variance = mean / gain + (read / gain)^2 + 1/12 in DN, a site's noise
+    // drawn once, through its own filter's channel (red 4,000 e-, green 9,000, blue 1,500).
+    const SensorSpec s = photonTransferSensor();
+    const SensorCalibration c = calibrateSensor(s, kUnitFilm);
+    const double perValue = c.luxSecondsPerValue * c.electronsPerLuxSecond;
+    Image im;
+    const SensorReadout r =
+        mosaicOf(s, "grbg", c, {float(4000 / perValue), float(9000 / perValue), float(1500 / perValue)}, 0, 0, im);
+    const double expectedMean[3] = {2000, 4500, 750};
+    double sum[3] = {0, 0, 0}, squares[3] = {0, 0, 0}, count[3] = {0, 0, 0};
+    for (int y = 0; y < 200; ++y)
+        for (int x = 0; x < 200; ++x) {
+            const int ch = channelOfLetter(filterAt("grbg", x, y));
+            const double dn = r.mosaic->dn[std::size_t(y) * 200 + x] - 1024.0;
+            sum[ch] += dn;
+            squares[ch] += dn * dn;
+            ++count[ch];
+        }
+    for (int ch = 0; ch < 3; ++ch) {
+        const double mean = sum[ch] / count[ch], variance = squares[ch] / count[ch] - mean * mean;
+        EXPECT_NEAR(mean, expectedMean[ch], 1.0) << "channel " << ch;
+        // 10,000 or 20,000 sites: the variance's own scatter is 1.4% or 1%.
+        EXPECT_NEAR(variance, mean / 2 + 9 + 1.0 / 12, 0.05 * (mean / 2 + 9)) << "channel " << ch;
+    }
+    EXPECT_EQ(count[1], 20000);
+    EXPECT_EQ(r.wellClipped + r.adcClipped, 0u);
+}
+
+TEST(CameraSensorMosaic, WithoutAMosaicTheReadoutIsUnchanged) {
+    // The three-photosite readout of a ramp, its whole ADC numbers hashed (FNV-1a): the value main
+    // gave before the mosaic was added (64 x 48 pixels from (3, 5) of the full frame, seed 17).
+    SensorSpec s;
+    s.iso = 3200;
+    s.exposureSeconds = 1;
+    const SensorCalibration c = calibrateSensor(s, kUnitFilm);
+    Image im = flat(64, 48, 0);
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int ch = 0; ch < 3; ++ch) im.rgb[(std::size_t(y) * 64 + x) * 3 + ch] = float((x + 2 * y + 40 * ch) * 4e-5);
+    Image none = im;
+    const SensorReadout r = readOutSensor(s, c, 17, 3, 5, im);
+    EXPECT_FALSE(r.mosaic);
+    const double perDn = c.gainElectronsPerDn * c.outputPerLuxSecond / c.electronsPerLuxSecond;
+    std::uint64_t hash = 1469598103934665603ULL;
+    for (float v : im.rgb) hash = (hash ^ std::uint64_t(std::llround(v / perDn + c.blackLevelDn))) * 1099511628211ULL;
+    EXPECT_EQ(hash, 14053015699209344921ULL);
+    // cfa=none is the same sensor.
+    const SensorSpec explicitNone = sensorSpecFromPairs(parseSensorPairs("iso=3200,exposure=1,cfa=none"));
+    EXPECT_FALSE(explicitNone.colourFilter);
+    readOutSensor(explicitNone, c, 17, 3, 5, none);
+    EXPECT_EQ(none.rgb, im.rgb);
+}
+
+TEST(CameraSensorMosaic, TheDngFileReadsBackInLibRawWithTheSameNumbers) {
+    // A crop from (1, 0) of an rggb sensor starts grbg: LibRaw must see that pattern, the black
+    // and white levels, each site's number, and camera colours that are sRGB's (its camera to
+    // sRGB matrix, made from ColorMatrix1, the identity).
+    SensorSpec s;
+    s.iso = 800;
+    s.exposureSeconds = 1;
+    const SensorCalibration c = calibrateSensor(s, kUnitFilm);
+    Image im;
+    RenderOutput out;
+    out.raw = mosaicOf(s, "rggb", c, Vec3f{0.2f, 0.5f, 0.9f} * float(10 / 800.0), 1, 0, im, 64).mosaic;
+    out.image = im;
+    ASSERT_TRUE(out.raw);
+    test::TempDir dir;
+    const std::string path = dir.path() + "/raw.dng";
+    writeImageFile(out, path);
+    LibRaw libraw;
+    ASSERT_EQ(libraw.open_file(path.c_str()), LIBRAW_SUCCESS);
+    ASSERT_EQ(libraw.unpack(), LIBRAW_SUCCESS);
+    const auto& d = libraw.imgdata;
+    EXPECT_NE(d.idata.dng_version, 0u);
+    ASSERT_EQ(d.sizes.raw_width, 64);
+    ASSERT_EQ(d.sizes.raw_height, 64);
+    ASSERT_NE(d.rawdata.raw_image, nullptr);
+    const char* letters = "rgbg";  // LibRaw's colours: its second green is 3
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) EXPECT_EQ(letters[libraw.COLOR(y, x)], filterAt("grbg", x, y)) << x << "," << y;
+    EXPECT_EQ(d.color.black, 512u);  // 2^(14 - 5)
+    EXPECT_EQ(d.color.maximum, 16383u);
+    EXPECT_EQ(out.raw->whiteLevelDn, 16383);  // ISO's gain puts the well at or past the ADC's full scale
+    SensorSpec coarse = s;
+    coarse.gainElectronsPerDn = 10;  // the well's 43,200 e- then read 512 + 4,320 DN
+    Image small;
+    EXPECT_EQ(mosaicOf(coarse, "rggb", calibrateSensor(coarse, kUnitFilm), {0, 0, 0}, 0, 0, small, 4).mosaic->whiteLevelDn, 4832);
+    for (std::size_t i = 0; i < out.raw->dn.size(); ++i) ASSERT_EQ(d.rawdata.raw_image[i], out.raw->dn[i]) << "site " << i;
+    EXPECT_EQ(std::string(d.idata.model), "simulated sensor");
+    ASSERT_EQ(libraw.dcraw_process(), LIBRAW_SUCCESS);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) EXPECT_NEAR(d.color.rgb_cam[i][j], i == j ? 1 : 0, 1e-4) << i << "," << j;
+}
+
+TEST(CameraSensorMosaic, ARenderKeepsTheFullFramesMosaicAndItsKeysAreChecked) {
+    RenderSettings s;
+    s.sensor = coarseSensor(",cfa=rggb");
+    const RenderOutput full = skyAtF4(s, 2);
+    ASSERT_TRUE(full.raw);
+    EXPECT_EQ(full.raw->pattern.name(), "rggb");
+    EXPECT_NE(full.metadata.at("sensor").find("a rggb Bayer mosaic"), std::string::npos) << full.metadata.at("sensor");
+    s.crop = std::array<double, 4>{0.5, 1, 0.5, 1};  // from pixel (20, 15): an odd row starts gbrg
+    const RenderOutput crop = skyAtF4(s, 2);
+    ASSERT_TRUE(crop.raw);
+    EXPECT_EQ(crop.raw->pattern.name(), "gbrg");
+    for (int y = 0; y < 15; ++y)
+        for (int x = 0; x < 20; ++x) {
+            ASSERT_EQ(crop.raw->dn[std::size_t(y) * 20 + x], full.raw->dn[std::size_t(y + 15) * 40 + x + 20]);
+            // Two sites from the crop's edges the demosaic sees only the full frame's sites.
+            if (x < 2 || x >= 18 || y < 2 || y >= 13) continue;
+            for (int ch = 0; ch < 3; ++ch)
+                ASSERT_EQ(crop.image.rgb[(std::size_t(y) * 20 + x) * 3 + ch],
+                          full.image.rgb[(std::size_t(y + 15) * 40 + x + 20) * 3 + ch]);
+        }
+    s.crop = std::array<double, 4>{0.5, 0.52, 0, 1};  // one column: nothing to demosaic from
+    EXPECT_THROW(skyAtF4(s, 1), SceneError);
+
+    // Without a mosaic a render has no raw numbers, and a DNG is refused by name.
+    s.crop.reset();
+    s.sensor = coarseSensor();
+    const RenderOutput plain = skyAtF4(s, 1);
+    EXPECT_FALSE(plain.raw);
+    test::TempDir dir;
+    try {
+        writeImageFile(plain, dir.path() + "/plain.dng");
+        ADD_FAILURE() << "a DNG without a mosaic";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("needs a sensor with a colour mosaic"), std::string::npos) << e.what();
+    }
+
+    EXPECT_EQ(sensorSpecFromPairs(parseSensorPairs("cfa=bggr")).colourFilter->name(), "bggr");
+    EXPECT_NE(sensorKeyError("cfa=rgbg").find("cfa must be one of none, rggb, bggr, grbg, gbrg, got 'rgbg'"), std::string::npos)
+        << sensorKeyError("cfa=rgbg");
+    EXPECT_NE(sensorKeyError("cfa=1").find("got 1"), std::string::npos) << sensorKeyError("cfa=1");
+    EXPECT_NE(sensorKeyError("cfa=rggb,cfa=bggr").find("cfa is given twice"), std::string::npos);
+    EXPECT_NE(sensorKeyError("bits=20,cfa=rggb").find("bits must be at most 16 with cfa, got 20"), std::string::npos) << sensorKeyError("bits=20,cfa=rggb");
 }
 
 }  // namespace

@@ -352,15 +352,17 @@ TEST_F(ServerApi, TiltAndShiftRenderAndRefuseWhatAMovedLensCannotDo) {
 TEST_F(ServerApi, ASensorRendersItsReadoutAndRefusesUnknownKeys) {
     auto c = client();
     const Reply noisy = postJson(c, "/api/renders", {{"scene", "depth-of-field"}, {"lens", "dgauss.50mm"},
-                                                     {"sensor", {{"iso", 25600}, {"exposure", 1e-4}}}, {"spp", 1},
-                                                     {"width", 32}, {"height", 24}});
+                                                     {"sensor", {{"iso", 25600}, {"exposure", 1e-4}, {"cfa", "rggb"}}},
+                                                     {"spp", 1}, {"width", 32}, {"height", 24}});
     ASSERT_EQ(noisy.status, 202) << noisy.raw;
     EXPECT_EQ(noisy.body["request"]["sensor"]["iso"], 25600) << noisy.raw;
+    EXPECT_EQ(noisy.body["request"]["sensor"]["cfa"], "rggb") << noisy.raw;
     const json done = waitForRenderState(c, noisy.body["id"], {"done", "failed", "cancelled"}, 120);
     ASSERT_EQ(done["state"], "done") << done.dump();
     const auto exr = c.Get("/api/renders/" + noisy.body["id"].get<std::string>() + "/image.exr");
     ASSERT_EQ(exr->status, 200);
     EXPECT_NE(exr->body.find("ISO 25600, exposure 0.0001 s"), std::string::npos);  // the header's sensor line
+    EXPECT_NE(exr->body.find("a rggb Bayer mosaic, demosaiced"), std::string::npos);
     const Reply unknown = postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"sensor", {{"isp", 100}}}});
     EXPECT_EQ(unknown.status, 400);
     EXPECT_NE(unknown.body["error"].get<std::string>().find("sensor: unknown key 'isp'"), std::string::npos) << unknown.raw;
@@ -369,6 +371,9 @@ TEST_F(ServerApi, ASensorRendersItsReadoutAndRefusesUnknownKeys) {
     EXPECT_NE(range.body["error"].get<std::string>().find("bits must be a whole number between 1 and 24"), std::string::npos) << range.raw;
     EXPECT_EQ(postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"sensor", 800}}).status, 400);
     EXPECT_EQ(postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"sensor", {{"iso", "fast"}}}}).status, 400);
+    const Reply pattern = postJson(c, "/api/renders", {{"lens", "dgauss.50mm"}, {"sensor", {{"cfa", "rgbg"}}}});
+    EXPECT_EQ(pattern.status, 400);
+    EXPECT_NE(pattern.body["error"].get<std::string>().find("cfa must be one of none, rggb"), std::string::npos) << pattern.raw;
 }
 
 // Lens settings are checked once, by optics, and the error names the field it came from.

@@ -46,7 +46,7 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
     const json full = {{"scene", "s"}, {"lens", "l"}, {"fstop", 2.8}, {"focaldistance", 1500}, {"filmdiagonal", 43.3},
                        {"mode", "thick"}, {"spectral", true}, {"spp", 4}, {"width", 64}, {"height", 48},
                        {"ghosts", "12"}, {"ghost_model", "paraxial"}, {"tilt", 6}, {"swing", -2.5},
-                       {"shift", {3, -4}}, {"sensor", {{"iso", 800}, {"read", 1.5}}}};
+                       {"shift", {3, -4}}, {"sensor", {{"iso", 800}, {"read", 1.5}, {"cfa", "rggb"}}}};
     EXPECT_EQ(renderRequestJson(parseRenderRequest(full, limits, "")), full);
     EXPECT_TRUE(renderRequestJson(r)["shift"].is_null());  // the scene's own
     EXPECT_TRUE(renderRequestJson(r)["sensor"].is_null());  // the noiseless film
@@ -59,7 +59,9 @@ TEST(RenderRequestTest, FillsDefaultsAndChecksRanges) {
                             json{{"lens", ""}}, json{{"colour", 1}}, json{{"spp", 1.5}}, json{{"spectral", "on"}},
                             json{{"ghosts", "some"}}, json{{"ghosts", 0}}, json{{"ghosts", 1001}}, json{{"ghosts", true}},
                             json{{"ghost_model", "fast"}}, json{{"tilt", 46}}, json{{"swing", "left"}},
-                            json{{"shift", {1}}}, json{{"shift", {1, 101}}}, json{{"shift", "up"}}, json{{"shift", {1, "a"}}}}) {
+                            json{{"shift", {1}}}, json{{"shift", {1, 101}}}, json{{"shift", "up"}}, json{{"shift", {1, "a"}}},
+                            json{{"sensor", {{"cfa", "rgbg"}}}}, json{{"sensor", {{"cfa", 1}}}}, json{{"sensor", {{"iso", true}}}},
+                            json{{"sensor", {{"iso", "fast"}}}}}) {
         try {
             parseRenderRequest(bad, limits, "s");
             ADD_FAILURE() << "accepted " << bad.dump();

@@ -1,5 +1,5 @@
-// Image output: PNG (sRGB, 8 bit, through lenslab_image) and OpenEXR (linear float RGB, tiled,
-// the render's metadata as string attributes "lenslab.<key>").
+// Image output: PNG (sRGB, 8 bit, through lenslab_image), OpenEXR (linear float RGB, tiled, the
+// render's metadata as string attributes "lenslab.<key>") and a colour mosaic's raw DNG.
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -17,6 +17,7 @@
 #include <fstream>
 #include <unistd.h>
 
+#include "film/DngFile.h"
 #include "PngCodec.h"
 #include "Render.h"
 
@@ -54,13 +55,13 @@ private:
     std::uint64_t pos_ = 0;
 };
 
-std::string lowerExtension(const std::string& path) {
+}  // namespace
+
+std::string imageFileExtension(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
-
-}  // namespace
 
 std::vector<std::uint8_t> encodePng(const Image& image, double exposure) {
     checkImage(image);
@@ -102,11 +103,15 @@ std::vector<std::uint8_t> encodeExr(const RenderOutput& output) {
 }
 
 void writeImageFile(const RenderOutput& output, const std::string& path, double exposure) {
-    const std::string ext = lowerExtension(path);
+    const std::string ext = imageFileExtension(path);
     std::vector<std::uint8_t> bytes;
     if (ext == ".png") bytes = encodePng(output.image, exposure);
     else if (ext == ".exr") bytes = encodeExr(output);
-    else throw std::invalid_argument("output '" + path + "': the extension must be .png or .exr");
+    else if (ext == ".dng") {
+        if (!output.raw)
+            throw std::invalid_argument("output '" + path + "': a raw DNG file needs a sensor with a colour mosaic (sensor key cfa)");
+        bytes = encodeDng(*output.raw);
+    } else throw std::invalid_argument("output '" + path + "': the extension must be .png, .exr or .dng");
     static std::atomic<unsigned> counter{0};
     const std::string temp = path + ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
     {

@@ -5,6 +5,7 @@
 #include <random>
 #include <sstream>
 
+#include "film/Demosaic.h"
 #include "sampling/Sampling.h"
 
 namespace lenslab {
@@ -84,37 +85,62 @@ SensorCalibration calibrateSensor(const SensorSpec& spec, const SensorExposureIn
     return c;
 }
 
-SensorReadoutStats readOutSensor(const SensorSpec& spec, const SensorCalibration& c, std::uint64_t seed, int x0, int y0,
-                                 Image& image) {
-    SensorReadoutStats stats;
+SensorReadout readOutSensor(const SensorSpec& spec, const SensorCalibration& c, std::uint64_t seed, int x0, int y0,
+                            Image& image) {
+    SensorReadout readout;
     const double electronsPerValue = c.luxSecondsPerValue * c.electronsPerLuxSecond;
     const double outputPerElectron = c.outputPerLuxSecond / c.electronsPerLuxSecond;
     const double readDn = spec.readNoiseElectrons / c.gainElectronsPerDn;
     const std::uint64_t noiseSeed = hashCombine(seed, 0x5e45041e7ea1ULL);  // apart from the renderer's own uses of the seed
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x)
-            for (int ch = 0; ch < 3; ++ch) {
-                float& value = image.rgb[(std::size_t(y) * image.width + x) * 3 + ch];
-                PcgBits pattern{Pcg32(siteKey(spec.patternSeed, x0 + x, y0 + y, ch))};
-                const double response = 1 + normal(pattern, spec.prnu);
-                const double darkRate = std::max(0.0, spec.darkCurrentElectronsPerSecond + normal(pattern, spec.dsnuElectronsPerSecond));
-                const double mean = std::max(0.0, double(value) * electronsPerValue * response) + darkRate * c.exposureSeconds;
-                PcgBits noise{Pcg32(siteKey(noiseSeed, x0 + x, y0 + y, ch))};
-                double electrons = mean > 0 ? double(std::poisson_distribution<long long>(mean)(noise)) : 0.0;
-                if (electrons >= c.fullWellElectrons) {
-                    electrons = c.fullWellElectrons;
-                    ++stats.wellClipped;
+    // The ADC number of the photosite of channel ch at full-frame pixel (x, y), exposed to a film value.
+    const auto readSite = [&](double value, int x, int y, int ch) {
+        PcgBits pattern{Pcg32(siteKey(spec.patternSeed, x, y, ch))};
+        const double response = 1 + normal(pattern, spec.prnu);
+        const double darkRate = std::max(0.0, spec.darkCurrentElectronsPerSecond + normal(pattern, spec.dsnuElectronsPerSecond));
+        const double mean = std::max(0.0, value * electronsPerValue * response) + darkRate * c.exposureSeconds;
+        PcgBits noise{Pcg32(siteKey(noiseSeed, x, y, ch))};
+        double electrons = mean > 0 ? double(std::poisson_distribution<long long>(mean)(noise)) : 0.0;
+        if (electrons >= c.fullWellElectrons) {
+            electrons = c.fullWellElectrons;
+            ++readout.wellClipped;
+        }
+        const double dn = std::nearbyint(electrons / c.gainElectronsPerDn + c.blackLevelDn + normal(noise, readDn));
+        if (dn >= c.fullScaleDn) ++readout.adcClipped;
+        return std::clamp(dn, 0.0, c.fullScaleDn);
+    };
+    const auto developed = [&](double dn) { return float((dn - c.blackLevelDn) * c.gainElectronsPerDn * outputPerElectron); };
+    if (!spec.colourFilter) {
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                for (int ch = 0; ch < 3; ++ch) {
+                    float& value = image.rgb[(std::size_t(y) * image.width + x) * 3 + ch];
+                    value = developed(readSite(value, x0 + x, y0 + y, ch));
                 }
-                double dn = std::nearbyint(electrons / c.gainElectronsPerDn + c.blackLevelDn + normal(noise, readDn));
-                if (dn >= c.fullScaleDn) ++stats.adcClipped;
-                dn = std::clamp(dn, 0.0, c.fullScaleDn);
-                value = float((dn - c.blackLevelDn) * c.gainElectronsPerDn * outputPerElectron);
-            }
-    return stats;
+        return readout;
+    }
+    // One photosite a pixel, behind its filter: its channel's value alone is read, then demosaiced.
+    RawMosaic& raw = readout.mosaic.emplace();
+    raw.width = image.width;
+    raw.height = image.height;
+    raw.pattern = spec.colourFilter->from(x0, y0);
+    raw.blackLevelDn = c.blackLevelDn;
+    raw.whiteLevelDn = std::min(c.fullScaleDn, std::nearbyint(c.blackLevelDn + c.fullWellElectrons / c.gainElectronsPerDn));
+    raw.dn.resize(std::size_t(image.width) * image.height);
+    std::vector<float> sites(raw.dn.size());
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const std::size_t i = std::size_t(y) * image.width + x;
+            const int ch = raw.pattern.channelAt(x, y);
+            const double dn = readSite(image.rgb[i * 3 + ch], x0 + x, y0 + y, ch);
+            raw.dn[i] = std::uint16_t(dn);
+            sites[i] = developed(dn);
+        }
+    image = demosaic(sites, image.width, image.height, raw.pattern);
+    return readout;
 }
 
 std::map<std::string, std::string> describeSensor(const SensorSpec& spec, const SensorCalibration& c,
-                                                  const SensorReadoutStats& stats) {
+                                                  const SensorReadout& readout) {
     std::ostringstream s;
     s << "ISO " << shown(spec.iso) << (spec.exposureSeconds ? ", exposure " : ", metered exposure ") << shown(c.exposureSeconds)
       << " s, pitch " << shown(c.pitchMicrometres) << " um, fill " << shown(spec.fillFactor) << ", QE " << shown(spec.quantumEfficiency)
@@ -122,11 +148,12 @@ std::map<std::string, std::string> describeSensor(const SensorSpec& spec, const 
       << spec.adcBits << "-bit ADC, black " << shown(c.blackLevelDn) << " DN, read noise " << shown(spec.readNoiseElectrons)
       << " e-, dark current " << shown(spec.darkCurrentElectronsPerSecond) << " e-/s (DSNU " << shown(spec.dsnuElectronsPerSecond)
       << "), PRNU " << shown(spec.prnu) << ", base ISO " << shown(c.baseIso) << ", " << shown(spec.nits)
-      << " cd/m^2 per unit radiance; developed by standard output sensitivity (0.18 at 10 / ISO lux s)";
+      << " cd/m^2 per unit radiance; developed by standard output sensitivity (0.18 at 10 / ISO lux s)"
+      << (spec.colourFilter ? "; a " + spec.colourFilter->name() + " Bayer mosaic, demosaiced by Malvar-He-Cutler" : "");
     return {{"sensor", s.str()},
             {"sensorElectronsPerValue", shown(c.luxSecondsPerValue * c.electronsPerLuxSecond)},
-            {"sensorClipped", std::to_string(stats.wellClipped) + " channels at the full well, " +
-                                  std::to_string(stats.adcClipped) + " at the ADC's full scale"}};
+            {"sensorClipped", std::to_string(readout.wellClipped) + " photosites at the full well, " +
+                                  std::to_string(readout.adcClipped) + " at the ADC's full scale"}};
 }
 
 }  // namespace lenslab

@@ -5,7 +5,9 @@
 // collect photo-electrons (Poisson, with the fixed-pattern response PRNU), dark current (Poisson,
 // with its fixed pattern DSNU), fill to at most the full well, and are read with Gaussian read
 // noise through the gain into whole ADC numbers above the black level, clipped to the ADC's range.
-// Each pixel's three channels are three photosites (no colour mosaic).
+// Each pixel's three channels are three photosites, or, behind a Bayer colour filter mosaic
+// (SensorSpec::colourFilter), one photosite a pixel reads its filter's channel and the picture is
+// demosaiced from them (film/Demosaic.h).
 //
 // The output is the developed picture by ISO 12232's standard output sensitivity: a focal-plane
 // exposure of 10 / ISO lux s reads 0.18 (linear), so an ISO twice as high at half the exposure
@@ -50,18 +52,20 @@ std::optional<double> sensorFilmDiagonalMm(const SensorSpec& spec, std::optional
 // Throws SensorSpecError when the frame cannot be exposed (no lens radiometry, a pitch unlike the film's).
 SensorCalibration calibrateSensor(const SensorSpec& spec, const SensorExposureInput& input);
 
-struct SensorReadoutStats {
-    std::uint64_t wellClipped = 0, adcClipped = 0;  // channels that filled the well, reached full scale
+struct SensorReadout {
+    std::uint64_t wellClipped = 0, adcClipped = 0;  // photosites that filled the well, reached full scale
+    std::optional<RawMosaic> mosaic;                // a colour mosaic's ADC numbers
 };
 
 // Replaces the image's values by the sensor's developed readout. Pixel (x, y) of the image is
-// (x0 + x, y0 + y) of the full frame: the fixed pattern belongs to the full frame, and the noise
-// to (seed, full-frame pixel), so crops and tile spreads give the same pixels.
-SensorReadoutStats readOutSensor(const SensorSpec& spec, const SensorCalibration& calibration, std::uint64_t seed, int x0,
-                                 int y0, Image& image);
+// (x0 + x, y0 + y) of the full frame: the fixed pattern and the colour filter belong to the full
+// frame, and the noise to (seed, full-frame pixel, channel), so crops and tile spreads give the
+// same pixels.
+SensorReadout readOutSensor(const SensorSpec& spec, const SensorCalibration& calibration, std::uint64_t seed, int x0,
+                            int y0, Image& image);
 
 // The calibration and its inputs for the image's metadata.
 std::map<std::string, std::string> describeSensor(const SensorSpec& spec, const SensorCalibration& calibration,
-                                                  const SensorReadoutStats& stats);
+                                                  const SensorReadout& readout);
 
 }  // namespace lenslab

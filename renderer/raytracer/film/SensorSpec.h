@@ -8,7 +8,10 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
+
+#include "film/BayerMosaic.h"
 
 namespace lenslab {
 
@@ -28,7 +31,14 @@ struct SensorSpec {
     std::optional<double> blackLevelDn;   // unset: 2^(bits - 5), room below black for the read noise
     double nits = 1;                   // cd/m^2 of a scene radiance whose luminance is 1
     std::uint64_t patternSeed = 0;     // the fixed pattern's: the same sensor in every frame
+    // unset: three photosites a pixel; set: one a pixel behind this Bayer filter pattern (at the
+    // full frame's first pixel), demosaiced into the picture, its raw numbers kept (film/BayerMosaic.h).
+    std::optional<BayerPattern> colourFilter;
 };
+
+// A key's value: a number, or a word (cfa's).
+using SensorValue = std::variant<double, std::string>;
+using SensorPairs = std::vector<std::pair<std::string, SensorValue>>;
 
 class SensorSpecError : public std::invalid_argument {
 public:
@@ -36,10 +46,11 @@ public:
 };
 
 // From key=value pairs (keys: iso exposure gain qe fill pitch fullwell read dark dsnu prnu bits
-// black nits pattern); throws SensorSpecError naming the key, its range and the value.
-SensorSpec sensorSpecFromPairs(const std::vector<std::pair<std::string, double>>& pairs);
+// black nits pattern, numbers; cfa, none or a Bayer pattern); throws SensorSpecError naming the
+// key, its range and the value.
+SensorSpec sensorSpecFromPairs(const SensorPairs& pairs);
 
-// "iso=800,exposure=0.01" as the command line gives it.
-std::vector<std::pair<std::string, double>> parseSensorPairs(const std::string& text);
+// "iso=800,exposure=0.01,cfa=rggb" as the command line gives it: numbers where they read as one.
+SensorPairs parseSensorPairs(const std::string& text);
 
 }  // namespace lenslab

@@ -101,6 +101,9 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     area_ = {int(std::ceil(width_ * c[0])), int(std::ceil(height_ * c[2])), int(std::ceil(width_ * c[1])),
              int(std::ceil(height_ * c[3]))};
     if (area_.x1 <= area_.x0 || area_.y1 <= area_.y0) throw SceneError("the crop window holds no pixel");
+    if (settings.sensor && settings.sensor->colourFilter && (area_.x1 - area_.x0 < 2 || area_.y1 - area_.y0 < 2))
+        throw SceneError("a sensor's colour mosaic needs 2 x 2 pixels at least to demosaic; the crop window holds " +
+                         std::to_string(area_.x1 - area_.x0) + " x " + std::to_string(area_.y1 - area_.y0));
     tiles_ = makeTiles(area_, settings.tileSize);
     scene_.film.crop = c;  // the camera prepares only the film radii this window covers
 
@@ -132,9 +135,10 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     setupSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-void PreparedFrame::finishImage(const SplatBuffer& splats, Image& image, std::map<std::string, std::string>& metadata) const {
+std::optional<RawMosaic> PreparedFrame::finishImage(const SplatBuffer& splats, Image& image,
+                                                   std::map<std::string, std::string>& metadata) const {
     addSplats(splats, image);
-    if (!settings_.sensor) return;
+    if (!settings_.sensor) return std::nullopt;
     double luminanceSum = 0;
     for (std::size_t i = 0; i < image.rgb.size(); i += 3)
         luminanceSum += luminance({image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]});
@@ -143,8 +147,10 @@ void PreparedFrame::finishImage(const SplatBuffer& splats, Image& image, std::ma
                                     radiometry_->diagonalMm * 1e3 / std::hypot(double(width_), double(height_)),
                                     luminanceSum / double(std::size_t(image.width) * image.height)};
     const SensorCalibration calibration = calibrateSensor(*settings_.sensor, input);
-    const SensorReadoutStats stats = readOutSensor(*settings_.sensor, calibration, settings_.seed, area_.x0, area_.y0, image);
-    for (auto& [key, value] : describeSensor(*settings_.sensor, calibration, stats)) metadata[key] = value;
+    SensorReadout readout = readOutSensor(*settings_.sensor, calibration, settings_.seed, area_.x0, area_.y0, image);
+    for (auto& [key, value] : describeSensor(*settings_.sensor, calibration, readout)) metadata[key] = value;
+    if (readout.mosaic) readout.mosaic->description = metadata["sensor"];
+    return std::move(readout.mosaic);
 }
 
 void PreparedFrame::addSplats(const SplatBuffer& splats, Image& image) const {

@@ -70,8 +70,10 @@ public:
 
     // The last step on the whole image: the frame's splats (every tile's, SplatImage) added through
     // the film's exposure scale and white balance as renderRect's pixels, then the sensor read out
-    // when the settings name one (film/SensorReadout.h), its calibration added to metadata.
-    void finishImage(const SplatBuffer& splats, Image& image, std::map<std::string, std::string>& metadata) const;
+    // when the settings name one (film/SensorReadout.h), its calibration added to metadata. Returns
+    // the sensor's raw numbers when it has a colour mosaic.
+    std::optional<RawMosaic> finishImage(const SplatBuffer& splats, Image& image,
+                                         std::map<std::string, std::string>& metadata) const;
 
     bool spectral() const { return spectral_; }
     const FlareStats& flareStats() const { return flare_.stats; }

@@ -57,7 +57,7 @@ RenderOutput renderScene(const RenderSettings& settings, const std::function<voi
     });
     if (cancelled()) throw RenderCancelled();
     out.metadata = frame.metadata();
-    frame.finishImage(splats.sum(), image, out.metadata);
+    out.raw = frame.finishImage(splats.sum(), image, out.metadata);
 
     out.stats.renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
     out.stats.cameraRays = counters.cameraRays;
