@@ -7,6 +7,7 @@
 
 #include "BsdfTesting.h"
 #include "TestScenes.h"
+#include "core/DaylightSpectrum.h"
 #include "core/Spectrum.h"
 #include "film/WhiteBalance.h"
 #include "materials/Material.h"

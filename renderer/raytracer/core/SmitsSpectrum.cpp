@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/TabulatedSpectrum.h"
+
 namespace lenslab {
 
 namespace {
@@ -41,11 +43,7 @@ std::array<float, kSmitsBases> smitsCoefficients(const Vec3f& c) {
 }
 
 double smitsBasis(SmitsBasis basis, double nm) {
-    const double t = std::clamp((nm - kFirstNm) / (kLastNm - kFirstNm) * 9, 0.0, 9.0);
-    const int i = std::min(int(t), 8);
-    const double f = t - i;
-    const double* v = kBases[int(basis)];
-    return (1 - f) * v[i] + f * v[i + 1];
+    return TabulatedSpectrum{kBases[int(basis)], 10, kFirstNm, (kLastNm - kFirstNm) / 9}(nm);
 }
 
 }  // namespace lenslab

@@ -38,12 +38,14 @@ Vec3f sampledSpectrumToRgb(const std::vector<double>& lambda, const std::vector<
     return xyzToRgb(x / n, y / n, z / n);
 }
 
-Vec3f blackbodyToRgb(double kelvin, double scale) {
+double planckRadiance(double kelvin, double nm) {
     constexpr double c = 299792458.0, h = 6.62606957e-34, kb = 1.3806488e-23;
-    const auto planck = [&](double nm) {
-        const double l = nm * 1e-9;
-        return 2 * h * c * c / (std::pow(l, 5) * (std::exp(h * c / (l * kb * kelvin)) - 1));
-    };
+    const double l = nm * 1e-9;
+    return 2 * h * c * c / (std::pow(l, 5) * (std::exp(h * c / (l * kb * kelvin)) - 1));
+}
+
+Vec3f blackbodyToRgb(double kelvin, double scale) {
+    const auto planck = [&](double nm) { return planckRadiance(kelvin, nm); };
     const double peak = planck(2.8977721e-3 / kelvin * 1e9);
     std::vector<double> lambda, v;
     for (int l = kVisibleFirstNm; l <= kVisibleLastNm; ++l) {

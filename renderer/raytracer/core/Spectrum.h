@@ -12,6 +12,9 @@ namespace lenslab {
 // Wavelengths in nm, ascending; values as given. Both the same non-zero length.
 Vec3f sampledSpectrumToRgb(const std::vector<double>& lambdaNm, const std::vector<double>& values);
 
+// Planck's law: a black body's spectral radiance at temperature T (kelvin), W / (m^2 sr m).
+double planckRadiance(double kelvin, double nm);
+
 // pbrt-v3's "blackbody" [T scale]: Planck's law at temperature T (kelvin), divided by its own peak
 // (Wien's displacement law), converted like a sampled spectrum, times scale.
 Vec3f blackbodyToRgb(double kelvin, double scale);

@@ -13,7 +13,4 @@ using Rgb3x3 = std::array<float, 9>;  // row-major, linear sRGB to linear sRGB
 Rgb3x3 whiteBalanceMatrix(double kelvin);
 Vec3f applyRgbMatrix(const Rgb3x3& m, Vec3f c);
 
-// The chromaticity (x, y) of CIE daylight at a correlated colour temperature (CIE 15's formula).
-void daylightChromaticity(double kelvin, double& x, double& y);
-
 }  // namespace lenslab

@@ -11,7 +11,6 @@
 
 #include "cameras/CameraFactory.h"
 #include "cameras/Shutter.h"
-#include "film/WhiteBalance.h"
 #include "render/HeroWavelengths.h"
 
 namespace lenslab {
@@ -50,17 +49,6 @@ Vec3f clampComponents(Vec3f L, double limit, double scale) {
     return limit > 0 && m > limit ? float(limit / m) * L : L;
 }
 
-// The white balance the film applies (the identity at 6504 K when it asks for none).
-Rgb3x3 filmWhiteBalance(const FilmSpec& film) {
-    return whiteBalanceMatrix(film.whiteBalanceKelvin > 0 ? film.whiteBalanceKelvin : 6504);
-}
-
-// A pixel's estimate as the film stores it: the exposure scale, then the white balance.
-Vec3f toFilm(Vec3f v, const FilmSpec& film, const Rgb3x3& whiteBalance) {
-    v = float(film.scale) * v;
-    return film.whiteBalanceKelvin > 0 ? applyRgbMatrix(whiteBalance, v) : v;
-}
-
 Vec3f clamped(Vec3f L, const FilmSpec& film) {
     return clampComponents(clampLuminance(L, film.maxSampleLuminance), film.maxComponentValue, film.scale);
 }
@@ -84,6 +72,7 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
       scene_(parseSceneFile(settings.scenePath, {settings.confined, settings.loadProgress})),
       arena_(threadCount(settings)),
       filter_(scene_.filter),
+      filmColour_(scene_.film),
       shutter_(readShutter(scene_.camera.params)) {
     width_ = settings.width.value_or(scene_.film.xresolution);
     height_ = settings.height.value_or(scene_.film.yresolution);
@@ -154,13 +143,12 @@ std::optional<RawMosaic> PreparedFrame::finishImage(const SplatBuffer& splats, I
 }
 
 void PreparedFrame::addSplats(const SplatBuffer& splats, Image& image) const {
-    const Rgb3x3 whiteBalance = filmWhiteBalance(scene_.film);
     const PixelRect& box = splats.box();
     const std::size_t boxWidth = std::size_t(box.x1 - box.x0);
     for (int y = std::max(box.y0, area_.y0); y < std::min(box.y1, area_.y1); ++y)
         for (int x = std::max(box.x0, area_.x0); x < std::min(box.x1, area_.x1); ++x) {
             const float* s = &splats.rgb()[(std::size_t(y - box.y0) * boxWidth + std::size_t(x - box.x0)) * 3];
-            const Vec3f v = toFilm({s[0], s[1], s[2]}, scene_.film, whiteBalance);
+            const Vec3f v = filmColour_({s[0], s[1], s[2]});
             float* p = &image.rgb[(std::size_t(y - area_.y0) * std::size_t(image.width) + std::size_t(x - area_.x0)) * 3];
             // Negative splats (HeroWavelengths.h: a wavelength taken from where it did not land) may
             // outweigh a pixel; the film clamps at zero as renderRect does.
@@ -181,7 +169,6 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
     std::vector<CameraSample> samples(std::size_t(runPixels) * spp_);
     std::vector<CameraRay> rays(samples.size());
     std::vector<float> filterWeights(samples.size());
-    const Rgb3x3 whiteBalance = filmWhiteBalance(scene_.film);
     // Spectral: each sample's wavelengths (the first its own) and where each lands.
     const std::size_t spectralSlots = spectral_ ? samples.size() * wavelengths_ : 0;
     std::vector<WavelengthSample> wavelengths(spectralSlots);
@@ -261,7 +248,7 @@ bool PreparedFrame::renderRect(const PixelRect& rect, float* dst, std::size_t ro
                     const float* f = &flare_.rgb[(std::size_t(py) * width_ + px) * 3];
                     v += Vec3f{f[0], f[1], f[2]};
                 }
-                v = toFilm(v, scene_.film, whiteBalance);
+                v = filmColour_(v);
                 out[0] = std::max(0.0f, v.x);
                 out[1] = std::max(0.0f, v.y);
                 out[2] = std::max(0.0f, v.z);

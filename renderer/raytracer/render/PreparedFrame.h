@@ -17,6 +17,7 @@
 #include "cameras/Camera.h"
 #include "cameras/Shutter.h"
 #include "integrators/Integrator.h"
+#include "film/FilmColour.h"
 #include "film/PixelFilter.h"
 #include "film/SensorReadout.h"
 #include "film/SpectralSensor.h"
@@ -91,6 +92,7 @@ private:
     std::vector<PixelRect> tiles_;
     tbb::task_arena arena_;
     PixelFilter filter_;
+    FilmColour filmColour_;
     Shutter shutter_;
     std::unique_ptr<Camera> camera_;
     std::unique_ptr<SceneGeometry> geometry_;

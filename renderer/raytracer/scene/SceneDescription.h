@@ -35,6 +35,7 @@ struct FilmSpec {
     double maxComponentValue = 0;               // > 0: scale each sample down to this largest component (pbrt-v4)
     double iso = 100;                           // pbrt-v4's sensor: the image scales by ISO / 100
     double whiteBalanceKelvin = 0;              // pbrt-v4: adapt this illuminant's white to D65 (0: none)
+    std::string cameraSensor;                   // pbrt-v4's measured camera (core/CameraSensorCurves.h); empty: CIE 1931
     SourceLocation where;
 };
 

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/CameraSensorCurves.h"
 #include "core/CompressedFile.h"
 #include "scene/DialectDetection.h"
 #include "images/LinearImage.h"
@@ -419,18 +420,21 @@ private:
         p.checkAllUsed(scene_.warnings, {"savefp16", "writefp16"});
     }
 
-    // pbrt-v4's sensor: an ISO speed and a white balance; the exposure time comes from the
-    // camera's shutter (applyPbrt4Exposure). Camera sensors other than the CIE 1931 observer need
-    // their measured curves, which lenslab does not have: the observer stands in for them.
+    // pbrt-v4's sensor: an ISO speed, a white balance and the CIE 1931 observer or a measured
+    // camera (film/MeasuredCameraSensor.h); the exposure time comes from the camera's shutter
+    // (applyPbrt4Exposure).
     void readPbrt4Sensor(const ParamSet& p, FilmSpec& f) {
         f.iso = p.getFloat("iso", 100);
         if (!(f.iso > 0)) p.fail("iso must be positive");
         const std::string sensor = p.getString("sensor", "cie1931");
-        f.whiteBalanceKelvin = p.getFloat("whitebalance", sensor == "cie1931" ? 0 : 6500);
+        if (sensor != "cie1931" && !findCameraSensorCurves(sensor))
+            p.fail("unknown sensor \"" + sensor + "\" (known: cie1931, " + cameraSensorNames() + ")");
+        if (sensor != "cie1931") f.cameraSensor = sensor;
+        f.whiteBalanceKelvin = p.getFloat("whitebalance", 0);
         if (f.whiteBalanceKelvin != 0 && !(f.whiteBalanceKelvin >= 1000 && f.whiteBalanceKelvin <= 25000))
             p.fail("whitebalance must lie in [1000, 25000] K (or 0: none)");
-        if (sensor != "cie1931")
-            warn(p.where(), "sensor \"" + sensor + "\" rendered as the CIE 1931 observer (no measured curves), white balanced");
+        // pbrt-v4 balances a camera for 6500 K unless told otherwise; the observer, not at all.
+        if (!f.cameraSensor.empty() && f.whiteBalanceKelvin == 0) f.whiteBalanceKelvin = 6500;
         f.maxComponentValue = p.getFloat("maxcomponentvalue", 0);
         if (f.maxComponentValue < 0) p.fail("maxcomponentvalue must not be negative");
     }
