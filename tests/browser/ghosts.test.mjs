@@ -88,6 +88,15 @@ async function checkFlareRender(page, base) {
         `the render modelled ${job.stats.flare_paths} ghost paths (${job.request.ghost_model})`);
 }
 
+// Clicks Render and waits for one more finished render in the history: the newest job.
+async function renderToTheEnd(page, base) {
+  const finished = await page.$$eval('.history-item[data-state="done"]', (items) => items.length);
+  await page.click("#render-button");
+  await page.waitForFunction((n) => document.querySelectorAll('.history-item[data-state="done"]').length > n, finished,
+                             { timeout: 120000 });
+  return (await (await page.request.get(`${base}api/renders`)).json()).renders[0];
+}
+
 // The render form's tilt and shift reach the job and its history; a shift the service refuses is
 // shown with the service's words.
 async function checkTiltShiftRender(page, base) {
@@ -95,11 +104,7 @@ async function checkTiltShiftRender(page, base) {
   await page.selectOption("#scene", "depth-of-field");
   await page.fill("#render-tilt", "4");
   await page.fill("#render-shift", "2,1");
-  const finished = await page.$$eval('.history-item[data-state="done"]', (items) => items.length);
-  await page.click("#render-button");
-  await page.waitForFunction((n) => document.querySelectorAll('.history-item[data-state="done"]').length > n, finished,
-                             { timeout: 120000 });
-  const job = (await (await page.request.get(`${base}api/renders`)).json()).renders[0];
+  const job = await renderToTheEnd(page, base);
   check(job.request.tilt === 4 && job.request.swing === null && job.request.shift.join() === "2,1" && job.state === "done",
         `the render was tilted and shifted as asked: ${JSON.stringify([job.request.tilt, job.request.shift, job.state])}`);
   check((await page.textContent(".history-item")).includes("tilt 4° · shift 2, 1 mm"), "the history names the tilt and shift");
@@ -117,11 +122,7 @@ async function checkSensorRender(page, base) {
   await page.fill("#render-shift", "");
   await page.fill("#render-sensor-iso", "6400");
   await page.fill("#render-sensor-pitch", "4.35");
-  const finished = await page.$$eval('.history-item[data-state="done"]', (items) => items.length);
-  await page.click("#render-button");
-  await page.waitForFunction((n) => document.querySelectorAll('.history-item[data-state="done"]').length > n, finished,
-                             { timeout: 120000 });
-  const job = (await (await page.request.get(`${base}api/renders`)).json()).renders[0];
+  const job = await renderToTheEnd(page, base);
   check(job.request.sensor.iso === 6400 && job.request.sensor.pitch === 4.35 && job.state === "done",
         `the render was read out by the sensor asked for: ${JSON.stringify(job.request.sensor)}`);
   check((await page.textContent(".history-item")).includes("sensor ISO 6400 4.35 µm"), "the history names the sensor");

@@ -5,16 +5,15 @@
 #include <gtest/gtest.h>
 #include <libraw.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <vector>
 
 #include "film/Demosaic.h"
 #include "film/SensorReadout.h"
-#include "sampling/Sampling.h"
 #include "settings/LensAnalysis.h"
 #include "cameras/RealisticCamera.h"
+#include "PassingSolidAngle.h"
 #include "TestScenes.h"
 
 namespace lenslab {
@@ -285,20 +284,8 @@ TEST(CameraSensor, ThroughALensTheCentreCollectsTheProjectedSolidAngleThatPasses
         for (int x = 16; x < 24; ++x) centre += test::lum(out.image, x, y) / 64;
 
     const LensAnalysis a = analyzeLens(loadLensSystem(test::lensPath("dgauss.50mm.dat")), 8.0, 1e6);
-    const double sinMax = std::sin(8 * M_PI / 180);
-    const int m = 600;
-    RayBatch batch;
-    batch.resize(std::size_t(m) * m);
-    for (int j = 0; j < m; ++j)
-        for (int i = 0; i < m; ++i) {
-            float dx, dy;
-            concentricDisk(float((i + 0.5) / m), float((j + 0.5) / m), dx, dy);
-            const double x = sinMax * dx, y = sinMax * dy;
-            batch.set(std::size_t(j) * m + i, {Vec3{0, 0, a.focus.imageZExact}, Vec3{x, y, std::sqrt(1 - x * x - y * y)}});
-        }
-    traceBatch(a.lens, batch, TraceDirection::FilmToScene);
-    const std::size_t passed = std::count(batch.blocked.begin(), batch.blocked.end(), BlockReason::None);
-    const double projectedSolidAngle = M_PI * sinMax * sinMax * double(passed) / (double(m) * m);
+    const double projectedSolidAngle =
+        test::passingProjectedSolidAngle(a.lens, {0, 0, a.focus.imageZExact}, {0, 0, 1}, 8 * M_PI / 180, 600);
     const double expected = 0.018 * 100 * 1000 * projectedSolidAngle / 30;
     EXPECT_NEAR(centre, expected, 0.008 * expected);
     EXPECT_NEAR(projectedSolidAngle / (M_PI / (4 * 64)), 1.0, 0.006);

@@ -10,7 +10,7 @@
 #include <tuple>
 
 #include "cameras/RealisticCamera.h"
-#include "sampling/Sampling.h"
+#include "PassingSolidAngle.h"
 #include "TestScenes.h"
 
 namespace lenslab {
@@ -235,24 +235,9 @@ TEST(TiltShift, TiltedFilmIrradianceEqualsTheProjectedSolidAngleThatPasses) {
 
         const Vec3 from = toLens({film.first, film.second, camera.filmZ()}, true);
         const Vec3 normal = toLens({0, 0, 1}, false);
-        // An orthonormal frame around the normal, and cosine-weighted directions inside a cone of
-        // half-angle 40 degrees (the exit pupil is seen within 20 degrees of it).
-        const Vec3 e1 = normalize(Vec3{normal.z, 0, -normal.x});
-        const Vec3 e2{normal.y * e1.z - normal.z * e1.y, normal.z * e1.x - normal.x * e1.z, normal.x * e1.y - normal.y * e1.x};
-        const double sinMax = std::sin(40 * kDeg);
-        const int m = 1000;
-        RayBatch batch;
-        batch.resize(std::size_t(m) * m);
-        for (int j = 0; j < m; ++j)
-            for (int i = 0; i < m; ++i) {
-                float dx, dy;
-                concentricDisk(float((i + 0.5) / m), float((j + 0.5) / m), dx, dy);
-                const double x = sinMax * dx, y = sinMax * dy, z = std::sqrt(std::max(0.0, 1 - x * x - y * y));
-                batch.set(std::size_t(j) * m + i, {from, x * e1 + y * e2 + z * normal});
-            }
-        traceBatch(a.lens, batch, TraceDirection::FilmToScene);
-        const std::size_t passed = std::count(batch.blocked.begin(), batch.blocked.end(), BlockReason::None);
-        const double bruteE = M_PI * sinMax * sinMax * double(passed) / (double(m) * m);
+        // Cosine-weighted directions inside a cone of half-angle 40 degrees (the exit pupil is seen
+        // within 20 degrees of the normal).
+        const double bruteE = test::passingProjectedSolidAngle(a.lens, from, normal, 40 * kDeg, 1000);
         EXPECT_NEAR(camerasE / bruteE, 1.0, 0.002) << "film point (" << film.first << ", " << film.second << "): camera "
                                                     << camerasE << ", brute force " << bruteE;
     }
