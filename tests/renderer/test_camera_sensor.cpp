@@ -254,6 +254,7 @@ TEST(CameraSensor, KeysAreCheckedByName) {
     EXPECT_NE(sensorKeyError("isp=100").find("unknown key 'isp'"), std::string::npos);
     EXPECT_NE(sensorKeyError("iso=100,iso=200").find("iso is given twice"), std::string::npos);
     EXPECT_NE(sensorKeyError("bits=12.5").find("bits must be a whole number"), std::string::npos);
+    EXPECT_NE(sensorKeyError("bits=16.0000001").find("got 16.0000001"), std::string::npos) << sensorKeyError("bits=16.0000001");
     EXPECT_NE(sensorKeyError("iso=fast").find("'fast' is not a number"), std::string::npos);
     EXPECT_NE(sensorKeyError("iso").find("is not key=value"), std::string::npos);
     EXPECT_NE(sensorKeyError("bits=10,black=1023").find("must lie below the 10-bit full scale 1023"), std::string::npos);

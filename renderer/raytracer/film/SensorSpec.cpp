@@ -16,8 +16,10 @@ struct SensorKey {
     std::function<void(SensorSpec&, double)> set;
 };
 
+// Enough digits that a refused value reads as given (bits 16.0000001, not 16).
 std::string shown(double v) {
     std::ostringstream s;
+    s.precision(12);
     s << v;
     return s.str();
 }
