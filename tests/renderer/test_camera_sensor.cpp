@@ -320,6 +320,10 @@ TEST(CameraSensor, NoiseBelongsToTheFullFramesPixelsAndAPitchSetsTheFilm) {
                 ASSERT_EQ(crop.image.rgb[(std::size_t(y) * 20 + x) * 3 + ch],
                           full.image.rgb[(std::size_t(y + 15) * 40 + x + 20) * 3 + ch]);
     s.crop.reset();
+    // The readout runs on the frame's threads, row by row: one thread reads the same frame.
+    s.threads = 1;
+    EXPECT_EQ(skyAtF4(s, 2).image.rgb, full.image.rgb);
+    s.threads = 0;
     s.camera.filmDiagonal = 24;
     EXPECT_THROW(skyAtF4(s, 1), SceneError);
 }

@@ -1,6 +1,10 @@
 #include "film/SensorReadout.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -92,6 +96,8 @@ SensorReadout readOutSensor(const SensorSpec& spec, const SensorCalibration& c, 
     const double outputPerElectron = c.outputPerLuxSecond / c.electronsPerLuxSecond;
     const double readDn = spec.readNoiseElectrons / c.gainElectronsPerDn;
     const std::uint64_t noiseSeed = hashCombine(seed, 0x5e45041e7ea1ULL);  // apart from the renderer's own uses of the seed
+    // Counted from every row's thread; clipping is rare, so the counters are not contended.
+    std::atomic<std::uint64_t> wellClipped{0}, adcClipped{0};
     // The ADC number of the photosite of channel ch at full-frame pixel (x, y), exposed to a film value.
     const auto readSite = [&](double value, int x, int y, int ch) {
         PcgBits pattern{Pcg32(siteKey(spec.patternSeed, x, y, ch))};
@@ -102,20 +108,30 @@ SensorReadout readOutSensor(const SensorSpec& spec, const SensorCalibration& c, 
         double electrons = mean > 0 ? double(std::poisson_distribution<long long>(mean)(noise)) : 0.0;
         if (electrons >= c.fullWellElectrons) {
             electrons = c.fullWellElectrons;
-            ++readout.wellClipped;
+            wellClipped.fetch_add(1, std::memory_order_relaxed);
         }
         const double dn = std::nearbyint(electrons / c.gainElectronsPerDn + c.blackLevelDn + normal(noise, readDn));
-        if (dn >= c.fullScaleDn) ++readout.adcClipped;
+        if (dn >= c.fullScaleDn) adcClipped.fetch_add(1, std::memory_order_relaxed);
         return std::clamp(dn, 0.0, c.fullScaleDn);
     };
     const auto developed = [&](double dn) { return float((dn - c.blackLevelDn) * c.gainElectronsPerDn * outputPerElectron); };
+    // Rows in parallel: every site's numbers come from its own key, so the image is the same for
+    // any thread count.
+    const auto eachRow = [&](const auto& readRow) {
+        tbb::parallel_for(tbb::blocked_range<int>(0, image.height), [&](const tbb::blocked_range<int>& rows) {
+            for (int y = rows.begin(); y != rows.end(); ++y) readRow(y);
+        });
+        readout.wellClipped = wellClipped.load();
+        readout.adcClipped = adcClipped.load();
+    };
     if (!spec.colourFilter) {
-        for (int y = 0; y < image.height; ++y)
+        eachRow([&](int y) {
             for (int x = 0; x < image.width; ++x)
                 for (int ch = 0; ch < 3; ++ch) {
                     float& value = image.rgb[(std::size_t(y) * image.width + x) * 3 + ch];
                     value = developed(readSite(value, x0 + x, y0 + y, ch));
                 }
+        });
         return readout;
     }
     // One photosite a pixel, behind its filter: its channel's value alone is read, then demosaiced.
@@ -127,7 +143,7 @@ SensorReadout readOutSensor(const SensorSpec& spec, const SensorCalibration& c, 
     raw.whiteLevelDn = std::min(c.fullScaleDn, std::nearbyint(c.blackLevelDn + c.fullWellElectrons / c.gainElectronsPerDn));
     raw.dn.resize(std::size_t(image.width) * image.height);
     std::vector<float> sites(raw.dn.size());
-    for (int y = 0; y < image.height; ++y)
+    eachRow([&](int y) {
         for (int x = 0; x < image.width; ++x) {
             const std::size_t i = std::size_t(y) * image.width + x;
             const int ch = raw.pattern.channelAt(x, y);
@@ -135,6 +151,7 @@ SensorReadout readOutSensor(const SensorSpec& spec, const SensorCalibration& c, 
             raw.dn[i] = std::uint16_t(dn);
             sites[i] = developed(dn);
         }
+    });
     image = demosaic(sites, image.width, image.height, raw.pattern);
     return readout;
 }

@@ -136,7 +136,8 @@ std::optional<RawMosaic> PreparedFrame::finishImage(const SplatBuffer& splats, I
                                     radiometry_->diagonalMm * 1e3 / std::hypot(double(width_), double(height_)),
                                     luminanceSum / double(std::size_t(image.width) * image.height)};
     const SensorCalibration calibration = calibrateSensor(*settings_.sensor, input);
-    SensorReadout readout = readOutSensor(*settings_.sensor, calibration, settings_.seed, area_.x0, area_.y0, image);
+    SensorReadout readout;
+    arena_.execute([&] { readout = readOutSensor(*settings_.sensor, calibration, settings_.seed, area_.x0, area_.y0, image); });
     for (auto& [key, value] : describeSensor(*settings_.sensor, calibration, readout)) metadata[key] = value;
     if (readout.mosaic) readout.mosaic->description = metadata["sensor"];
     return std::move(readout.mosaic);

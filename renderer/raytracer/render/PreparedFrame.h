@@ -90,7 +90,7 @@ private:
     int width_ = 0, height_ = 0, spp_ = 0;
     PixelRect area_;
     std::vector<PixelRect> tiles_;
-    tbb::task_arena arena_;
+    mutable tbb::task_arena arena_;  // the settings' threads; the const finishing step runs in it too
     PixelFilter filter_;
     FilmColour filmColour_;
     Shutter shutter_;
