@@ -16,7 +16,10 @@ vertex positions, curvatures, the index on their film side and clear semi-diamet
 <p>A ray meets one surface at a time (<code>optics/trace/SurfaceStep.h</code>). The sphere is written relative
 to its vertex, c|q|&sup2; + 2q<sub>z</sub> = 0, which stays exact as the curvature c goes to zero, so flat
 surfaces and the stop need no special case. Both roots of the quadratic are formed without
-cancellation; the hit is the nearest one ahead of the ray on the cap that contains the vertex. A hit
+cancellation; the hit is the root where the ray crosses the cap that contains the vertex in the
+sense it travels, as light meets each surface from the medium before it (for a steep ray far outside a
+strongly curved surface's rim the nearer root is where the line crosses back); a decentred or folded
+system takes the nearest root on the cap, behind the ray too. A hit
 beyond the clear semi-diameter blocks the ray (the stop's opening blocks it as "clipped by the stop").
 Refraction is the vector form of Snell's law, t = &eta;d + (&eta; cos&theta;<sub>i</sub> &minus; cos&theta;<sub>t</sub>) n with
 &eta; = n<sub>from</sub>/n<sub>to</sub>; a negative cos&sup2;&theta;<sub>t</sub> is total internal reflection. The same step, written on plain
