@@ -56,7 +56,7 @@ std::optional<double> sensorFilmDiagonalMm(const SensorSpec& spec, std::optional
     if (!spec.pitchMicrometres) return std::nullopt;
     const double diagonal = *spec.pitchMicrometres * 1e-3 * std::hypot(double(width), double(height));
     if (askedMm && std::fabs(*askedMm - diagonal) > 1e-6 * diagonal)
-        throw SensorSpecError("sensor: pitch " + shown(*spec.pitchMicrometres) + " um over " + std::to_string(width) + "x" +
+        throw SceneError("sensor: pitch " + shown(*spec.pitchMicrometres) + " um over " + std::to_string(width) + "x" +
                               std::to_string(height) + " pixels makes a film diagonal of " + shown(diagonal) + " mm, not the " +
                               shown(*askedMm) + " mm asked for");
     return diagonal;

@@ -46,7 +46,7 @@ struct SensorCalibration {
 std::string sensorWithoutLens(const std::string& cameraType);
 
 // The film diagonal (mm) a sensor's pitch makes over width x height pixels; nullopt when it gives
-// none. Throws SensorSpecError when a diagonal asked for as well disagrees.
+// none. Throws SceneError when a diagonal asked for as well disagrees.
 std::optional<double> sensorFilmDiagonalMm(const SensorSpec& spec, std::optional<double> askedMm, int width, int height);
 
 // Throws SensorSpecError when the frame cannot be exposed (no lens radiometry, a pitch unlike the film's).

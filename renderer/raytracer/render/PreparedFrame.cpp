@@ -96,15 +96,10 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     tiles_ = makeTiles(area_, settings.tileSize);
     scene_.film.crop = c;  // the camera prepares only the film radii this window covers
 
-    if (settings_.sensor) {
-        // A sensor's pitch sets the film's size.
-        try {
-            if (auto d = sensorFilmDiagonalMm(*settings_.sensor, settings_.camera.filmDiagonal, width_, height_))
-                settings_.camera.filmDiagonal = d;
-        } catch (const SensorSpecError& e) {
-            throw SceneError(e.what());
-        }
-    }
+    // A sensor's pitch sets the film's size.
+    if (settings_.sensor)
+        if (auto d = sensorFilmDiagonalMm(*settings_.sensor, settings_.camera.filmDiagonal, width_, height_))
+            settings_.camera.filmDiagonal = d;
     arena_.execute([&] {
         camera_ = makeCamera(scene_, settings_.camera, width_, height_, filter_.radius(), cancel);
         geometry_ = std::make_unique<SceneGeometry>(scene_);

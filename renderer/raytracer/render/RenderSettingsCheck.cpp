@@ -13,12 +13,8 @@ void checkRenderSettings(const RenderSettings& settings) {
     SceneDescription scene = parseSceneFile(settings.scenePath, options);
     if (settings.sensor) {
         if (scene.camera.type != "realistic") throw SceneError(sensorWithoutLens(scene.camera.type));
-        try {
-            sensorFilmDiagonalMm(*settings.sensor, settings.camera.filmDiagonal, settings.width.value_or(scene.film.xresolution),
-                                 settings.height.value_or(scene.film.yresolution));
-        } catch (const SensorSpecError& e) {
-            throw SceneError(e.what());
-        }
+        sensorFilmDiagonalMm(*settings.sensor, settings.camera.filmDiagonal, settings.width.value_or(scene.film.xresolution),
+                             settings.height.value_or(scene.film.yresolution));
     }
     checkCameraSettings(scene, settings.camera);
 }
