@@ -82,6 +82,13 @@ std::optional<SensorPairs> sensorField(const json& body) {
     return pairs;
 }
 
+json sensorJson(const std::optional<SensorPairs>& sensor) {
+    if (!sensor) return nullptr;
+    json object = json::object();
+    for (const auto& [key, value] : *sensor) object[key] = std::visit([](const auto& v) { return json(v); }, value);
+    return object;
+}
+
 }  // namespace
 
 RenderRequest parseRenderRequest(const json& body, const RenderLimits& limits, const std::string& defaultScene) {
@@ -135,17 +142,6 @@ LensSettings lensSettings(const RenderRequest& r) {
     if (r.focusDistance) s.focusDistance = Setting{*r.focusDistance, "field focaldistance"};
     return s;
 }
-
-namespace {
-
-json sensorJson(const std::optional<SensorPairs>& sensor) {
-    if (!sensor) return nullptr;
-    json object = json::object();
-    for (const auto& [key, value] : *sensor) object[key] = std::visit([](const auto& v) { return json(v); }, value);
-    return object;
-}
-
-}  // namespace
 
 nlohmann::json renderRequestJson(const RenderRequest& r) {
     auto optional = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
