@@ -25,7 +25,9 @@ const FOCUS_STEP = 25;  // of the focus slider's 1000 (logarithmic) steps
 let editor = { hasEdits: () => false, loadPrescription: async () => {}, requestPreview: () => {} };
 export function attachEditor(hooks) { editor = hooks; }
 
-export async function loadLenses(selectId) {
+// notice: what to say once the lens is selected (in place of the last message), before its view
+// loads: said after the view, it would overwrite whatever a click meanwhile said.
+export async function loadLenses(selectId, notice = "") {
   const body = await api("/api/lenses");
   state.lenses = body.lenses;
   const list = $("lens-list");
@@ -45,7 +47,7 @@ export async function loadLenses(selectId) {
     list.append(item);
   }
   const wanted = selectId || state.lensId || (state.lenses.find((l) => l.id === "dgauss.50mm") || state.lenses[0] || {}).id;
-  if (wanted) await selectLens(wanted);
+  if (wanted) await selectLens(wanted, notice);
 }
 
 // A lens file, or a glass catalog (glass-catalogs.js) dropped or chosen in the same place.
@@ -61,8 +63,7 @@ async function uploadChosenFile(file) {
 async function uploadLens(file) {
   try {
     const lens = await uploadFile("/api/lenses", file, "lens tables");
-    await loadLenses(lens.id);
-    showMessage(`Uploaded "${lens.name}" as ${lens.id}.`, "info");
+    await loadLenses(lens.id, `Uploaded "${lens.name}" as ${lens.id}.`);
   } catch (e) {
     showMessage(`The lens table "${file.name}" was not accepted: ${e.message}`);
   }
@@ -172,8 +173,9 @@ export function selectedLensName() {
   return lens ? displayName(lens) : state.lensId;
 }
 
-async function selectLens(id) {
-  clearMessage();
+async function selectLens(id, notice = "") {
+  if (notice) showMessage(notice, "info");
+  else clearMessage();
   state.lensId = id;
   for (const b of document.querySelectorAll("#lens-list button")) b.setAttribute("aria-current", String(b.dataset.id === id));
   const summary = state.lenses.find((l) => l.id === id);

@@ -117,8 +117,9 @@ bool GlassCatalogStore::remove(const std::string& id,
         std::string names;
         for (std::size_t i = 0; i < lenses.size() && i < 5; ++i) names += (i ? ", " : "") + lenses[i];
         throw HttpError(409, "glass catalog " + catalog->name + " is used by " + std::to_string(lenses.size()) +
-                                 " stored lens(es) (" + names + (lenses.size() > 5 ? ", ..." : "") +
-                                 "); delete them first (DELETE /api/lenses/{id})");
+                                 (lenses.size() == 1 ? " stored lens (" : " stored lenses (") + names +
+                                 (lenses.size() > 5 ? ", ..." : "") + "); delete " +
+                                 (lenses.size() == 1 ? "it" : "them") + " first (DELETE /api/lenses/{id})");
     }
     std::lock_guard<std::mutex> lock(mutex_);
     std::error_code error;
