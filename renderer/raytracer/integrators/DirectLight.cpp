@@ -11,28 +11,28 @@ Vec3f offsetRayOrigin(const SurfaceHit& h, Vec3f w) {
     return h.p + (dot(w, h.ng) > 0 ? eps : -eps) * h.ng;
 }
 
-Vec3f lightSampleEstimate(const SceneGeometry& geometry, const Intersection& it, Vec3f wo, const Light& light,
-                          float choicePdf, float u1, float u2, LightSampleWeight weighting, std::uint64_t& raysTraced) {
+Vec3f lightSampleEstimate(const SceneGeometry& geometry, const Intersection& it, const Bsdf& bsdf, Vec3f wo,
+                          const Light& light, float choicePdf, float u1, float u2, LightSampleWeight weighting,
+                          std::uint64_t& raysTraced) {
     LightSample ls;
     if (!(choicePdf > 0) || !light.sample(it.hit.p, u1, u2, ls) || isBlack(ls.radiance) || !(ls.pdf > 0)) return {};
-    const Vec3f f = it.material->evaluate(it.hit, wo, ls.wi);
+    float bsdfPdf;
+    const Vec3f f = bsdf.evaluate(wo, ls.wi, bsdfPdf);
     if (isBlack(f)) return {};
     const Vec3f o = offsetRayOrigin(it.hit, ls.wi);
     const float tMax = std::isinf(ls.distance) ? std::numeric_limits<float>::infinity() : ls.distance * (1.0f - 1e-3f);
     ++raysTraced;
     if (geometry.occluded(o, ls.wi, tMax, it.time)) return {};
     const float pdf = ls.pdf * choicePdf;
-    const float w = ls.delta || weighting == LightSampleWeight::Alone
-                        ? 1.0f
-                        : powerHeuristic(pdf, it.material->pdf(it.hit, wo, ls.wi));
+    const float w = ls.delta || weighting == LightSampleWeight::Alone ? 1.0f : powerHeuristic(pdf, bsdfPdf);
     return w * f * ls.radiance / pdf;
 }
 
-Vec3f bsdfSampleEstimate(const SceneGeometry& geometry, const Intersection& it, Vec3f wo, const Light& light,
-                         float uLobe, float u1, float u2, std::uint64_t& raysTraced) {
+Vec3f bsdfSampleEstimate(const SceneGeometry& geometry, const Intersection& it, const Bsdf& bsdf, Vec3f wo,
+                         const Light& light, float uLobe, float u1, float u2, std::uint64_t& raysTraced) {
     if (light.isDelta()) return {};
     BsdfSample bs;
-    if (!it.material->sample(it.hit, wo, uLobe, u1, u2, bs) || bs.specular || isBlack(bs.weight)) return {};
+    if (!bsdf.sample(wo, uLobe, u1, u2, bs) || bs.specular || isBlack(bs.weight)) return {};
     Intersection next;
     ++raysTraced;
     const bool hit =

@@ -4,15 +4,15 @@
 
 namespace lenslab {
 
-Vec3f DirectLightingIntegrator::directLight(const Intersection& it, Vec3f wo, Pcg32& rng,
+Vec3f DirectLightingIntegrator::directLight(const Intersection& it, const Bsdf& bsdf, Vec3f wo, Pcg32& rng,
                                             std::uint64_t& raysTraced) const {
     Vec3f L;
     for (const auto& light : geometry_.lights()) {
         const float u1 = rng.uniform(), u2 = rng.uniform();
-        L += lightSampleEstimate(geometry_, it, wo, *light, 1.0f, u1, u2, weighting_, raysTraced);
+        L += lightSampleEstimate(geometry_, it, bsdf, wo, *light, 1.0f, u1, u2, weighting_, raysTraced);
         if (weighting_ == LightSampleWeight::Mis) {
             const float uLobe = rng.uniform(), v1 = rng.uniform(), v2 = rng.uniform();
-            L += bsdfSampleEstimate(geometry_, it, wo, *light, uLobe, v1, v2, raysTraced);
+            L += bsdfSampleEstimate(geometry_, it, bsdf, wo, *light, uLobe, v1, v2, raysTraced);
         }
     }
     return L;
@@ -31,11 +31,12 @@ Vec3f DirectLightingIntegrator::radiance(Vec3f origin, Vec3f direction, float ti
         }
         if (it.light) L += beta * it.light->emitted(&it.hit, d);
         const Vec3f wo = -d;
-        if (!it.material->isSpecular()) L += beta * directLight(it, wo, rng, raysTraced);
+        const Bsdf bsdf(it.hit, *it.material);
+        if (!it.material->isSpecular()) L += beta * directLight(it, bsdf, wo, rng, raysTraced);
         if (depth + 1 >= maxDepth_) break;
         BsdfSample bs;
         const float uLobe = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
-        if (!it.material->sample(it.hit, wo, uLobe, u1, u2, bs) || !bs.specular || isBlack(bs.weight)) break;
+        if (!bsdf.sample(wo, uLobe, u1, u2, bs) || !bs.specular || isBlack(bs.weight)) break;
         beta *= bs.weight;
         o = offsetRayOrigin(it.hit, bs.wi);
         d = bs.wi;

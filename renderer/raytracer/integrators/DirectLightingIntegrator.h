@@ -19,7 +19,7 @@ public:
     Vec3f radiance(Vec3f origin, Vec3f direction, float time, Pcg32& rng, std::uint64_t& raysTraced) const override;
 
 private:
-    Vec3f directLight(const Intersection& it, Vec3f wo, Pcg32& rng, std::uint64_t& raysTraced) const;
+    Vec3f directLight(const Intersection& it, const Bsdf& bsdf, Vec3f wo, Pcg32& rng, std::uint64_t& raysTraced) const;
 
     const SceneGeometry& geometry_;
     int maxDepth_;

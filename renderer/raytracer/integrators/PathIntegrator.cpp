@@ -37,16 +37,17 @@ Vec3f PathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg32&
         }
         if (depth >= maxDepth_) break;
         const Vec3f wo = -d;
+        const Bsdf bsdf(it.hit, *it.material);
         if (!it.material->isSpecular()) {
             float choicePdf;
             const float uChoice = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
             if (const Light* light = lightSampler_.choose(uChoice, choicePdf))
-                L += beta * lightSampleEstimate(geometry_, it, wo, *light, choicePdf, u1, u2, LightSampleWeight::Mis,
+                L += beta * lightSampleEstimate(geometry_, it, bsdf, wo, *light, choicePdf, u1, u2, LightSampleWeight::Mis,
                                                 raysTraced);
         }
         BsdfSample bs;
         const float uLobe = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
-        if (!it.material->sample(it.hit, wo, uLobe, u1, u2, bs) || isBlack(bs.weight)) break;
+        if (!bsdf.sample(wo, uLobe, u1, u2, bs) || isBlack(bs.weight)) break;
         beta *= bs.weight;
         lastSpecular = bs.specular;
         lastPdf = bs.pdf;

@@ -54,19 +54,18 @@ struct VolPathIntegrator::Interior {
 
 // Where a path scatters: on a surface (its BSDF) or at a point in a medium (its phase function).
 struct VolPathIntegrator::Vertex {
-    Vec3f p, wo;                          // wo: back along the path
-    const Intersection* surface;          // null: a point in `medium`
-    const ParticipatingMedium* medium;                 // the medium the path travels in
-    float time;                           // the camera ray's moment, kept by every ray of the path
-    const Interior* interior;             // for a surface with a scattering volume behind it
+    Vec3f p, wo;                        // wo: back along the path
+    const Intersection* surface;        // null: a point in `medium`
+    const Bsdf* bsdf;                   // the surface's
+    const ParticipatingMedium* medium;  // the medium the path travels in
+    float time;                         // the camera ray's moment, kept by every ray of the path
+    const Interior* interior;           // for a surface with a scattering volume behind it
 
-    Vec3f f(Vec3f wi) const {
-        if (surface) return surface->material->evaluate(surface->hit, wo, wi);
-        const float phase = medium->phase().evaluate(-wo, wi);
-        return {phase, phase, phase};
-    }
-    float pdf(Vec3f wi) const {
-        return surface ? surface->material->pdf(surface->hit, wo, wi) : medium->phase().evaluate(-wo, wi);
+    // f |cos| (the phase function in a medium), and in `pdf` the density of sampling wi here.
+    Vec3f f(Vec3f wi, float& pdf) const {
+        if (surface) return bsdf->evaluate(wo, wi, pdf);
+        pdf = medium->phase().evaluate(-wo, wi);
+        return {pdf, pdf, pdf};
     }
     Vec3f origin(Vec3f wi) const { return surface ? offsetRayOrigin(surface->hit, wi) : p; }
     const ParticipatingMedium* mediumToward(Vec3f wi) const {
@@ -103,13 +102,14 @@ Vec3f VolPathIntegrator::sampleLight(const Vertex& v, Pcg32& rng, std::uint64_t&
     const Light* light = lightSampler_.choose(uChoice, choicePdf);
     LightSample ls;
     if (!light || !(choicePdf > 0) || !light->sample(v.p, u1, u2, ls) || isBlack(ls.radiance) || !(ls.pdf > 0)) return {};
-    const Vec3f f = v.f(ls.wi);
+    float scatterPdf;
+    const Vec3f f = v.f(ls.wi, scatterPdf);
     if (isBlack(f)) return {};
     const float tMax = std::isinf(ls.distance) ? kInf : ls.distance * (1.0f - 1e-3f);
     const Vec3f tr = transmittance(v.origin(ls.wi), ls.wi, tMax, v.time, v.mediumToward(ls.wi), rng, raysTraced);
     if (isBlack(tr)) return {};
     const float pdf = ls.pdf * choicePdf;
-    const float w = ls.delta ? 1.0f : powerHeuristic(pdf, v.pdf(ls.wi));
+    const float w = ls.delta ? 1.0f : powerHeuristic(pdf, scatterPdf);
     return w * f * tr * ls.radiance / pdf;
 }
 
@@ -163,7 +163,7 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg
             if (isBlack(beta)) break;
             if (e.scattered) {
                 if (!withinDepth(interior.inside)) break;
-                const Vertex v{o + e.t * d, -d, nullptr, medium, time, nullptr};
+                const Vertex v{o + e.t * d, -d, nullptr, nullptr, medium, time, nullptr};
                 // Inside a subsurface volume every shadow ray meets its boundary.
                 if (!interior.inside) L += beta * sampleLight(v, rng, raysTraced);
                 const float u1 = rng.uniform(), u2 = rng.uniform();
@@ -198,11 +198,12 @@ Vec3f VolPathIntegrator::radiance(Vec3f origin, Vec3f direction, float time, Pcg
         const bool hasInterior = it.material->hasInterior();
         const bool walking = hasInterior && interior.inside && dot(d, it.hit.ng) > 0;  // the boundary, from within
         if (!withinDepth(walking)) break;
-        const Vertex v{it.hit.p, -d, &it, medium, time, hasInterior ? &interior : nullptr};
+        const Bsdf bsdf(it.hit, *it.material);
+        const Vertex v{it.hit.p, -d, &it, &bsdf, medium, time, hasInterior ? &interior : nullptr};
         if (!it.material->isSpecular()) L += beta * sampleLight(v, rng, raysTraced);
         BsdfSample bs;
         const float uLobe = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
-        if (!it.material->sample(it.hit, v.wo, uLobe, u1, u2, bs) || isBlack(bs.weight)) break;
+        if (!bsdf.sample(v.wo, uLobe, u1, u2, bs) || isBlack(bs.weight)) break;
         beta *= bs.weight;
         lastSpecular = bs.specular;
         lastPdf = bs.pdf;

@@ -36,6 +36,11 @@ bool Lobe::sample(Vec3f wo, float, float u1, float u2, LobeSample& s) const {
     return s.pdf > 0;
 }
 
+void Lobe::evaluate(Vec3f wo, Vec3f wi, Vec3f& value, float& density) const {
+    value = f(wo, wi);
+    density = pdf(wo, wi);
+}
+
 bool refract(Vec3f wo, Vec3f n, float eta, Vec3f& wt) {
     const float cosI = dot(wo, n);
     const float sin2T = eta * eta * std::max(0.0f, 1.0f - cosI * cosI);
@@ -47,13 +52,18 @@ bool refract(Vec3f wo, Vec3f n, float eta, Vec3f& wt) {
 
 Bsdf::Bsdf(const SurfaceHit& hit) : frame_(shadingFrame(hit)), ng_(hit.ng) {}
 
+Bsdf::Bsdf(const SurfaceHit& hit, const Material& material) : Bsdf(hit) { material.addLobes(hit, {1, 1, 1}, *this); }
+
+// The geometric normal decides reflection or transmission, so that interpolated shading normals
+// cannot leak light through a surface: the lobe types that count for this pair of directions.
+unsigned Bsdf::scatteringType(Vec3f woWorld, Vec3f wiWorld) const {
+    return dot(wiWorld, ng_) * dot(woWorld, ng_) > 0 ? kReflection : kTransmission;
+}
+
 Vec3f Bsdf::f(Vec3f woWorld, Vec3f wiWorld) const {
     const Vec3f wo = toLocal(woWorld), wi = toLocal(wiWorld);
     if (wo.z == 0) return {};
-    // The geometric normal decides reflection or transmission, so that interpolated shading
-    // normals cannot leak light through a surface.
-    const bool reflection = dot(wiWorld, ng_) * dot(woWorld, ng_) > 0;
-    const unsigned wanted = reflection ? kReflection : kTransmission;
+    const unsigned wanted = scatteringType(woWorld, wiWorld);
     Vec3f sum{};
     for (int i = 0; i < count_; ++i) {
         const unsigned t = lobes_[i]->type();
@@ -70,6 +80,31 @@ float Bsdf::pdf(Vec3f woWorld, Vec3f wiWorld) const {
     for (int i = 0; i < count_; ++i)
         if (!(lobes_[i]->type() & kSpecular)) sum += lobes_[i]->pdf(wo, wi);
     return sum / float(count_);
+}
+
+Vec3f Bsdf::evaluate(Vec3f woWorld, Vec3f wiWorld, float& pdf) const {
+    pdf = 0;
+    if (count_ == 0) return {};
+    const Vec3f wo = toLocal(woWorld), wi = toLocal(wiWorld);
+    if (wo.z == 0) return {};
+    const unsigned wanted = scatteringType(woWorld, wiWorld);
+    Vec3f sum{};
+    float pdfSum = 0;
+    for (int i = 0; i < count_; ++i) {
+        const unsigned t = lobes_[i]->type();
+        if (t & kSpecular) continue;
+        if (t & wanted) {
+            Vec3f f;
+            float p;
+            lobes_[i]->evaluate(wo, wi, f, p);
+            sum += weights_[i] * f;
+            pdfSum += p;
+        } else {
+            pdfSum += lobes_[i]->pdf(wo, wi);
+        }
+    }
+    pdf = pdfSum / float(count_);
+    return sum * std::fabs(wi.z);
 }
 
 bool Bsdf::sample(Vec3f woWorld, float uLobe, float u1, float u2, BsdfSample& out) const {
@@ -89,8 +124,18 @@ bool Bsdf::sample(Vec3f woWorld, float uLobe, float u1, float u2, BsdfSample& ou
         out.pdf = ls.pdf / float(count_);
         out.weight = weights_[chosen] * ls.f * (std::fabs(ls.wi.z) / out.pdf);
     } else {
-        out.pdf = pdf(woWorld, out.wi);
-        out.weight = f(woWorld, out.wi) * (std::fabs(ls.wi.z) / out.pdf);
+        // The mixture's f and pdf at wi, the chosen lobe's own terms taken from its sample.
+        const unsigned wanted = scatteringType(woWorld, out.wi);
+        Vec3f f{};
+        float pdfSum = 0;
+        for (int i = 0; i < count_; ++i) {
+            const unsigned t = lobes_[i]->type();
+            if (t & kSpecular) continue;
+            pdfSum += i == chosen ? ls.pdf : lobes_[i]->pdf(wo, ls.wi);
+            if (t & wanted) f += weights_[i] * (i == chosen ? ls.f : lobes_[i]->f(wo, ls.wi));
+        }
+        out.pdf = pdfSum / float(count_);
+        out.weight = f * (std::fabs(ls.wi.z) / out.pdf);
     }
     return out.pdf > 0 && allFinite(out.weight);
 }
@@ -98,21 +143,13 @@ bool Bsdf::sample(Vec3f woWorld, float uLobe, float u1, float u2, BsdfSample& ou
 // The Material interface, answered by the Bsdf the material lays down at the hit.
 
 Vec3f Material::evaluate(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const {
-    Bsdf b(hit);
-    addLobes(hit, {1, 1, 1}, b);
-    return b.f(wo, wi) * std::fabs(dot(wi, hit.ns));
+    return Bsdf(hit, *this).f(wo, wi) * std::fabs(dot(wi, hit.ns));
 }
 
-float Material::pdf(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const {
-    Bsdf b(hit);
-    addLobes(hit, {1, 1, 1}, b);
-    return b.pdf(wo, wi);
-}
+float Material::pdf(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const { return Bsdf(hit, *this).pdf(wo, wi); }
 
 bool Material::sample(const SurfaceHit& hit, Vec3f wo, float uLobe, float u1, float u2, BsdfSample& out) const {
-    Bsdf b(hit);
-    addLobes(hit, {1, 1, 1}, b);
-    return b.sample(wo, uLobe, u1, u2, out);
+    return Bsdf(hit, *this).sample(wo, uLobe, u1, u2, out);
 }
 
 }  // namespace lenslab

@@ -32,7 +32,10 @@ public:
     // Cosine-weighted on wo's side, unless the lobe knows better.
     virtual float pdf(Vec3f wo, Vec3f wi) const;
     // uc: a uniform number left over from choosing the lobe, for a lobe's own discrete choice.
+    // A non-specular lobe's sample carries f(wo, wi) and pdf(wo, wi) exactly (the Bsdf reuses them).
     virtual bool sample(Vec3f wo, float uc, float u1, float u2, LobeSample& out) const;
+    // f and pdf together, for a lobe whose two share most of their work.
+    virtual void evaluate(Vec3f wo, Vec3f wi, Vec3f& f, float& pdf) const;
 
 protected:
     ~Lobe() = default;  // lobes live in a Bsdf's storage and are never deleted through a pointer
@@ -50,6 +53,10 @@ public:
     static constexpr int kMaxLobes = 16;
 
     explicit Bsdf(const SurfaceHit& hit);
+    // The lobes `material` lays down at `hit`, weight 1: built once per path vertex, for the light
+    // sample's evaluation and the BSDF sample both (the textures and the lobes' set-up are not
+    // computed again for each).
+    Bsdf(const SurfaceHit& hit, const Material& material);
     Bsdf(const Bsdf&) = delete;
     Bsdf& operator=(const Bsdf&) = delete;
 
@@ -66,10 +73,14 @@ public:
     // World directions. f excludes the specular lobes; pdf is the mixture density of sample().
     Vec3f f(Vec3f wo, Vec3f wi) const;
     float pdf(Vec3f wo, Vec3f wi) const;
+    // f(wo, wi) |cos(wi, ns)| (Material::evaluate), and in `pdf` the density sample() draws wi with:
+    // what a light sample weighed by MIS needs, in one pass over the lobes.
+    Vec3f evaluate(Vec3f wo, Vec3f wi, float& pdf) const;
     bool sample(Vec3f wo, float uLobe, float u1, float u2, BsdfSample& out) const;
 
 private:
     Vec3f toLocal(Vec3f w) const { return frame_.toLocal(w); }
+    unsigned scatteringType(Vec3f wo, Vec3f wi) const;
     Vec3f toWorld(Vec3f w) const { return frame_.toWorld(w); }
 
     struct alignas(16) Slot {

@@ -27,16 +27,17 @@ float besselI0(float x) {
     return sum;
 }
 
-// log I0, by its asymptotic expansion where I0 would overflow.
-float logBesselI0(float x) {
-    if (x > 12) return x + 0.5f * (-std::log(2 * kPi) + std::log(1 / x) + 1 / (8 * x));
-    return std::log(besselI0(x));
-}
+// log I0 beyond 12, by its asymptotic expansion (I0 itself overflows a float from about 90).
+float logBesselI0(float x) { return x + 0.5f * (-std::log(2 * kPi) + std::log(1 / x) + 1 / (8 * x)); }
 
-// d'Eon 2011's longitudinal lobe, csch(1/v) / (2v) exp(-sin_i sin_o / v) I0(cos_i cos_o / v), in logarithms
-// (csch(1/v) underflows for narrow lobes); logNorm: log(csch(1/v) / (2v)), fixed per lobe.
+// d'Eon 2011's longitudinal lobe, csch(1/v) / (2v) exp(-sin_i sin_o / v) I0(cos_i cos_o / v), with
+// the normalisation in logarithms (csch(1/v) underflows for narrow lobes); logNorm: log(csch(1/v) /
+// (2v)), fixed per lobe. I0 is taken directly where its series holds (below 12, where it is at
+// most 2e4, so that exp underflowing alone loses nothing), in logarithms beyond.
 float longitudinal(float cosI, float cosO, float sinI, float sinO, float v, float logNorm) {
-    return std::exp(logBesselI0(cosI * cosO / v) - sinI * sinO / v + logNorm);
+    const float x = cosI * cosO / v, rest = logNorm - sinI * sinO / v;
+    if (x > 12) return std::exp(logBesselI0(x) + rest);
+    return besselI0(x) * std::exp(rest);
 }
 
 // csch(1/v) / (2v) = exp(-1/v) / (v (1 - exp(-2/v))).
@@ -78,7 +79,7 @@ struct HairLobe::Outgoing {
     float apShare[kPaths + 1];  // the paths' shares of the attenuation, for sampling
 };
 
-HairLobe::HairLobe(const HairParams& q) : h_(q.h), eta_(q.eta), sigmaA_(q.sigmaA) {
+HairLobe::HairLobe(const HairParams& q) : h_(q.h), eta_(q.eta), gammaO_(safeAsin(q.h)), sigmaA_(q.sigmaA) {
     // Chiang 2016's fits: roughness to longitudinal variance and logistic scale.
     const float bm = q.betaM, bn = q.betaN;
     v_[0] = sq(0.726f * bm + 0.812f * sq(bm) + 3.7f * std::pow(bm, 20.0f));
@@ -102,7 +103,7 @@ HairLobe::Outgoing HairLobe::outgoing(Vec3f wo) const {
     o.sinTheta = std::clamp(wo.x, -1.0f, 1.0f);
     o.cosTheta = safeSqrt(1 - sq(o.sinTheta));
     o.phi = std::atan2(wo.z, wo.y);
-    o.gammaO = safeAsin(h_);
+    o.gammaO = gammaO_;
     // Inside the fibre: the refracted elevation, and the modified index (Bravais) for the azimuth.
     const float sinThetaT = o.sinTheta / eta_, cosThetaT = safeSqrt(1 - sq(sinThetaT));
     const float etaP = safeSqrt(sq(eta_) - sq(o.sinTheta)) / std::max(o.cosTheta, 1e-6f);
@@ -134,30 +135,54 @@ HairLobe::Outgoing HairLobe::outgoing(Vec3f wo) const {
     return o;
 }
 
-template <class Weight>
-Weight HairLobe::lobeSum(const Outgoing& o, Vec3f wi, const Weight* weights) const {
+void HairLobe::pathLobes(const Outgoing& o, Vec3f wi, float (&mn)[kPaths + 1]) const {
     const float sinThetaI = std::clamp(wi.x, -1.0f, 1.0f), cosThetaI = safeSqrt(1 - sq(sinThetaI));
     const float phi = std::atan2(wi.z, wi.y) - o.phi;
-    Weight sum{};
     for (int p = 0; p < kPaths; ++p)
-        sum += longitudinal(cosThetaI, o.cosThetaP[p], sinThetaI, o.sinThetaP[p], v_[p], logNorm_[p]) *
-               (azimuthal(phi, p, s_, o.gammaO, o.gammaT) * invTrimmedMass_) * weights[p];
-    sum += longitudinal(cosThetaI, o.cosThetaP[kPaths], sinThetaI, o.sinThetaP[kPaths], v_[kPaths], logNorm_[kPaths]) /
-           (2 * kPi) * weights[kPaths];
+        mn[p] = longitudinal(cosThetaI, o.cosThetaP[p], sinThetaI, o.sinThetaP[p], v_[p], logNorm_[p]) *
+                (azimuthal(phi, p, s_, o.gammaO, o.gammaT) * invTrimmedMass_);
+    mn[kPaths] =
+        longitudinal(cosThetaI, o.cosThetaP[kPaths], sinThetaI, o.sinThetaP[kPaths], v_[kPaths], logNorm_[kPaths]) /
+        (2 * kPi);
+}
+
+// The lobes are already a density per solid angle (Mp is normalised against cos theta_i dtheta_i,
+// Np against dphi): f divides out the normal's cosine the integrator multiplies in.
+Vec3f HairLobe::fFrom(const Outgoing& o, Vec3f wi, const float (&mn)[kPaths + 1]) const {
+    const float c = std::fabs(wi.z);
+    if (!(c > 0)) return {};
+    Vec3f sum{};
+    for (int p = 0; p <= kPaths; ++p) sum += mn[p] * o.ap[p];
+    return sum / c;
+}
+
+float HairLobe::pdfFrom(const Outgoing& o, const float (&mn)[kPaths + 1]) {
+    float sum = 0;
+    for (int p = 0; p <= kPaths; ++p) sum += mn[p] * o.apShare[p];
     return sum;
 }
 
+// f and pdf alone cost what both together do (the per-path lobes), and are rarely asked for alone.
 Vec3f HairLobe::f(Vec3f wo, Vec3f wi) const {
-    const Outgoing o = outgoing(wo);
-    // The lobes are already a density per solid angle (Mp is normalised against cos theta_i
-    // dtheta_i, Np against dphi): divide out the normal's cosine the integrator multiplies in.
-    const float c = std::fabs(wi.z);
-    return c > 0 ? lobeSum(o, wi, o.ap) / c : Vec3f{};
+    Vec3f value;
+    float density;
+    evaluate(wo, wi, value, density);
+    return value;
 }
 
 float HairLobe::pdf(Vec3f wo, Vec3f wi) const {
+    Vec3f value;
+    float density;
+    evaluate(wo, wi, value, density);
+    return density;
+}
+
+void HairLobe::evaluate(Vec3f wo, Vec3f wi, Vec3f& f, float& pdf) const {
     const Outgoing o = outgoing(wo);
-    return lobeSum(o, wi, o.apShare);
+    float mn[kPaths + 1];
+    pathLobes(o, wi, mn);
+    f = fFrom(o, wi, mn);
+    pdf = pdfFrom(o, mn);
 }
 
 bool HairLobe::sample(Vec3f wo, float uc, float u1, float u2, LobeSample& out) const {
@@ -178,8 +203,10 @@ bool HairLobe::sample(Vec3f wo, float uc, float u1, float u2, LobeSample& out) c
     const float dphi = p < kPaths ? exitAzimuth(p, o.gammaO, o.gammaT) + sampleTrimmedLogistic(uc, s_) : 2 * kPi * uc;
     const float phiI = o.phi + dphi;
     out.wi = {sinThetaI, cosThetaI * std::cos(phiI), cosThetaI * std::sin(phiI)};
-    out.pdf = lobeSum(o, out.wi, o.apShare);
-    out.f = std::fabs(out.wi.z) > 0 ? lobeSum(o, out.wi, o.ap) / std::fabs(out.wi.z) : Vec3f{};
+    float mn[kPaths + 1];
+    pathLobes(o, out.wi, mn);
+    out.pdf = pdfFrom(o, mn);
+    out.f = fFrom(o, out.wi, mn);
     out.specular = false;
     return out.pdf > 0;
 }

@@ -30,16 +30,19 @@ public:
     unsigned type() const override { return kReflection | kTransmission; }
     Vec3f f(Vec3f wo, Vec3f wi) const override;
     float pdf(Vec3f wo, Vec3f wi) const override;
+    void evaluate(Vec3f wo, Vec3f wi, Vec3f& f, float& pdf) const override;
     bool sample(Vec3f wo, float uc, float u1, float u2, LobeSample& out) const override;
 
 private:
     struct Outgoing;  // what f, pdf and sample share about wo
     Outgoing outgoing(Vec3f wo) const;
-    // sum over paths of Mp * weight_p * Np, weights from Ap (f) or from its shares (pdf).
-    template <class Weight>
-    Weight lobeSum(const Outgoing& o, Vec3f wi, const Weight* weights) const;
+    // Mp * Np of each path toward wi: f weighs them by Ap, the pdf by Ap's shares.
+    void pathLobes(const Outgoing& o, Vec3f wi, float (&mn)[kPaths + 1]) const;
+    Vec3f fFrom(const Outgoing& o, Vec3f wi, const float (&mn)[kPaths + 1]) const;
+    static float pdfFrom(const Outgoing& o, const float (&mn)[kPaths + 1]);
 
     float h_, eta_;
+    float gammaO_;  // asin h: the azimuth, from the fibre's normal, at which the ray enters
     Vec3f sigmaA_;
     float v_[kPaths + 1];  // longitudinal variance per path
     float logNorm_[kPaths + 1];  // log of Mp's normalisation per path

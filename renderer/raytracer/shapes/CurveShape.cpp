@@ -28,6 +28,17 @@ Segment bsplineToBezier(Vec3f p0, Vec3f p1, Vec3f p2, Vec3f p3) {
     return {{(p0 + 4 * p1 + p2) / 6, (2 * p1 + p2) / 3, (p1 + 2 * p2) / 3, (p1 + 4 * p2 + p3) / 6}};
 }
 
+// The part of a cubic Bezier segment between parameters a and b, as a segment of its own: its
+// control points are the curve's blossom at (a, a, a), (a, a, b), (a, b, b) and (b, b, b).
+Segment piece(const Segment& s, float a, float b) {
+    const auto blossom = [&](float t1, float t2, float t3) {
+        const auto lerp = [](Vec3f x, Vec3f y, float t) { return (1 - t) * x + t * y; };
+        const Vec3f q0 = lerp(s.c[0], s.c[1], t1), q1 = lerp(s.c[1], s.c[2], t1), q2 = lerp(s.c[2], s.c[3], t1);
+        return lerp(lerp(q0, q1, t2), lerp(q1, q2, t2), t3);
+    };
+    return {{blossom(a, a, a), blossom(a, a, b), blossom(a, b, b), blossom(b, b, b)}};
+}
+
 // Quadratic Bezier raised to cubic (same curve).
 Segment elevate(Vec3f q0, Vec3f q1, Vec3f q2) { return {{q0, q0 + (2.0f / 3) * (q1 - q0), q2 + (2.0f / 3) * (q1 - q2), q2}}; }
 
@@ -152,16 +163,24 @@ std::shared_ptr<const Shape> makeCurve(const ParamSet& p, const Transform& toGro
         if (n < std::size_t(degree) + 1) p.fail("a B-spline curve needs at least " + std::to_string(degree + 1) + " points");
         segments = n - degree;
     }
+    // Each segment is split into 2^splitdepth pieces, as pbrt splits it: the same curve, but each
+    // piece's bounding box hugs it, where a long, thin, bent segment's box is mostly empty space
+    // that every ray through it pays an intersection test for.
+    const int splitDepth = p.getInt("splitdepth", 3);
+    if (splitDepth < 0 || splitDepth > 10) p.fail("splitdepth must lie in [0, 10], got " + std::to_string(splitDepth));
+    const int pieces = 1 << splitDepth;
     std::vector<Segment> segs;
+    segs.reserve(segments * std::size_t(pieces));
     for (std::size_t s = 0; s < segments; ++s) {
+        Segment whole;
         if (basis == "bezier") {
             const Vec3f* c = &P[s * degree];
-            segs.push_back(degree == 3 ? Segment{{c[0], c[1], c[2], c[3]}} : elevate(c[0], c[1], c[2]));
+            whole = degree == 3 ? Segment{{c[0], c[1], c[2], c[3]}} : elevate(c[0], c[1], c[2]);
         } else {
             const Vec3f* c = &P[s];
-            segs.push_back(degree == 3 ? bsplineToBezier(c[0], c[1], c[2], c[3])
-                                       : elevate((c[0] + c[1]) / 2, c[1], (c[1] + c[2]) / 2));
+            whole = degree == 3 ? bsplineToBezier(c[0], c[1], c[2], c[3]) : elevate((c[0] + c[1]) / 2, c[1], (c[1] + c[2]) / 2);
         }
+        for (int k = 0; k < pieces; ++k) segs.push_back(piece(whole, float(k) / float(pieces), float(k + 1) / float(pieces)));
     }
     // Widths are in object space: scale them by the transform's mean linear scale.
     const float scale = std::cbrt(length(transformVector(toGroup, {1, 0, 0})) * length(transformVector(toGroup, {0, 1, 0})) *

@@ -162,8 +162,7 @@ std::vector<std::shared_ptr<const Shape>> makeShapes(const std::string& type, co
                "trianglemesh, plymesh, bilinearmesh, loopsubdiv, nurbs, curve)");
     }
     // Tangents ("S") only turn an anisotropic shading frame; lenslab's materials are isotropic.
-    // Embree intersects curves directly, without pbrt-v3's "splitdepth" refinement.
-    p.checkAllUsed(warnings, {"S", "faceIndices", "scheme", "splitdepth"});
+    p.checkAllUsed(warnings, {"S", "faceIndices", "scheme"});
     return {shape};
 }
 
