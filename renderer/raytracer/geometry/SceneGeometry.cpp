@@ -119,6 +119,11 @@ SceneGeometry::SceneGeometry(SceneDescription& scene)
         for (std::size_t prim = 0; prim < e.shape->primitiveCount(); ++prim)
             lights_.push_back(makeDiffuseAreaLight(e.shape, prim, e.emission->L, e.emission->twoSided));
     }
+    const auto passthrough = [](const std::vector<ShapeEntry>& shapes) {
+        return std::any_of(shapes.begin(), shapes.end(), [](const ShapeEntry& e) { return e.material->isPassthrough(); });
+    };
+    hasPassthrough_ = passthrough(shapes_) ||
+                      std::any_of(objects_.begin(), objects_.end(), [&](const ObjectDefinition& o) { return passthrough(o.shapes); });
     RTCBounds b;
     rtcGetSceneBounds(world_.scene, &b);
     const Vec3f lo{b.lower_x, b.lower_y, b.lower_z}, hi{b.upper_x, b.upper_y, b.upper_z};

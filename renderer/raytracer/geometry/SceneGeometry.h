@@ -35,6 +35,9 @@ public:
 
     bool intersect(Vec3f origin, Vec3f direction, float tMax, float time, Intersection& out) const;
     bool occluded(Vec3f origin, Vec3f direction, float tMax, float time) const;
+    // Some shape is only a boundary between media (Material::isPassthrough): a shadow ray must be
+    // followed hit by hit. Without one, any hit blocks it and occluded() answers.
+    bool hasPassthroughSurfaces() const { return hasPassthrough_; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
 
 private:
@@ -60,6 +63,7 @@ private:
     std::vector<Group> objectGroups_;          // by object index
     std::vector<std::size_t> firstLight_;      // by world shape: its first primitive's area light
     std::vector<std::unique_ptr<Light>> lights_;
+    bool hasPassthrough_ = false;
 };
 
 }  // namespace lenslab

@@ -81,6 +81,11 @@ float VolPathIntegrator::lightPdf(const Light& light, Vec3f from, Vec3f w, const
 
 Vec3f VolPathIntegrator::transmittance(Vec3f o, Vec3f w, float distance, float time, const ParticipatingMedium* medium,
                                        Pcg32& rng, std::uint64_t& raysTraced) const {
+    if (!geometry_.hasPassthroughSurfaces()) {  // any hit blocks: the cheaper any-hit query answers
+        ++raysTraced;
+        if (geometry_.occluded(o, w, distance, time)) return {};
+        return medium ? medium->transmittance(o, w, distance, rng) : Vec3f{1, 1, 1};
+    }
     Vec3f tr{1, 1, 1};
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         Intersection it;
