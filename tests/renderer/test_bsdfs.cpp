@@ -6,6 +6,7 @@
 #include <complex>
 
 #include "BsdfTesting.h"
+#include "materials/Bsdf.h"
 #include "materials/DiffuseLobes.h"
 #include "materials/Fresnel.h"
 #include "materials/MetalSpectra.h"
@@ -101,6 +102,42 @@ TEST(Bsdfs, SampleWeightsAgreeWithEvaluation) {
                     << c.name << " theta " << theta << " channel " << ch;
             }
         }
+    }
+}
+
+// The integrators build one Bsdf per path vertex and take f and pdf together from it, and a
+// sample's weight from its own lobe's terms: each must be what the material's separate calls give
+// (a Bsdf of its own per call, f and pdf apart), pointwise. Hair (one lobe sharing its work between
+// f and pdf) and uber (a mirror lobe beside the rough ones) included.
+TEST(Bsdfs, OneBsdfPerVertexAnswersWhatTheMaterialsCallsDo) {
+    test::TempDir dir;
+    std::vector<Case> all = cases();
+    all.push_back({"hair", "Material \"hair\" \"float eumelanin\" 1.3 \"float beta_m\" 0.25", false});
+    const auto near = [](float a, float b) { return std::fabs(a - b) <= 1e-5f * std::max(std::fabs(a), std::fabs(b)) + 1e-12f; };
+    SurfaceHit h = test::flatHit();
+    h.v = 0.3f;  // the hair's offset across the fibre
+    Pcg32 rng(11);
+    for (const Case& c : all) {
+        const auto m = test::parseMaterial(dir, c.directive);
+        const Bsdf bsdf(h, *m);
+        int checked = 0;
+        for (int i = 0; i < 300; ++i) {
+            const Vec3f wo = uniformSphere(rng.uniform(), rng.uniform()), wi = uniformSphere(rng.uniform(), rng.uniform());
+            float pdf = -1;
+            const Vec3f f = bsdf.evaluate(wo, wi, pdf);
+            const Vec3f fm = m->evaluate(h, wo, wi);
+            EXPECT_TRUE(near(f.x, fm.x) && near(f.y, fm.y) && near(f.z, fm.z)) << c.name << ": f " << f.x << " against " << fm.x;
+            EXPECT_TRUE(near(pdf, m->pdf(h, wo, wi))) << c.name << ": pdf " << pdf << " against " << m->pdf(h, wo, wi);
+
+            BsdfSample s;
+            if (!bsdf.sample(wo, rng.uniform(), rng.uniform(), rng.uniform(), s) || s.specular) continue;
+            const float pm = m->pdf(h, wo, s.wi);
+            const Vec3f wm = m->evaluate(h, wo, s.wi) / pm;
+            EXPECT_TRUE(near(s.pdf, pm)) << c.name << ": sampled pdf " << s.pdf << " against " << pm;
+            EXPECT_TRUE(near(s.weight.x, wm.x) && near(s.weight.z, wm.z)) << c.name << ": weight " << s.weight.x << " against " << wm.x;
+            ++checked;
+        }
+        if (!m->isSpecular()) EXPECT_GT(checked, 100) << c.name;
     }
 }
 

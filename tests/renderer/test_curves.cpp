@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/SceneDescription.h"
+#include "ShapeTestScenes.h"
 #include "TestScenes.h"
 
 namespace lenslab {
@@ -35,6 +36,40 @@ TEST(Curves, StraightCurvesAreBandsOfTheirWidth) {
     EXPECT_NEAR(bandRows("Scale 2 2 2\nShape \"curve\" \"point P\" [-1 0 2.5  -0.5 0 2.5  0.5 0 2.5  1 0 2.5] \"float width\" 0.125"), 8, 1);
     EXPECT_NEAR(bandRows("Shape \"curve\" \"point P\" [-1 0 5  -0.333 0 5  0.333 0 5  1 0 5] \"float width0\" 0 \"float width1\" 0.5"),
                 8, 1);
+}
+
+// A curve is split into 2^splitdepth pieces (pbrt's default 3) for Embree: the pieces are the same
+// curve, and a hit's u still runs along the whole of it. An S-shaped Bezier in the plane z = 5,
+// 0.1 wide, hit straight on at points of the curve computed here: the hit is on that point, its u
+// the point's parameter, its v the middle of the width. (Embree's u is the parameter along its
+// flattened ribbon: unsplit, or split once, it is 0.008 off where this curve bends hardest, which
+// the default's 8 pieces bring under 0.002.)
+TEST(Curves, SplitPiecesAreTheCurveAndCarryItsParameter) {
+    const Vec3f c[4] = {{-2, -1, 5}, {-1, 2, 5}, {1, -2, 5}, {2, 1, 5}};
+    const auto at = [&](float t) {
+        const float u = 1 - t;
+        return u * u * u * c[0] + 3 * u * u * t * c[1] + 3 * u * t * t * c[2] + t * t * t * c[3];
+    };
+    test::TempDir dir;
+    for (int depth : {-1, 3, 5}) {  // -1: not given
+        const std::string split = depth < 0 ? "" : " \"integer splitdepth\" " + std::to_string(depth);
+        const auto g = test::geometryOf(dir, "Material \"matte\"\nShape \"curve\" \"point P\" [-2 -1 5  -1 2 5  1 -2 5  2 1 5] "
+                                             "\"float width\" 0.1" + split);
+        for (float t : {0.06f, 0.3f, 0.5f, 0.71f, 0.94f}) {
+            const Vec3f p = at(t);
+            Intersection it;
+            ASSERT_TRUE(test::trace(*g, {p.x, p.y, 0}, {0, 0, 1}, it)) << "splitdepth " << depth << " t " << t;
+            EXPECT_NEAR(it.hit.p.z, 5, 1e-3) << "splitdepth " << depth << " t " << t;
+            EXPECT_NEAR(it.hit.u, t, 2e-3) << "splitdepth " << depth << " t " << t;
+            EXPECT_NEAR(it.hit.v, 0.5, 0.02) << "splitdepth " << depth << " t " << t;
+        }
+    }
+    try {
+        test::geometryOf(dir, "Shape \"curve\" \"point P\" [0 0 5  1 0 5  2 0 5  3 0 5] \"integer splitdepth\" 11");
+        ADD_FAILURE() << "splitdepth 11 was taken";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("splitdepth must lie in [0, 10], got 11"), std::string::npos) << e.what();
+    }
 }
 
 TEST(Curves, BadCurvesAndEmissionAreNamed) {

@@ -113,5 +113,38 @@ TEST(Integrators, RenderedPlaneUnderAPointLight) {
     EXPECT_NEAR(test::lum(out.image, 6, 4), 4 * (2 / std::sqrt(d2)) / d2 / kPi, 0.01 * 4 / 4.0 / kPi);
 }
 
+// The volumetric path tracer follows a shadow ray hit by hit only where some surface is a bare
+// medium boundary; without one, the any-hit query answers. The two must agree ray for ray: a plane
+// half shadowed by a sphere, under a point light (a second sphere beyond it) and a sky, with and
+// without a tiny boundary inside the opaque sphere, where no path reaches (it switches the
+// hit-by-hit walk on, and leaves the scene's bounds, which the sky samples within, as they were),
+// gives the same estimates, sample for sample.
+TEST(Integrators, VolpathShadowRaysAnswerAlikeByAnyHitAndHitByHit) {
+    const std::string world = kWhite + "\nLightSource \"point\" \"rgb I\" [4 4 4] \"point from\" [0.5 0.3 2]\n"
+                              "LightSource \"infinite\" \"rgb L\" [0.3 0.3 0.3]\n" + square(3, 0, "") +
+                              "AttributeBegin Translate 0 0 0.6 Shape \"sphere\" \"float radius\" 0.3 AttributeEnd\n"
+                              // beyond the light, on the far side from the shadow rays it must not stop
+                              "AttributeBegin Translate 0.75 0.55 3 Shape \"sphere\" \"float radius\" 0.3 AttributeEnd\n";
+    const std::string boundary = "AttributeBegin Material \"interface\" Translate 0 0 0.6 "
+                                 "Shape \"sphere\" \"float radius\" 0.001 AttributeEnd\n";
+    test::TempDir dir;
+    const test::RadianceProbe anyHit(scene(dir, world), IntegratorType::VolPath, 5);
+    ASSERT_FALSE(anyHit.geometry().hasPassthroughSurfaces());
+    const test::RadianceProbe walked(dir.write("b.pbrt", std::string(test::kProbeHeader) + "WorldBegin\n" + world + boundary + "WorldEnd\n"),
+                                     IntegratorType::VolPath, 5);
+    ASSERT_TRUE(walked.geometry().hasPassthroughSurfaces());
+    int shadowed = 0;
+    for (int i = 0; i < 400; ++i) {
+        const Vec3f target{-1.5f + 0.0075f * float(i), -0.2f, 0};  // across the sphere's shadow
+        const Vec3f o{0, 0, 5}, d = target - o;
+        const Vec3f a = anyHit.once(o, d, std::uint64_t(i)), b = walked.once(o, d, std::uint64_t(i));
+        EXPECT_EQ(a.x, b.x) << "sample " << i;
+        EXPECT_EQ(a.z, b.z) << "sample " << i;
+        shadowed += luminance(a) < 0.4f;  // the sky alone (0.3) against the sky and the light (0.55)
+    }
+    EXPECT_GT(shadowed, 20);   // some of the plane lies in the shadow
+    EXPECT_LT(shadowed, 380);  // and some in the light
+}
+
 }  // namespace
 }  // namespace lenslab
