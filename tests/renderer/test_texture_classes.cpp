@@ -110,6 +110,26 @@ TEST(Noise, MatchesPbrtV3) {
     expectRgb(fbm->evaluate(hitAt(0, 0, {0.3f, 1.7f, -2.1f})), {-0.59823966f, -0.59823966f, -0.59823966f}, 1e-5f);
 }
 
+// The gradient (pbrt-v4's DNoise: forward differences over 0.01) takes the three nearby values
+// from the point's own lattice cell where they share it: each must be perlinNoise's own, bit for
+// bit, there and where a step crosses into the next cell (x, y or z just below an integer).
+TEST(Noise, GradientIsTheForwardDifferencesOfTheNoise) {
+    int crossings = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3f p{0.0137f * float(i) - 9.1f, 0.0291f * float(i % 97) + 0.995f, 3.996f - 0.0043f * float(i % 13)};
+        const float n = perlinNoise(p);
+        const Vec3f expected = Vec3f{perlinNoise(p + Vec3f{0.01f, 0, 0}) - n, perlinNoise(p + Vec3f{0, 0.01f, 0}) - n,
+                                     perlinNoise(p + Vec3f{0, 0, 0.01f}) - n} / 0.01f;
+        const Vec3f g = perlinNoiseGradient(p);
+        EXPECT_EQ(g.x, expected.x) << i;
+        EXPECT_EQ(g.y, expected.y) << i;
+        EXPECT_EQ(g.z, expected.z) << i;
+        crossings += std::floor(p.x + 0.01f) != std::floor(p.x) || std::floor(p.y + 0.01f) != std::floor(p.y) ||
+                     std::floor(p.z + 0.01f) != std::floor(p.z);
+    }
+    EXPECT_GT(crossings, 100);
+}
+
 // Over many points: fbm averages to about zero, turbulence (wrinkled) is positive, marble stays
 // within its spline's colours (times pbrt's 1.5), windy is bounded; and they repeat exactly.
 TEST(Noise, TexturesHaveTheirRangesAndAreDeterministic) {

@@ -27,15 +27,29 @@ constexpr std::uint8_t kPermutation[256] = {
 
 int permute(int i) { return kPermutation[i & 255]; }
 
-// The dot product of the offset (dx, dy, dz) with a gradient direction chosen by hashing the
-// lattice corner; the choice of axes per hash is pbrt-v3's (it differs from Perlin's code for
-// hashes 12 to 15), so that the patterns come out as in pbrt-v3.
-float gradient(int x, int y, int z, float dx, float dy, float dz) {
-    const int h = permute(permute(permute(x) + y) + z) & 15;
+// The gradient direction that hash h (0..15) of a lattice corner chooses: +-a +-b of two axes, the
+// signs by the hash's low bits; the choice of axes per hash is pbrt-v3's (it differs from Perlin's
+// code for hashes 12 to 15), so that the patterns come out as in pbrt-v3. As a table: the hashes
+// are random, and the branches of choosing would be mispredicted half the time.
+struct Direction {
+    float x, y, z;
+};
+constexpr Direction direction(int h) {
     const bool pair = h == 12 || h == 13;
-    const float a = h < 8 || pair ? dx : dy;
-    const float b = h < 4 || pair ? dy : dz;
-    return ((h & 1) ? -a : a) + ((h & 2) ? -b : b);
+    const bool aIsX = h < 8 || pair, bIsY = h < 4 || pair;
+    const float a = (h & 1) ? -1 : 1, b = (h & 2) ? -1 : 1;
+    return {aIsX ? a : 0, aIsX ? (bIsY ? b : 0) : a, bIsY ? 0 : b};
+}
+constexpr Direction kDirections[16] = {direction(0),  direction(1),  direction(2),  direction(3),
+                                       direction(4),  direction(5),  direction(6),  direction(7),
+                                       direction(8),  direction(9),  direction(10), direction(11),
+                                       direction(12), direction(13), direction(14), direction(15)};
+
+// The dot product of the offset (dx, dy, dz) with hash h's direction: with one component zero, the
+// same sum of two signed offsets, bit for bit, that choosing them would give.
+float gradient(int h, float dx, float dy, float dz) {
+    const Direction& g = kDirections[h];
+    return g.x * dx + g.y * dy + g.z * dz;
 }
 
 // 6t^5 - 15t^4 + 10t^3: continuous second derivative across cells.
@@ -43,28 +57,64 @@ float fade(float t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 
 float lerp(float t, float a, float b) { return a + t * (b - a); }
 
-}  // namespace
-
-float perlinNoise(Vec3f p) {
-    // From 2^24 on every float is an integer, a lattice point where the noise is zero; this also
-    // keeps NaN and infinities out of the integer conversions below.
+// From 2^24 on every float is an integer, a lattice point where the noise is zero; this also
+// keeps NaN and infinities out of the integer conversions below.
+bool onTheLattice(Vec3f p) {
     constexpr float kAllIntegers = 16777216.0f;
-    if (!(std::fabs(p.x) < kAllIntegers && std::fabs(p.y) < kAllIntegers && std::fabs(p.z) < kAllIntegers)) return 0;
-    const float fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
-    const int x = int(fx) & 255, y = int(fy) & 255, z = int(fz) & 255;  // the lattice repeats every 256 cells
-    const float dx = p.x - fx, dy = p.y - fy, dz = p.z - fz;
+    return !(std::fabs(p.x) < kAllIntegers && std::fabs(p.y) < kAllIntegers && std::fabs(p.z) < kAllIntegers);
+}
+
+// The lattice cell around a point: its lower corner and the gradient hashes of its eight corners,
+// corner (i, j, k) at i + 2j + 4k, each the hash of Perlin's nested permutations of x+i, y+j, z+k.
+struct Cell {
+    float x, y, z;  // the lower corner
+    int hash[8];
+};
+
+Cell cellAround(Vec3f p) {
+    Cell c{std::floor(p.x), std::floor(p.y), std::floor(p.z), {}};
+    const int x = int(c.x) & 255, y = int(c.y) & 255, z = int(c.z) & 255;  // the lattice repeats every 256 cells
+    const int a = permute(x) + y, b = permute(x + 1) + y;
+    const int corners[4] = {permute(a) + z, permute(b) + z, permute(a + 1) + z, permute(b + 1) + z};  // by i + 2j
+    for (int ij = 0; ij < 4; ++ij) {
+        c.hash[ij] = permute(corners[ij]) & 15;
+        c.hash[ij + 4] = permute(corners[ij] + 1) & 15;
+    }
+    return c;
+}
+
+// The noise at offset (dx, dy, dz) from the cell's lower corner.
+float noiseIn(const Cell& c, float dx, float dy, float dz) {
     const float wx = fade(dx), wy = fade(dy), wz = fade(dz);
-    const auto corner = [&](int i, int j, int k) { return gradient(x + i, y + j, z + k, dx - i, dy - j, dz - k); };
+    const auto corner = [&](int i, int j, int k) { return gradient(c.hash[i + 2 * j + 4 * k], dx - i, dy - j, dz - k); };
     const float y0 = lerp(wy, lerp(wx, corner(0, 0, 0), corner(1, 0, 0)), lerp(wx, corner(0, 1, 0), corner(1, 1, 0)));
     const float y1 = lerp(wy, lerp(wx, corner(0, 0, 1), corner(1, 0, 1)), lerp(wx, corner(0, 1, 1), corner(1, 1, 1)));
     return lerp(wz, y0, y1);
 }
 
+}  // namespace
+
+float perlinNoise(Vec3f p) {
+    if (onTheLattice(p)) return 0;
+    const Cell c = cellAround(p);
+    return noiseIn(c, p.x - c.x, p.y - c.y, p.z - c.z);
+}
+
+// The three nearby points nearly always share p's cell, and with it its hashes: only the offsets
+// differ (the same arithmetic as perlinNoise at each point, so the same values).
 Vec3f perlinNoiseGradient(Vec3f p) {
     constexpr float kDelta = 0.01f;
-    const float n = perlinNoise(p);
-    return Vec3f{perlinNoise(p + Vec3f{kDelta, 0, 0}) - n, perlinNoise(p + Vec3f{0, kDelta, 0}) - n,
-                 perlinNoise(p + Vec3f{0, 0, kDelta}) - n} / kDelta;
+    if (onTheLattice(p))
+        return Vec3f{perlinNoise(p + Vec3f{kDelta, 0, 0}), perlinNoise(p + Vec3f{0, kDelta, 0}),
+                     perlinNoise(p + Vec3f{0, 0, kDelta})} / kDelta;
+    const Cell c = cellAround(p);
+    const float dx = p.x - c.x, dy = p.y - c.y, dz = p.z - c.z;
+    const float n = noiseIn(c, dx, dy, dz);
+    const Vec3f q = p + Vec3f{kDelta, kDelta, kDelta};
+    const float nx = std::floor(q.x) == c.x ? noiseIn(c, q.x - c.x, dy, dz) : perlinNoise({q.x, p.y, p.z});
+    const float ny = std::floor(q.y) == c.y ? noiseIn(c, dx, q.y - c.y, dz) : perlinNoise({p.x, q.y, p.z});
+    const float nz = std::floor(q.z) == c.z ? noiseIn(c, dx, dy, q.z - c.z) : perlinNoise({p.x, p.y, q.z});
+    return Vec3f{nx - n, ny - n, nz - n} / kDelta;
 }
 
 float fractionalBrownianMotion(Vec3f p, float omega, int octaves) {
