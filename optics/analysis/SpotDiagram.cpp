@@ -136,7 +136,7 @@ LineRays traceLine(const LensSystem& lens, const FieldAim& aim, double z, const 
     // The line's length to the stop's rim: |c + t v| = 1.
     const double a = v.x * v.x + v.y * v.y, b = c.x * v.x + c.y * v.y, cc = c.x * c.x + c.y * c.y;
     const double t = (-b + std::sqrt(std::max(0.0, b * b - a * (cc - 1)))) / a;
-    const RadialRay radial{lens, aim, c, v, t * t};
+    const RadialRay radial{lens, aim, c, v, t * t, {}};
     // The scan finds stretches as narrow as 1 / scan of the line's length squared.
     const int scan = std::max(16, 2 * int(nodes.size()));
     for (const auto& [u0, u1] : passingStretches(radial, scan, convex))
