@@ -30,8 +30,8 @@ SurfaceConstants<T> surfaceConstants(const LensSystem& lens, int i, TraceDirecti
     if (!options.ignoreApertures && !options.ignoreObscurations && !s.obscurationShape)
         c.obscurationRadius2 = T(s.obscurationRadius * s.obscurationRadius);
     c.eta = T(direction == TraceDirection::SceneToFilm ? nScene / nFilm : nFilm / nScene);
-    c.isStop = s.isStop;
-    c.mirror = s.mirror;
+    c.beyondAperture = static_cast<int>(s.isStop ? BlockReason::ClippedByStop : BlockReason::OutsideAperture);
+    c.reflects = s.mirror ? T(1) : T(0);
     if (s.isAspheric()) {
         c.asphericTerms = kAsphericTerms;
         while (s.aspheric[c.asphericTerms - 1] == 0) --c.asphericTerms;

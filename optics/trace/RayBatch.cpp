@@ -59,7 +59,8 @@ struct BandEtas {
 };
 
 // One quadric surface for every ray. Rays are independent (ivdep) and the step uses selects instead
-// of branches, so this loop vectorises.
+// of branches, so this loop vectorises (GCC's -fopt-info-vec says so; SurfaceStep.h keeps the
+// constants the selects read numbers, not bytes, for it).
 template <bool kConic, class EtaOf>
 void stepQuadric(std::size_t count, const BatchArrays& a, const SurfaceConstants<double>& s, EtaOf etaOf,
                  std::int16_t index) {

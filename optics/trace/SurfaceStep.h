@@ -38,8 +38,10 @@ struct SurfaceConstants {
     T apertureRadius2 = std::numeric_limits<T>::infinity();
     T obscurationRadius2 = 0;
     T eta = 1;           // n_from / n_to
-    bool isStop = false;
-    bool mirror = false;
+    // These two are an int and a number, not bools: GCC (12) does not vectorise the batch's loop
+    // over selects on a byte loaded from the constants ("no vectype for stmt"; RayBatch.cpp).
+    int beyondAperture = static_cast<int>(BlockReason::OutsideAperture);  // ClippedByStop at the stop
+    T reflects = 0;                                                        // 1 at a mirror
     int asphericTerms = 0;  // how many of `aspheric` are used (0: a quadric)
     T aspheric[8] = {};     // coefficients of r^2, r^4, ..., r^16
 };
@@ -190,12 +192,13 @@ inline BlockReason bendAtHit(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz
     const T nDotD = (nx * dx + ny * dy + nz * dz) * inv;
     const T sign = nDotD > T(0) ? T(-1) : T(1);
     const T cosi = -sign * nDotD;
-    const T eta = s.mirror ? T(1) : rayEta;
+    const bool mirror = s.reflects != T(0);
+    const T eta = mirror ? T(1) : rayEta;
     const T k = T(1) - eta * eta * (T(1) - cosi * cosi);
-    const bool tir = !s.mirror & !(k >= T(0));
+    const bool tir = !mirror & !(k >= T(0));
     const bool pass = !missed & !outside & !obscured & !tir;
     // Refraction: eta d + (eta cos i - cos t) n_oriented. Reflection: d + 2 cos i n_oriented.
-    const T m = sign * inv * (s.mirror ? T(2) * cosi : eta * cosi - std::sqrt(k > T(0) ? k : T(0)));
+    const T m = sign * inv * (mirror ? T(2) * cosi : eta * cosi - std::sqrt(k > T(0) ? k : T(0)));
     px = pass ? hx : px;
     py = pass ? hy : py;
     pz = pass ? hqz + s.zVertex : pz;
@@ -203,11 +206,15 @@ inline BlockReason bendAtHit(T& px, T& py, T& pz, T& dx, T& dy, T& dz, T t, T qz
     dx = pass ? ex : dx;
     dy = pass ? ey : dy;
     dz = pass ? ez : dz;
-    return missed     ? BlockReason::MissedSurface
-           : outside  ? (s.isStop ? BlockReason::ClippedByStop : BlockReason::OutsideAperture)
-           : obscured ? BlockReason::Obscured
-           : tir      ? BlockReason::TotalInternalReflection
-                      : BlockReason::None;
+    // The first reason that applies, in this order: missed, outside, obscured, total internal
+    // reflection; one select after another on ints, which GCC vectorises where a chain of
+    // conditionals on the one-byte enum it does not.
+    const auto code = [](BlockReason b) { return static_cast<int>(b); };
+    int why = tir ? code(BlockReason::TotalInternalReflection) : code(BlockReason::None);
+    why = obscured ? code(BlockReason::Obscured) : why;
+    why = outside ? s.beyondAperture : why;
+    why = missed ? code(BlockReason::MissedSurface) : why;
+    return static_cast<BlockReason>(why);
 }
 
 // A quadric (sphere when kConic is false): intersection and bend in one step.
@@ -293,7 +300,7 @@ inline BlockReason stepThroughGeneral(T& px, T& py, T& pz, T& dx, T& dy, T& dz, 
     if (why != BlockReason::None) return why;
     const double hx = double(px), hy = double(py);
     const BlockReason shaped = g.clear && !g.clear->contains(hx, hy)
-                                   ? (s.isStop ? BlockReason::ClippedByStop : BlockReason::OutsideAperture)
+                                   ? static_cast<BlockReason>(s.beyondAperture)
                                : g.obscuration && g.obscuration->contains(hx, hy) ? BlockReason::Obscured
                                                                                   : BlockReason::None;
     if (shaped != BlockReason::None) {

@@ -80,7 +80,7 @@ Vec3 blockedAt(const LensSystem& lens, const TraceResult& r) {
     plain.ignoreApertures = true;
     SurfaceConstants<double> c = surfaceConstants<double>(lens, r.surface, TraceDirection::SceneToFilm, plain);
     c.eta = 1;
-    c.mirror = false;
+    c.reflects = 0;
     double px = r.ray.origin.x, py = r.ray.origin.y, pz = r.ray.origin.z;
     double dx = r.ray.direction.x, dy = r.ray.direction.y, dz = r.ray.direction.z;
     if (stepThroughSurface(px, py, pz, dx, dy, dz, c) == BlockReason::None) return {px, py, pz};

@@ -71,7 +71,7 @@ Step step(Ray r, double curvature, double apertureRadius, double eta, bool isSto
     s.radius = T(1) / T(curvature);
     s.apertureRadius2 = T(apertureRadius * apertureRadius);
     s.eta = T(eta);
-    s.isStop = isStop;
+    s.beyondAperture = static_cast<int>(isStop ? BlockReason::ClippedByStop : BlockReason::OutsideAperture);
     const BlockReason why = stepThroughSurface<T>(px, py, pz, dx, dy, dz, s);
     return {{{px, py, pz}, {dx, dy, dz}}, why};
 }

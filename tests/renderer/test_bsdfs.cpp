@@ -137,7 +137,9 @@ TEST(Bsdfs, OneBsdfPerVertexAnswersWhatTheMaterialsCallsDo) {
             EXPECT_TRUE(near(s.weight.x, wm.x) && near(s.weight.z, wm.z)) << c.name << ": weight " << s.weight.x << " against " << wm.x;
             ++checked;
         }
-        if (!m->isSpecular()) EXPECT_GT(checked, 100) << c.name;
+        if (!m->isSpecular()) {
+            EXPECT_GT(checked, 100) << c.name;
+        }
     }
 }
 
