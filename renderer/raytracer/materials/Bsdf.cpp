@@ -60,28 +60,6 @@ unsigned Bsdf::scatteringType(Vec3f woWorld, Vec3f wiWorld) const {
     return dot(wiWorld, ng_) * dot(woWorld, ng_) > 0 ? kReflection : kTransmission;
 }
 
-Vec3f Bsdf::f(Vec3f woWorld, Vec3f wiWorld) const {
-    const Vec3f wo = toLocal(woWorld), wi = toLocal(wiWorld);
-    if (wo.z == 0) return {};
-    const unsigned wanted = scatteringType(woWorld, wiWorld);
-    Vec3f sum{};
-    for (int i = 0; i < count_; ++i) {
-        const unsigned t = lobes_[i]->type();
-        if (!(t & kSpecular) && (t & wanted)) sum += weights_[i] * lobes_[i]->f(wo, wi);
-    }
-    return sum;
-}
-
-float Bsdf::pdf(Vec3f woWorld, Vec3f wiWorld) const {
-    if (count_ == 0) return 0;
-    const Vec3f wo = toLocal(woWorld), wi = toLocal(wiWorld);
-    if (wo.z == 0) return 0;
-    float sum = 0;
-    for (int i = 0; i < count_; ++i)
-        if (!(lobes_[i]->type() & kSpecular)) sum += lobes_[i]->pdf(wo, wi);
-    return sum / float(count_);
-}
-
 Vec3f Bsdf::evaluate(Vec3f woWorld, Vec3f wiWorld, float& pdf) const {
     pdf = 0;
     if (count_ == 0) return {};
@@ -143,10 +121,15 @@ bool Bsdf::sample(Vec3f woWorld, float uLobe, float u1, float u2, BsdfSample& ou
 // The Material interface, answered by the Bsdf the material lays down at the hit.
 
 Vec3f Material::evaluate(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const {
-    return Bsdf(hit, *this).f(wo, wi) * std::fabs(dot(wi, hit.ns));
+    float pdf;
+    return Bsdf(hit, *this).evaluate(wo, wi, pdf);
 }
 
-float Material::pdf(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const { return Bsdf(hit, *this).pdf(wo, wi); }
+float Material::pdf(const SurfaceHit& hit, Vec3f wo, Vec3f wi) const {
+    float pdf;
+    Bsdf(hit, *this).evaluate(wo, wi, pdf);
+    return pdf;
+}
 
 bool Material::sample(const SurfaceHit& hit, Vec3f wo, float uLobe, float u1, float u2, BsdfSample& out) const {
     return Bsdf(hit, *this).sample(wo, uLobe, u1, u2, out);

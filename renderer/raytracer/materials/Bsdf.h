@@ -70,11 +70,9 @@ public:
         lobes_[count_] = new (slots_[count_].bytes) L(std::forward<Args>(args)...);
         weights_[count_++] = weight;
     }
-    // World directions. f excludes the specular lobes; pdf is the mixture density of sample().
-    Vec3f f(Vec3f wo, Vec3f wi) const;
-    float pdf(Vec3f wo, Vec3f wi) const;
-    // f(wo, wi) |cos(wi, ns)| (Material::evaluate), and in `pdf` the density sample() draws wi with:
-    // what a light sample weighed by MIS needs, in one pass over the lobes.
+    // World directions. f(wo, wi) |cos(wi, ns)| without the specular lobes, and in `pdf` the
+    // mixture density sample() draws wi with: what a light sample weighed by MIS needs, in one
+    // pass over the lobes.
     Vec3f evaluate(Vec3f wo, Vec3f wi, float& pdf) const;
     bool sample(Vec3f wo, float uLobe, float u1, float u2, BsdfSample& out) const;
 

@@ -1,5 +1,6 @@
 #include "sampling/Noise.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -40,10 +41,11 @@ constexpr Direction direction(int h) {
     const float a = (h & 1) ? -1 : 1, b = (h & 2) ? -1 : 1;
     return {aIsX ? a : 0, aIsX ? (bIsY ? b : 0) : a, bIsY ? 0 : b};
 }
-constexpr Direction kDirections[16] = {direction(0),  direction(1),  direction(2),  direction(3),
-                                       direction(4),  direction(5),  direction(6),  direction(7),
-                                       direction(8),  direction(9),  direction(10), direction(11),
-                                       direction(12), direction(13), direction(14), direction(15)};
+constexpr std::array<Direction, 16> kDirections = [] {
+    std::array<Direction, 16> table{};
+    for (int h = 0; h < 16; ++h) table[h] = direction(h);
+    return table;
+}();
 
 // The dot product of the offset (dx, dy, dz) with hash h's direction: with one component zero, the
 // same sum of two signed offsets, bit for bit, that choosing them would give.
