@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "film/Demosaic.h"
@@ -221,6 +222,36 @@ TEST(CameraSensor, FullWellClipsAndStandardOutputSensitivitySetsTheLevels) {
     const SensorReadout stats = readOutSensor(low, c, 5, 0, 0, bright);
     EXPECT_EQ(stats.wellClipped, 300u);
     EXPECT_NEAR(bright.rgb[0], c.fullWellElectrons / c.electronsPerLuxSecond * 0.018 * 25, 2e-3);
+}
+
+// Light far past the full well (the service's finding: nits 1e12, 1 s; nits 1e9 at 1000 s through
+// 1 mm pixels) puts a Poisson mean past 2^63, where the standard sampler rejected every draw and the
+// render's worker spun for good (a 16 x 12 frame of a 35 mm film has 2.2 mm pixels). Such sites read
+// full; a well of the largest allowed capacity still draws its own noise, and an infinite film value
+// reads full too.
+TEST(CameraSensor, LightFarPastTheFullWellReadsFullAtOnce) {
+    for (const SensorPairs& pairs : {SensorPairs{{"nits", 1e12}, {"exposure", 1.0}},
+                                     SensorPairs{{"nits", 1e9}, {"exposure", 1e3}, {"pitch", 1000.0}}}) {
+        const SensorSpec s = sensorSpecFromPairs(pairs);
+        const double pitch = s.pitchMicrometres.value_or(2163);
+        const SensorCalibration c = calibrateSensor(s, {kUnitFilm.exposurePerValue, 1.0, pitch, 0.0});
+        Image im = flat(16, 12, 1.0f);
+        ASSERT_GT(c.luxSecondsPerValue * c.electronsPerLuxSecond, 0x1p63);
+        const SensorReadout stats = readOutSensor(s, c, 7, 0, 0, im);
+        EXPECT_EQ(stats.wellClipped, 16u * 12u * 3u);
+        for (float v : im.rgb) ASSERT_TRUE(std::isfinite(v));
+    }
+    SensorSpec deep = shotOnly();
+    deep.fullWellElectrons = 1e12;
+    deep.gainElectronsPerDn = 1e6;
+    const SensorCalibration c = calibrateSensor(deep, kUnitFilm);
+    const double perValue = c.luxSecondsPerValue * c.electronsPerLuxSecond;
+    Image im = flat(20, 20, float(0.999e12 / perValue));
+    im.rgb[0] = std::numeric_limits<float>::infinity();
+    const SensorReadout stats = readOutSensor(deep, c, 9, 0, 0, im);
+    EXPECT_EQ(stats.wellClipped, 1u);
+    const Moments m = electronMoments(im, c);
+    EXPECT_NEAR(m.mean, 0.999e12, 1e-6 * 1e12);
 }
 
 TEST(CameraSensor, TheAdcQuantisesToItsBits) {

@@ -39,6 +39,18 @@ double normal(PcgBits& bits, double sigma) {
     return sigma > 0 ? std::normal_distribution<double>(0.0, sigma)(bits) : 0.0;
 }
 
+// The electrons a photosite of capacity fullWell collects from a Poisson mean, clipped to the well.
+// A mean so far past the well that a draw falls below it less often than once in 1e15 is full
+// without drawing: the standard library's Poisson sampler rejects every sample once its mean nears
+// 2^63 (a bright sky at a long exposure), and the render hung there. Below that the mean is at most
+// the well (1e12 at most) plus a few deviations, where the sampler is exact and quick.
+double collectedElectrons(double mean, double fullWell, PcgBits& noise) {
+    constexpr double kSaturatedDeviations = 8;
+    if (!(mean > 0)) return 0;
+    if (!(mean - kSaturatedDeviations * std::sqrt(mean) < fullWell)) return fullWell;  // an infinite mean too
+    return std::min(fullWell, double(std::poisson_distribution<long long>(mean)(noise)));
+}
+
 std::string shown(double v) {
     std::ostringstream s;
     s.precision(6);
@@ -105,11 +117,8 @@ SensorReadout readOutSensor(const SensorSpec& spec, const SensorCalibration& c, 
         const double darkRate = std::max(0.0, spec.darkCurrentElectronsPerSecond + normal(pattern, spec.dsnuElectronsPerSecond));
         const double mean = std::max(0.0, value * electronsPerValue * response) + darkRate * c.exposureSeconds;
         PcgBits noise{Pcg32(siteKey(noiseSeed, x, y, ch))};
-        double electrons = mean > 0 ? double(std::poisson_distribution<long long>(mean)(noise)) : 0.0;
-        if (electrons >= c.fullWellElectrons) {
-            electrons = c.fullWellElectrons;
-            wellClipped.fetch_add(1, std::memory_order_relaxed);
-        }
+        const double electrons = collectedElectrons(mean, c.fullWellElectrons, noise);
+        if (electrons >= c.fullWellElectrons) wellClipped.fetch_add(1, std::memory_order_relaxed);
         const double dn = std::nearbyint(electrons / c.gainElectronsPerDn + c.blackLevelDn + normal(noise, readDn));
         if (dn >= c.fullScaleDn) adcClipped.fetch_add(1, std::memory_order_relaxed);
         return std::clamp(dn, 0.0, c.fullScaleDn);
