@@ -11,5 +11,7 @@ int runDiagramCommand(const std::vector<std::string>& args);
 int runServeCommand(const std::vector<std::string>& args);
 int runRenderCommand(const std::vector<std::string>& args);
 int runReportCommand(const std::vector<std::string>& args);
+int runOptimiseCommand(const std::vector<std::string>& args);
+int runToleranceCommand(const std::vector<std::string>& args);
 
 }  // namespace lenslab

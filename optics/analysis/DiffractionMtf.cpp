@@ -97,4 +97,10 @@ double diffractionLimitedMtf(double frequency, double cutoff, double obscuration
     return std::max(0.0, (a + b + c) / (1 - e * e));
 }
 
+Complex shiftedTransfer(const OpticalTransfer& otf, MtfDirection direction, double frequency, Point2 offset) {
+    constexpr double kTwoPi = 6.28318530717958647692;
+    return direction == MtfDirection::Sagittal ? otf.sagittal.at(frequency) * std::polar(1.0, -kTwoPi * frequency * offset.x)
+                                               : otf.tangential.at(frequency) * std::polar(1.0, -kTwoPi * frequency * offset.y);
+}
+
 }  // namespace lenslab

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/Fft.h"
+#include "analysis/GeometricMtf.h"
 #include "analysis/WavefrontMap.h"
 
 namespace lenslab {
@@ -40,6 +41,10 @@ struct OpticalTransfer {
 };
 
 OpticalTransfer opticalTransfer(const PointSpreadFunction& psf);
+
+// The OTF along one direction at `frequency`, measured from a point `offset` (mm) away from the chief
+// ray's image (its offset a phase): how wavelengths' OTFs are summed about one reference point.
+Complex shiftedTransfer(const OpticalTransfer& otf, MtfDirection direction, double frequency, Point2 offset);
 
 // The aberration-free MTF of a circular pupil, (2/pi)(phi - cos phi sin phi) with phi = acos(nu /
 // cutoff), 0 from the cutoff on; with a central obscuration of `obscuration` times the pupil's radius

@@ -19,7 +19,6 @@ namespace lenslab {
 
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647692;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void require(bool ok, const std::string& source, const std::string& problem) {
@@ -154,12 +153,12 @@ public:
             if (!t.otf) continue;
             // Each wavelength's OTF is relative to its own chief ray: its offset from the reference
             // (lateral colour, the centroid's offset) is a phase.
-            const double sx = t.chiefImage.x - f.reference.x, sy = t.chiefImage.y - f.reference.y;
+            const Point2 offset{t.chiefImage.x - f.reference.x, t.chiefImage.y - f.reference.y};
             const double weight = out_.weights[j];
             for (std::size_t k = 0; k < out_.frequencies.size(); ++k) {
                 const double nu = out_.frequencies[k];
-                sagittal[k] += weight * t.otf->sagittal.at(nu) * std::polar(1.0, -kTwoPi * nu * sx);
-                tangential[k] += weight * t.otf->tangential.at(nu) * std::polar(1.0, -kTwoPi * nu * sy);
+                sagittal[k] += weight * shiftedTransfer(*t.otf, MtfDirection::Sagittal, nu, offset);
+                tangential[k] += weight * shiftedTransfer(*t.otf, MtfDirection::Tangential, nu, offset);
             }
             weightTotal += weight;
         }

@@ -127,6 +127,7 @@ struct LineRays {
     std::vector<Point2> at, slope;
     std::vector<double> weight;
     int launched = 0;
+    bool whole = false;  // one stretch from the centre to the stop's rim, every node passing
 };
 
 LineRays traceLine(const LensSystem& lens, const FieldAim& aim, double z, const PolarFrame& frame,
@@ -139,11 +140,14 @@ LineRays traceLine(const LensSystem& lens, const FieldAim& aim, double z, const 
     const RadialRay radial{lens, aim, c, v, t * t, {}};
     // The scan finds stretches as narrow as 1 / scan of the line's length squared.
     const int scan = std::max(16, 2 * int(nodes.size()));
-    for (const auto& [u0, u1] : passingStretches(radial, scan, convex))
+    const std::vector<std::pair<double, double>> stretches = passingStretches(radial, scan, convex);
+    line.whole = stretches.size() == 1 && stretches[0].first == 0 && stretches[0].second == radial.uRim;
+    for (const auto& [u0, u1] : stretches)
         for (const auto& [x, w] : nodes) {
             ++line.launched;
             const std::optional<Ray> out = radial.passing(u0 + (u1 - u0) * x);
             const std::optional<Vec3> hit = out ? pointOnPlane(*out, z) : std::nullopt;
+            line.whole = line.whole && hit;
             if (!hit) continue;
             line.at.push_back({hit->x, hit->y});
             line.slope.push_back({out->direction.x / out->direction.z, out->direction.y / out->direction.z});
@@ -176,29 +180,44 @@ double rmsAboutCentroid(const ImageRays& rays) {
 
 ImageRays settledImageRays(const LensSystem& lens, const FieldAim& aim, double z, PupilQuadrature start,
                            double tolerance, int maxAzimuths) {
-    const PolarFrame frame = passingFrame(lens, aim);
+    // Where no aperture but the stop's can clip (the others automatic, nothing obscured), the passing
+    // part of the stop is the whole stop unless rays fail on their own (total internal reflection, a
+    // surface missed), and the grid's frame is the stop itself: the lines are traced in it first, and
+    // the grid is searched only if some line does not pass whole.
+    const bool onlyTheStopClips = std::all_of(lens.surfaces.begin(), lens.surfaces.end(), [](const Surface& s) {
+        return (s.isStop || s.automaticAperture) && s.obscurationRadius == 0 && !s.clearShape && !s.obscurationShape;
+    });
+    bool assumedWhole = onlyTheStopClips;
     const auto nodes = gaussLegendreUnit(start.rings);
-    // Clear apertures are round: what passes them all is convex unless an obscuration cuts a hole.
-    const bool convex = std::none_of(lens.surfaces.begin(), lens.surfaces.end(), [](const Surface& s) { return s.obscurationRadius > 0; });
-    std::vector<LineRays> lines;
-    for (int k = 0; k < start.azimuths; ++k)
-        lines.push_back(traceLine(lens, aim, z, frame, nodes, azimuthDirection(k, start.azimuths), convex));
-    ImageRays rays = assemble(lines, lens.wavelength, z, start);
-    // Each doubling keeps the lines it has (azimuth k of A is azimuth 2k of 2A) and adds those between.
-    while (rays.sampling.doubled().azimuths <= maxAzimuths) {
-        const PupilQuadrature finer = rays.sampling.doubled();
-        std::vector<LineRays> next;
-        for (int k = 0; k < finer.azimuths; ++k)
-            next.push_back(k % 2 == 0 ? std::move(lines[k / 2]) : traceLine(lens, aim, z, frame, nodes, azimuthDirection(k, finer.azimuths), convex));
-        lines = std::move(next);
-        ImageRays fine = assemble(lines, lens.wavelength, z, finer);
-        const double before = rmsAboutCentroid(rays), after = rmsAboutCentroid(fine);
-        // Both spots empty, or both points: nothing left to settle.
-        fine.samplingChange = after > 0 ? std::fabs(before / after - 1) : (before > 0 ? 1.0 : 0.0);
-        rays = std::move(fine);
-        if (rays.samplingChange <= tolerance) break;
+    for (;;) {
+        const PolarFrame frame = assumedWhole ? PolarFrame{} : passingFrame(lens, aim);
+        // Clear apertures are round: what passes them all is convex unless an obscuration cuts a hole.
+        const bool convex = std::none_of(lens.surfaces.begin(), lens.surfaces.end(), [](const Surface& s) { return s.obscurationRadius > 0; });
+        bool broken = false;  // a line that does not pass whole, where the frame was assumed
+        const auto line = [&](int k, int of) {
+            LineRays l = traceLine(lens, aim, z, frame, nodes, azimuthDirection(k, of), convex);
+            broken = broken || (assumedWhole && !l.whole);
+            return l;
+        };
+        std::vector<LineRays> lines;
+        for (int k = 0; k < start.azimuths; ++k) lines.push_back(line(k, start.azimuths));
+        ImageRays rays = assemble(lines, lens.wavelength, z, start);
+        // Each doubling keeps the lines it has (azimuth k of A is azimuth 2k of 2A) and adds those between.
+        while (!broken && rays.sampling.doubled().azimuths <= maxAzimuths) {
+            const PupilQuadrature finer = rays.sampling.doubled();
+            std::vector<LineRays> next;
+            for (int k = 0; k < finer.azimuths; ++k) next.push_back(k % 2 == 0 ? std::move(lines[k / 2]) : line(k, finer.azimuths));
+            lines = std::move(next);
+            ImageRays fine = assemble(lines, lens.wavelength, z, finer);
+            const double before = rmsAboutCentroid(rays), after = rmsAboutCentroid(fine);
+            // Both spots empty, or both points: nothing left to settle.
+            fine.samplingChange = after > 0 ? std::fabs(before / after - 1) : (before > 0 ? 1.0 : 0.0);
+            rays = std::move(fine);
+            if (rays.samplingChange <= tolerance) break;
+        }
+        if (!broken) return rays;
+        assumedWhole = false;
     }
-    return rays;
 }
 
 SpotStatistics spotStatistics(const std::vector<Point2>& points, const std::vector<double>& weights,

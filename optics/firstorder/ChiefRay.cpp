@@ -1,6 +1,9 @@
 #include "firstorder/ChiefRay.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <vector>
 
 #include "trace/ExactTrace.h"
 #include "trace/NearAxis.h"
@@ -46,21 +49,31 @@ std::optional<Ray> chiefRay(const LensSystem& lens, double fieldDegrees) {
     for (const Surface& s : lens.surfaces) reach = std::max(reach, s.apertureRadius);
     const FieldRays rays{lens, std::sin(theta), std::cos(theta), lens.frontZ() + lens.surfaces.front().apertureRadius + 1.0};
     // Scan the vertex heights for a sign change of the stop height; take the bracket nearest the
-    // axis (the entrance pupil lies near it), then bisect.
+    // axis (the entrance pupil lies near it), then bisect. The scan's cells are visited from the
+    // axis outward (of two at the same distance, the one below it first), so the first bracket found
+    // is that one: a lens whose pupil lies near its axis needs a few of the 400 traces, not all.
     constexpr int kScan = 400;
     const double span = 3 * reach;
-    std::optional<double> prev = rays.stopHeight(-span);
-    double prevY = -span;
-    std::optional<std::pair<double, double>> bracket;
-    for (int k = 1; k <= kScan; ++k) {
-        const double y = -span + 2 * span * k / kScan;
-        const std::optional<double> g = rays.stopHeight(y);
-        if (prev && g && (*prev <= 0) != (*g <= 0)) {
-            const bool nearer = !bracket || std::fabs(0.5 * (prevY + y)) < std::fabs(0.5 * (bracket->first + bracket->second));
-            if (nearer) bracket = {{prevY, y}};
+    std::vector<std::optional<double>> heights(kScan + 1);
+    std::vector<bool> traced(kScan + 1, false);
+    const auto heightAt = [&](int k) -> const std::optional<double>& {
+        if (!traced[k]) {
+            heights[k] = rays.stopHeight(-span + 2 * span * k / kScan);
+            traced[k] = true;
         }
-        prev = g;
-        prevY = y;
+        return heights[k];
+    };
+    std::vector<int> cells(kScan);  // cell k spans grid points k - 1 and k
+    for (int k = 1; k <= kScan; ++k) cells[k - 1] = k;
+    std::stable_sort(cells.begin(), cells.end(), [](int a, int b) { return std::abs(2 * a - 1 - kScan) < std::abs(2 * b - 1 - kScan); });
+    std::optional<std::pair<double, double>> bracket;
+    for (int k : cells) {
+        const std::optional<double>& below = heightAt(k - 1);
+        const std::optional<double>& above = heightAt(k);
+        if (below && above && (*below <= 0) != (*above <= 0)) {
+            bracket = {{-span + 2 * span * (k - 1) / kScan, -span + 2 * span * k / kScan}};
+            break;
+        }
     }
     if (!bracket) return std::nullopt;
     auto [lo, hi] = *bracket;

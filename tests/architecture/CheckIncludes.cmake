@@ -18,8 +18,8 @@ set(allowed_cli "optics;renderer/image;renderer/diagram;renderer/raytracer;rende
 # own; the folders of one layer do not include each other, except partners named below. Their headers
 # are included by folder ("trace/ExactTrace.h", "materials/Bsdf.h", "jobs/JobQueue.h") from
 # everywhere; every file of such a part lives in one of its folders.
-# optics: the designer's analysis -> lens settings -> first order -> the trace -> prescriptions.
-set(optics_layers prescription trace firstorder settings analysis)
+# optics: design (optimisation, tolerancing) -> the designer's analysis -> lens settings -> first order -> the trace -> prescriptions.
+set(optics_layers prescription trace firstorder settings analysis design)
 # The ray tracer: textures/ and materials/ are partners, as a material's parameters are textures, and
 # a texture is evaluated at a SurfaceHit, which materials/Material.h declares.
 set(renderer/raytracer_layers core sampling,images textures,materials,media shapes lights scene geometry cameras,film,integrators render)

@@ -1,0 +1,91 @@
+#include <ctime>
+#include <fstream>
+#include <iostream>
+
+#include "ArgParser.h"
+#include "Commands.h"
+#include "DesignInputs.h"
+#include "DesignJson.h"
+#include "design/GlobalSearch.h"
+
+namespace lenslab {
+
+namespace {
+
+double cpuSeconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
+
+}  // namespace
+
+int runOptimiseCommand(const std::vector<std::string>& args) {
+    ArgParser p("optimise", "FILE [--merit M.json] [--variables LIST] [--image-solve] [--global HOPS [--seed S]] -o out.zmx",
+                "Optimises a lens by damped least squares (docs/design.md): the variables move until the merit\n"
+                "stops falling; every step keeps a lens that can be built. Prints the merit as it falls, then each\n"
+                "operand and variable before and after. --global adds basin hopping from a seed.");
+    declareDesignInputs(p);
+    p.option("--variables", "LIST", "curvature:1-6,thickness:6,conic:3,asphere4:5,index:1,abbe:1 (default: every curvature and the image distance)");
+    p.flag("--image-solve", "hold the image distance at the paraxial marginal ray's focus");
+    p.option("--global", "HOPS", "basin hopping: this many hops, each a descent from a random move of the best design");
+    p.option("--seed", "S", "the hops' seed (default 1)");
+    p.option("--max-iterations", "N", "per descent (default 200)");
+    p.option("-o", "OUT", "the optimised lens (.zmx or .dat; read back to check), or results as .json");
+    p.flag("--json", "print the result as one JSON object");
+    if (!p.parse(args)) {
+        std::cout << p.help();
+        return 0;
+    }
+    DesignProblem problem;
+    problem.start = designTable(p);
+    problem.merit = designMerit(p, problem.start);
+    try {
+        problem.variables = variablesFromText(p.get("--variables"), problem.start);
+    } catch (const DesignInputError& e) {
+        throw UsageError(std::string("optimise: --") + e.what());
+    }
+    problem.rules.marginalRayImageSolve = p.has("--image-solve");
+    OptimiserOptions local;
+    if (p.has("--max-iterations")) local.maxIterations = int(*p.integer("--max-iterations"));
+    if (local.maxIterations < 1) throw UsageError("optimise: --max-iterations must be at least 1");
+    const bool json = p.has("--json");
+    local.progress = [&](const OptimiserProgress& progress) {
+        if (!json) std::cerr << "  step " << progress.iteration << ": merit " << progress.merit << " (" << progress.evaluations << " evaluations)\n";
+    };
+    const double cpu = cpuSeconds();
+    OptimiserResult result;
+    if (p.has("--global")) {
+        GlobalSearchOptions options;
+        options.hops = int(*p.integer("--global"));
+        options.seed = p.has("--seed") ? std::uint64_t(*p.integer("--seed")) : 1;
+        options.local = local;
+        if (options.hops < 0 || options.hops > 1000) throw UsageError("optimise: --global takes 0 to 1000 hops");
+        result = searchGlobally(problem, options).best;
+    } else {
+        result = optimiseDampedLeastSquares(problem, local);
+    }
+    const double used = cpuSeconds() - cpu;
+    // The figures a designer quotes: both lenses on the analysis's converged sampling.
+    MeritFunction settled = problem.merit;
+    settled.settle = true;
+    const MeritEvaluation before = evaluateMerit(problem.start, settled), after = evaluateMerit(result.lens, settled);
+    if (json) {
+        nlohmann::json j = optimiserResultJson(problem, result);
+        j["cpu_seconds"] = used;
+        j["settled"] = {{"start", meritEvaluationJson(settled, before)}, {"end", meritEvaluationJson(settled, after)}};
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << optimiserResultText(problem, result) << "\non the analysis's converged sampling: merit " << before.merit << " -> "
+                  << after.merit << "\nCPU " << used << " s\n";
+    }
+    if (p.has("-o")) {
+        const std::string out = p.get("-o");
+        if (out.size() > 5 && out.compare(out.size() - 5, 5, ".json") == 0) {
+            std::ofstream f(out);
+            if (!(f << optimiserResultJson(problem, result).dump(2) << "\n")) throw std::runtime_error(out + ": cannot write the file");
+        } else {
+            writeDesignTable(result.lens, out, problem.merit);
+        }
+        if (!json) std::cout << "wrote " << out << "\n";
+    }
+    return 0;
+}
+
+}  // namespace lenslab
