@@ -1,14 +1,19 @@
 #include "DesignInputs.h"
 
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 
 #include "DesignJson.h"
 #include "LensTableWriter.h"
+#include "SubstitutionFileWriter.h"
 #include "ZemaxWriter.h"
 
 namespace lenslab {
+
+double processCpuSeconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 void declareDesignInputs(ArgParser& p) {
     p.positional("FILE", "lens table (.dat), Zemax (.zmx) or Code V (.seq) prescription");
@@ -50,11 +55,18 @@ void writeDesignTable(const LensTable& table, const std::string& path, const Mer
     const bool zmx = path.size() > 4 && path.compare(path.size() - 4, 4, ".zmx") == 0;
     const bool dat = path.size() > 4 && path.compare(path.size() - 4, 4, ".dat") == 0;
     if (!zmx && !dat) throw UsageError("-o: the lens is written as .zmx or .dat, got '" + path + "'");
-    const std::string text = zmx ? writeZemaxText(withRowCatalogsInTheFile(table)) : writeLensTableText(table);
-    {
-        std::ofstream out(path, std::ios::binary);
-        if (!out || !(out << text)) throw std::runtime_error(path + ": cannot write the file");
-    }
+    // Glasses no catalog holds (an as-built lens's melts) go to the .smx file beside the lens, which
+    // reading it takes up again.
+    const LensTable stated = withoutSubstitutions(table);
+    const std::string text = zmx ? writeZemaxText(withRowCatalogsInTheFile(stated)) : writeLensTableText(stated);
+    const auto write = [](const std::string& file, const std::string& bytes) {
+        std::ofstream out(file, std::ios::binary);
+        if (!out || !(out << bytes)) throw std::runtime_error(file + ": cannot write the file");
+    };
+    const std::string smx = path.substr(0, path.size() - 4) + ".smx";
+    std::remove(smx.c_str());
+    if (!table.substitutes.empty()) write(smx, writeSubstitutionText(table));
+    write(path, text);
     const MeritEvaluation before = evaluateMerit(table, merit);
     const MeritEvaluation after = evaluateMerit(readLensTable(path, table.layout), merit);
     for (std::size_t i = 0; before.valid && i < before.values.size(); ++i)

@@ -11,12 +11,16 @@
 namespace lenslab {
 
 void declareDesignInputs(ArgParser& p);
+
+// The CPU time of the whole process so far (every thread), s: what a design run is measured by.
+double processCpuSeconds();
 LensTable designTable(const ArgParser& p);
 MeritFunction designMerit(const ArgParser& p, const LensTable& table);
 nlohmann::json readJsonFile(const std::string& path, const std::string& what);
 
-// Writes the table as .zmx or .dat (by the path's extension) and reads it back: throws
-// std::runtime_error when the file does not read back to the same merit values (`merit`).
+// Writes the table as .zmx or .dat (by the path's extension), its substituted glasses (an as-built
+// lens's melts) as the .smx beside it, and reads it back: throws std::runtime_error when the file does
+// not read back to the same merit values (`merit`).
 void writeDesignTable(const LensTable& table, const std::string& path, const MeritFunction& merit);
 
 }  // namespace lenslab

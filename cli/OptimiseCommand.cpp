@@ -1,4 +1,3 @@
-#include <ctime>
 #include <fstream>
 #include <iostream>
 
@@ -9,12 +8,6 @@
 #include "design/GlobalSearch.h"
 
 namespace lenslab {
-
-namespace {
-
-double cpuSeconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
-
-}  // namespace
 
 int runOptimiseCommand(const std::vector<std::string>& args) {
     ArgParser p("optimise", "FILE [--merit M.json] [--variables LIST] [--image-solve] [--global HOPS [--seed S]] -o out.zmx",
@@ -49,7 +42,7 @@ int runOptimiseCommand(const std::vector<std::string>& args) {
     local.progress = [&](const OptimiserProgress& progress) {
         if (!json) std::cerr << "  step " << progress.iteration << ": merit " << progress.merit << " (" << progress.evaluations << " evaluations)\n";
     };
-    const double cpu = cpuSeconds();
+    const double cpu = processCpuSeconds();
     OptimiserResult result;
     if (p.has("--global")) {
         GlobalSearchOptions options;
@@ -61,7 +54,7 @@ int runOptimiseCommand(const std::vector<std::string>& args) {
     } else {
         result = optimiseDampedLeastSquares(problem, local);
     }
-    const double used = cpuSeconds() - cpu;
+    const double used = processCpuSeconds() - cpu;
     // The figures a designer quotes: both lenses on the analysis's converged sampling.
     MeritFunction settled = problem.merit;
     settled.settle = true;

@@ -1,5 +1,4 @@
 #include <atomic>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -11,12 +10,6 @@
 #include "DesignJson.h"
 
 namespace lenslab {
-
-namespace {
-
-double cpuSeconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
-
-}  // namespace
 
 int runToleranceCommand(const std::vector<std::string>& args) {
     ArgParser p("tolerance", "FILE [--spec T.json] [--merit M.json] [--trials N] [--seed S] [-o DIR]",
@@ -53,9 +46,9 @@ int runToleranceCommand(const std::vector<std::string>& args) {
     if (trials < 0 || trials > 1000000) throw UsageError("tolerance: --trials must be 0 to 1000000");
     const bool json = p.has("--json");
 
-    double cpu = cpuSeconds();
+    double cpu = processCpuSeconds();
     const std::vector<SensitivityRow> rows = toleranceSensitivity(problem);
-    const double sensitivityCpu = cpuSeconds() - cpu;
+    const double sensitivityCpu = processCpuSeconds() - cpu;
     MonteCarloOptions options;
     options.trials = int(trials);
     options.seed = p.has("--seed") ? std::uint64_t(*p.integer("--seed")) : 1;
@@ -68,9 +61,9 @@ int runToleranceCommand(const std::vector<std::string>& args) {
         std::lock_guard<std::mutex> lock(printing);
         std::cerr << "  " << done << " of " << options.trials << " trials\n";
     };
-    cpu = cpuSeconds();
+    cpu = processCpuSeconds();
     const MonteCarloResult mc = runMonteCarlo(problem, options);
-    const double monteCarloCpu = cpuSeconds() - cpu;
+    const double monteCarloCpu = processCpuSeconds() - cpu;
 
     nlohmann::json j = {{"sensitivity", sensitivityJson(problem, rows)},
                         {"monte_carlo", monteCarloJson(problem, mc)},

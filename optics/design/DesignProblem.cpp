@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "prescription/OpticsError.h"
 
 namespace lenslab {
 
@@ -12,27 +11,24 @@ std::vector<double> startingValues(const DesignProblem& problem) {
     return values;
 }
 
-LensTable designLens(const DesignProblem& problem, const std::vector<double>& values) {
+namespace {
+
+LensTable withValues(const DesignProblem& problem, const std::vector<double>& values) {
     LensTable table = problem.start;
     for (std::size_t j = 0; j < problem.variables.size(); ++j) setVariableValue(table, problem.variables[j], values[j]);
+    return table;
+}
+
+}  // namespace
+
+LensTable designLens(const DesignProblem& problem, const std::vector<double>& values) {
+    LensTable table = withValues(problem, values);
     applyDesignRules(table, problem.rules);
     return table;
 }
 
 MeritEvaluation evaluateDesign(const DesignProblem& problem, const std::vector<double>& values) {
-    LensTable table;
-    try {
-        table = designLens(problem, values);
-    } catch (const OpticsError& e) {
-        MeritEvaluation invalid;
-        invalid.problem = e.what();
-        return invalid;
-    } catch (const LensTableError& e) {
-        MeritEvaluation invalid;
-        invalid.problem = e.problem();
-        return invalid;
-    }
-    return evaluateMerit(table, problem.merit);
+    return evaluateMerit(withValues(problem, values), problem.merit, problem.rules);
 }
 
 void checkDesignProblem(const DesignProblem& problem) {

@@ -22,7 +22,8 @@ std::vector<double> startingValues(const DesignProblem& problem);
 // where a rule has no answer (the image solve of an afocal lens).
 LensTable designLens(const DesignProblem& problem, const std::vector<double>& values);
 
-// designLens, then evaluateMerit; a rule without an answer is an invalid lens, with its reason.
+// The lens of `values` evaluated (evaluateMerit with the problem's rules): a rule without an answer is
+// an invalid lens, with its reason.
 MeritEvaluation evaluateDesign(const DesignProblem& problem, const std::vector<double>& values);
 
 // Checks every variable and pick-up against the lens (checkVariable), and the merit's wavelengths:

@@ -426,9 +426,15 @@ MeritEvaluation guarded(Evaluate evaluate) {
 
 }  // namespace
 
-MeritEvaluation evaluateMerit(const LensTable& table, const MeritFunction& merit) {
+MeritEvaluation evaluateMerit(const LensTable& table, const MeritFunction& merit, const DesignRules& rules) {
     return guarded([&] {
-        auto traced = std::make_shared<TracedLens>(table, merit);
+        const bool ruled = !rules.pickups.empty() || rules.marginalRayImageSolve;
+        LensTable applied;
+        if (ruled) {
+            applied = table;
+            applyDesignRules(applied, rules);
+        }
+        auto traced = std::make_shared<TracedLens>(ruled ? applied : table, merit);
         traced->traceFields(neededRays(merit, traced->lens().wavelength));
         checkValidity(*traced, merit);
         return measure(traced, traced->imageZ(), merit);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/PupilSampling.h"
+#include "design/DesignVariable.h"
 #include "design/MeritOperand.h"
 #include "prescription/LensTable.h"
 
@@ -45,7 +46,9 @@ struct MeritEvaluation {
     std::shared_ptr<const TracedLens> traced;  // valid evaluations: what evaluateMeritAtImageDistance reuses
 };
 
-MeritEvaluation evaluateMerit(const LensTable& table, const MeritFunction& merit);
+// The rules (pick-ups, the image solve) are applied to the table first; a rule without an answer (the
+// image solve of an afocal lens) makes an invalid lens, with its reason.
+MeritEvaluation evaluateMerit(const LensTable& table, const MeritFunction& merit, const DesignRules& rules = {});
 
 // The lens of a valid evaluation with only its image distance changed (a gap-after table's last gap,
 // on the merit's Table image plane): every ray is a straight move of one already traced, so a back

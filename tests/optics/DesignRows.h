@@ -1,21 +1,12 @@
 #pragma once
-// Lens tables for the design tests, written row by row (gap-after, like a .zmx): the tables
-// themselves, not built lenses, since the design varies the table.
+// Lens tables for the design tests (tableOfRows: the tables themselves, not built lenses, since the
+// design varies the table), and the Cooke triplet they start from.
 #include <string>
 #include <vector>
 
 #include "PrescriptionRows.h"
 
 namespace lenslab::test {
-
-inline LensTable tableOfRows(std::vector<LensTableRow> rows, const std::string& name = "design-rows") {
-    LensTable t;
-    t.name = name;
-    t.layout = TableLayout::GapAfter;
-    for (std::size_t i = 0; i < rows.size(); ++i) rows[i].line = int(i) + 1;
-    t.rows = std::move(rows);
-    return t;
-}
 
 // A row whose clear aperture is left to the program (sized from the beam, clipping nothing).
 inline LensTableRow openRow(double radius, double gap, double index, double abbe = 0) {

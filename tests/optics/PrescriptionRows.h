@@ -24,14 +24,19 @@ inline LensTableRow stopRow(double gap, double diameter) {
     return r;
 }
 
-// The rows as a gap-after table named `name`, each on its own line, built into a lens.
-inline LensSystem buildRows(std::vector<LensTableRow> rows, const std::string& name = "test-rows") {
+// The rows as a gap-after table named `name`, each on its own line.
+inline LensTable tableOfRows(std::vector<LensTableRow> rows, const std::string& name = "test-rows") {
     LensTable t;
     t.name = name;
     t.layout = TableLayout::GapAfter;
     for (std::size_t i = 0; i < rows.size(); ++i) rows[i].line = int(i) + 1;
     t.rows = std::move(rows);
-    return buildLensSystem(t);
+    return t;
+}
+
+// The same, built into a lens.
+inline LensSystem buildRows(std::vector<LensTableRow> rows, const std::string& name = "test-rows") {
+    return buildLensSystem(tableOfRows(std::move(rows), name));
 }
 
 // Stop, flat face, then the convex face leaving glass of index n (centre of curvature on the scene
