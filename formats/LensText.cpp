@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "firstorder/Aperture.h"
 #include "prescription/NumberText.h"
 
 namespace lenslab {
@@ -80,8 +81,7 @@ std::string lensAnalysisText(const LensAnalysis& a) {
     line(out, "P   (front principal) z", fo.zP);
     line(out, "P'  (rear principal) z", fo.zPPrime);
     out += "\nAperture\n";
-    std::snprintf(b, sizeof b, "  %-28s %12.4f     (range f/%.3g to f/%.0f)\n", "f-number", a.fstop,
-                  a.aperture.fstopMin, a.aperture.fstopMax);
+    std::snprintf(b, sizeof b, "  %-28s %12.4f     (range %s)\n", "f-number", a.fstop, fstopRangeText(a.aperture).c_str());
     out += b;
     line(out, "stop z", a.lens.stop().z);
     line(out, "stop diameter", a.stopDiameter);

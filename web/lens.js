@@ -82,7 +82,10 @@ function setUpUpload() {
 
 const shown = (n) => String(Math.round(n * 100) / 100);
 
-function rangeText() { return `f/${shown(Math.ceil(state.fstopMin * 100) / 100)} to f/${shown(state.fstopMax)}`; }
+// A range's ends rounded inward: an f-number read off it is one the lens takes (f/6.71 for 6.70196).
+const rangeEnds = (min, max) => `f/${shown(Math.ceil(min * 100) / 100)} to f/${shown(Math.floor(max * 100) / 100)}`;
+
+function rangeText() { return rangeEnds(state.fstopMin, state.fstopMax); }
 
 // Takes n when the lens can be set to it; otherwise says the lens's range and keeps the f-number.
 // A value within display rounding of the widest aperture means the widest aperture.
@@ -294,7 +297,6 @@ function showFullStops(stops) {
   const box = $("full-stops");
   box.replaceChildren();
   for (const n of stops) {
-    if (n > state.fstopMax * 1.0001) continue;
     const b = document.createElement("button");
     b.type = "button";
     b.textContent = "f/" + nominalFstop(n);
@@ -313,7 +315,7 @@ export function showLensData(lens) {
     ["F′ (rear focal point) z", fixed(lens.F_prime.z)],
     ["P (front principal plane) z", fixed(lens.P.z)],
     ["P′ (rear principal plane) z", fixed(lens.P_prime.z)],
-    ["f-number", fixed(lens.fstop, 2) + `  (range f/${fixed(lens.fstop_min, 2)} – f/${fixed(lens.fstop_max, 1)})`],
+    ["f-number", fixed(lens.fstop, 2) + `  (range ${rangeEnds(lens.fstop_min, lens.fstop_max)})`],
     ["Stop diameter", fixed(lens.stop.diameter) + ` at z ${fixed(lens.stop.z)}`],
     ["Entrance pupil", `⌀ ${fixed(lens.entrance_pupil.diameter)} at z ${fixed(lens.entrance_pupil.z)}`],
     ["Exit pupil", `⌀ ${fixed(lens.exit_pupil.diameter)} at z ${fixed(lens.exit_pupil.z)}`],

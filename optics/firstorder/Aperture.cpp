@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
 #include "trace/ExactTrace.h"
 #include "trace/NearAxis.h"
@@ -28,9 +29,11 @@ bool conePasses(const LensSystem& lens, const FirstOrder& fo, double sinTheta, b
     return traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options).ok();
 }
 
-// How far from the stop's centre, in its plane, the marginal ray traced from F' through the surfaces
-// behind the stop crosses it (in the stop's own frame: a decentred stop's centre is off the axis
-// of the coordinates arriving at it).
+// How far from the stop's centre the marginal ray traced from F' through the surfaces behind the
+// stop meets the stop's surface, where its aperture clips (a curved stop, on the rear face of a
+// Cooke triplet's flint, is met off its vertex plane: measured there, its opening read 0.3% small),
+// in the stop's own frame: a decentred stop's centre is off the axis of the coordinates arriving at
+// it. Where the ray misses the surface, its height on the vertex plane.
 double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta, bool stopOnly, bool* blocked) {
     TraceOptions options;
     options.begin = lens.stopIndex + 1;
@@ -38,10 +41,24 @@ double stopHeight(const LensSystem& lens, const FirstOrder& fo, double sinTheta,
     options.stopApertureOnly = stopOnly;
     const TraceResult r = traceRay(lens, marginalRayFromFPrime(fo, sinTheta), TraceDirection::FilmToScene, options);
     *blocked = !r.ok();
-    if (lens.stop().after.isIdentity()) return std::fabs(heightAtZ(r.ray, lens.stop().z));
-    const Ray inStop = movedRay(motionInto(lens.stop(), TraceDirection::FilmToScene), r.ray);
-    const double t = (lens.stop().z - inStop.origin.z) / inStop.direction.z;
-    return std::hypot(inStop.origin.x + t * inStop.direction.x, inStop.origin.y + t * inStop.direction.y);
+    const RigidMotion into = motionInto(lens.stop(), TraceDirection::FilmToScene);
+    const Ray inStop = movedRay(into, r.ray);
+    const auto onPlane = [&] {
+        const double t = (lens.stop().z - inStop.origin.z) / inStop.direction.z;
+        return std::hypot(inStop.origin.x + t * inStop.direction.x, inStop.origin.y + t * inStop.direction.y);
+    };
+    const Surface& stop = lens.stop();
+    if (stop.curvature == 0 && !stop.isAspheric() && stop.form.isEvenAsphere()) return onPlane();
+    TraceOptions onStop;
+    onStop.begin = lens.stopIndex;
+    onStop.end = lens.stopIndex + 1;
+    onStop.ignoreApertures = true;
+    std::vector<Vec3> path;
+    onStop.path = &path;
+    traceRay(lens, r.ray, TraceDirection::FilmToScene, onStop);
+    if (path.size() < 2) return onPlane();
+    const auto p = into.applyToPoint({path[1].x, path[1].y, path[1].z});
+    return std::hypot(p[0], p[1]);
 }
 
 // The narrowest f-number at which some light still passes on axis. A central obscuration (a reflex
@@ -60,6 +77,16 @@ double narrowestPassingFstop(const LensSystem& lens, const FirstOrder& fo, doubl
         (rimPasses(mid) ? hi : lo) = mid;
     }
     return 1.0 / (2.0 * hi);
+}
+
+// `v` at formatFNumber's digits, the last one rounded up or down (a range's end, toward its inside).
+double atThreeDigits(double v, bool up) {
+    if (!std::isfinite(v) || v <= 0) return v;
+    const double unit = v >= 1000 ? 1 : std::pow(10.0, std::floor(std::log10(v)) - 2);
+    const double steps = v / unit;
+    // A value at three digits already keeps them (2.02 stays 2.02, not 2.03 by a rounding error).
+    const double near = std::round(steps);
+    return (std::fabs(steps - near) < 1e-9 * steps ? near : up ? std::ceil(steps) : std::floor(steps)) * unit;
 }
 
 }  // namespace
@@ -89,6 +116,9 @@ ApertureRange computeApertureRange(const LensSystem& lens, const FirstOrder& fo)
     // A lens slower than kNarrowestFstop at its widest (a micrometre stop, a kilometre focal length) still
     // has that one setting, rather than a range whose ends cross.
     range.fstopMax = std::max(narrowestPassingFstop(lens, fo, lo), range.fstopMin);
+    range.fstopMaxOffered = range.fstopMax < kNarrowestFstop
+                              ? std::max(atThreeDigits(0.98 * range.fstopMax, false), range.fstopMin)
+                              : range.fstopMax;
     bool blocked = false;
     range.stopDiameterMax = 2.0 * stopHeight(lens, fo, lo, range.stopOnly, &blocked);
     return range;
@@ -98,8 +128,7 @@ double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const 
                             double fstop) {
     // A relative tolerance lets the f-number printed for fstopMin be asked for again.
     if (!(fstop >= range.fstopMin * (1 - 1e-9)) || !(fstop <= range.fstopMax))
-        throw OpticsError("f-number " + formatFNumber(fstop) + " is outside this lens's range f/" +
-                          formatFNumber(range.fstopMin) + " to f/" + formatFNumber(range.fstopMax));
+        throw OpticsError("f-number " + formatFNumber(fstop) + " is outside this lens's range " + fstopRangeText(range));
     const double sinTheta = std::min(1.0 / (2.0 * fstop), 1.0 / (2.0 * range.fstopMin));
     bool blocked = false;
     const double h = stopHeight(lens, fo, sinTheta, range.stopOnly, &blocked);
@@ -123,11 +152,18 @@ double fstopForStopDiameter(const LensSystem& lens, const FirstOrder& fo, const 
 std::vector<double> fullStops(double fstopMin, double fstopMax) {
     std::vector<double> stops;
     for (int k = 0; k < 40; ++k) {
-        const double v = std::pow(std::sqrt(2.0), k);
-        if (v > fstopMax * (1 + 1e-12)) break;
+        // Exact powers of two, and those times sqrt 2: pow(sqrt 2, 12) is 64.00000000000006, past f/64.
+        const double v = std::ldexp(k % 2 ? std::sqrt(2.0) : 1.0, k / 2);
+        if (v > fstopMax) break;
         if (v >= fstopMin * (1 - 1e-9)) stops.push_back(v);
     }
     return stops;
+}
+
+std::string fstopRangeText(const ApertureRange& range) {
+    double widest = atThreeDigits(range.fstopMin, true), narrowest = atThreeDigits(range.fstopMaxOffered, false);
+    if (widest > narrowest) widest = narrowest = range.fstopMin;  // one setting (a lens slower than f/64)
+    return "f/" + formatFNumber(widest) + " to f/" + formatFNumber(narrowest);
 }
 
 std::vector<double> fineStops(double fstopMin, double fstopMax, double step) {

@@ -1,6 +1,7 @@
 #pragma once
 // f-number and stop opening. The f-number is defined by the image-side cone for an object at
 // infinity: fstop = 1 / (2 sin theta), theta the angle of the marginal ray converging to F'.
+#include <string>
 #include <vector>
 
 #include "firstorder/FirstOrder.h"
@@ -17,6 +18,11 @@ struct ApertureRange {
     // kNarrowestFstop; fstopMin for a lens slower than that at its widest; for an obscured lens,
     // where its stop closes into the obscuration's shadow (past it no light passes on axis)
     double fstopMax = kNarrowestFstop;
+    // The narrowest f-number lenslab offers (the API's fstop_max, the full stops, the range in
+    // messages): fstopMax, or for an obscured lens 2% inside it at three significant digits (f/12.8
+    // for the reflex lens's 13.08): near the shadow's edge the open ring has next to no width, and
+    // focus and the analyses find no ray through it.
+    double fstopMaxOffered = kNarrowestFstop;
     double stopDiameterMax = 0;   // the stop opening at fstopMin, mm
     // The cones pass the stop alone: the other apertures block the axis (an off-axis section of a
     // design used at its off-axis fields), so the stop sets the f-number.
@@ -39,7 +45,11 @@ double stopDiameterForFstop(const LensSystem& lens, const FirstOrder& fo, const 
 double fstopForStopDiameter(const LensSystem& lens, const FirstOrder& fo, const ApertureRange& range, double diameter);
 
 // Full stops (powers of sqrt 2) from the first at or above fstopMin up to fstopMax, exact values.
-std::vector<double> fullStops(double fstopMin, double fstopMax = 64.0);
+// No default for fstopMax: an obscured lens's range ends before kNarrowestFstop.
+std::vector<double> fullStops(double fstopMin, double fstopMax);
+// The range offered as lenslab writes it ("f/2.02 to f/64"): each end at three significant digits,
+// rounded inward, so that an f-number read off it is one the lens takes (f/6.71 for 6.70196).
+std::string fstopRangeText(const ApertureRange& range);
 // Steps of `step` from fstopMin (rounded up to the step) to fstopMax. Throws OpticsError for a step
 // that is not positive or a list longer than 100000.
 std::vector<double> fineStops(double fstopMin, double fstopMax, double step = 0.1);

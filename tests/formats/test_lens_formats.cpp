@@ -4,10 +4,14 @@
 // cannot catch a field that shows the wrong number.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <vector>
 
 #include "settings/LensAnalysis.h"
 #include "LensJson.h"
+#include "prescription/LensSystem.h"
 #include "prescription/LensTable.h"
 #include "LensText.h"
 
@@ -113,3 +117,46 @@ TEST(LensFormats, FramesFieldsAndWeightsUnderTheirOwnNames) {
     EXPECT_DOUBLE_EQ(design["fields"]["points"][2]["weight"].get<double>(), 0.5);
     EXPECT_DOUBLE_EQ(design["entrance_pupil_diameter"].get<double>(), 10);
 }
+
+// Issue 40, finding 6: the reflex lens (f/6.70 to f/13.08) listed full stops to f/64 and showed its
+// range's narrow end rounded outward (f/13.1), and the API refused them. Every f-number a lens's
+// data offers, in the JSON (its range's ends, its full stops) and in the text, is accepted by
+// analyzeLens, the check behind the API, the renders and the command line.
+TEST(LensFormats, EveryOfferedFNumberIsAccepted) {
+    int lenses = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(LENSLAB_SOURCE_DIR "/lenses")) {
+        if (!isLensFileName(entry.path().string())) continue;
+        ++lenses;
+        const std::string name = entry.path().filename().string();
+        const LensSystem lens = loadLensSystem(entry.path().string());
+        const LensAnalysis widest = analyzeLens(lens, LensSettings{});
+        const nlohmann::json j = lensAnalysisJson(widest);
+        const double fstopMin = j["fstop_min"], fstopMax = j["fstop_max"];
+        std::vector<double> offered = {fstopMin, fstopMax};
+        for (const auto& stop : j["full_stops"]) {
+            EXPECT_GE(stop.get<double>(), fstopMin) << name;
+            EXPECT_LE(stop.get<double>(), fstopMax) << name;
+            offered.push_back(stop);
+        }
+        const std::string text = lensAnalysisText(widest);
+        double shownMin = 0, shownMax = 0;
+        ASSERT_EQ(std::sscanf(text.c_str() + text.find("(range f/"), "(range f/%lf to f/%lf)", &shownMin, &shownMax), 2) << name;
+        offered.push_back(shownMin);
+        offered.push_back(shownMax);
+        for (const double fstop : offered) {
+            LensSettings settings;
+            settings.fstop = Setting{fstop, "fstop"};
+            EXPECT_NO_THROW(analyzeLens(lens, settings)) << name << " at f/" << fstop;
+        }
+    }
+    EXPECT_GE(lenses, 10);
+    // The reflex lens's shadow closes the stop at f/13.08: offered to f/12.8, full stops to f/11.3.
+    const LensSystem reflex = loadLensSystem(LENSLAB_SOURCE_DIR "/lenses/us4666259-ex1-reflex-500mm.zmx");
+    const LensAnalysis widest = analyzeLens(reflex, LensSettings{});
+    EXPECT_NEAR(widest.aperture.fstopMax, 13.0757, 1e-4);
+    const nlohmann::json j = lensAnalysisJson(widest);
+    EXPECT_EQ(j["fstop_max"], 12.8);
+    EXPECT_EQ(j["full_stops"], nlohmann::json::array({8.0, 8 * std::sqrt(2.0)}));
+    EXPECT_NE(lensAnalysisText(widest).find("(range f/6.71 to f/12.8)"), std::string::npos) << lensAnalysisText(widest);
+}
+

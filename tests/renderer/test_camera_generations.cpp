@@ -243,7 +243,7 @@ TEST(CameraGenerations, TheSettingsCheckRefusesWhatTheRenderRefusesWithoutTheWor
     const std::string lens = "\"" + test::lensPath("telephoto.250mm.dat") + "\"";
     EXPECT_EQ(check("Camera \"realistic\" \"string specfile\" " + lens + " \"float fstop\" 8", {}), "(no error)");
     const std::string wide = check("Camera \"realistic\" \"string specfile\" " + lens + " \"float fstop\" 2.1", {});
-    EXPECT_NE(wide.find("s.pbrt:2: Camera \"realistic\": fstop: f-number 2.1 is outside this lens's range f/5.59 to f/64"),
+    EXPECT_NE(wide.find("s.pbrt:2: Camera \"realistic\": fstop: f-number 2.1 is outside this lens's range f/5.6 to f/64"),
               std::string::npos) << wide;
     // The scene's f-number, fine for its own lens, checked against the lens that replaces it.
     CameraOverrides other;
