@@ -62,6 +62,19 @@ json fieldJson(const FieldAnalysis& f, const LensDesignAnalysis& a) {
               {"diffraction_limit", numbers(a.diffractionLimit)}}}};
 }
 
+// Third-order sums, mm: S_I to S_V and the primary colours (analysis/SeidelSums.h).
+json seidelTermsJson(const SeidelTerms& t) {
+    return {{"spherical", t.spherical}, {"coma", t.coma}, {"astigmatism", t.astigmatism}, {"petzval", t.petzval},
+            {"distortion", t.distortion}, {"axial_colour", t.axialColour}, {"lateral_colour", t.lateralColour}};
+}
+
+json seidelJson(const SeidelSums& s) {
+    json surfaces = json::array();
+    for (const SeidelTerms& t : s.surfaces) surfaces.push_back(seidelTermsJson(t));
+    return {{"field_deg", s.fieldDegrees}, {"stop_radius", s.marginalHeight}, {"lagrange_invariant", s.lagrangeInvariant},
+            {"total", seidelTermsJson(s.total)}, {"surfaces", surfaces}};
+}
+
 json focalShiftJson(const std::vector<FocalShiftSample>& samples) {
     json out = {{"wavelength_nm", json::array()}, {"image_z", json::array()}, {"shift_mm", json::array()}};
     for (const FocalShiftSample& s : samples) {
@@ -154,6 +167,7 @@ json designAnalysisJson(const LensDesignAnalysis& a) {
          {{"distortion", distortionCurve},
           {"relative_illumination", illumination},
           {"chromatic_focal_shift", focalShiftJson(a.focalShiftSpectrum)}}},
+        {"seidel_sums", a.seidel ? seidelJson(*a.seidel) : json(nullptr)},
     };
 }
 

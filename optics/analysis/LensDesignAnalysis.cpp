@@ -372,6 +372,7 @@ LensDesignAnalysis analyzeLensDesign(const LensSystem& lensAsBuilt, const Design
     std::vector<double> spectrum;
     for (double nm = 400; nm <= 700; nm += 10) spectrum.push_back(nm);
     out.focalShiftSpectrum = chromaticFocalShift(lensP, objectZ, spectrum);
+    out.seidel = seidelSums(lensP, out.largestFieldDegrees.value_or(0), objectZ);
     return out;
 }
 

@@ -14,6 +14,7 @@
 #include "analysis/FieldCurvature.h"
 #include "analysis/RayFan.h"
 #include "analysis/RelativeIllumination.h"
+#include "analysis/SeidelSums.h"
 #include "analysis/SpotDiagram.h"
 #include "analysis/WavefrontMap.h"
 #include "settings/LensAnalysis.h"
@@ -108,6 +109,9 @@ struct LensDesignAnalysis {
     std::vector<IlluminationSample> illumination;                   // film radius 0 to the largest field's image
     std::vector<FocalShiftSample> focalShift;          // at each analysis wavelength
     std::vector<FocalShiftSample> focalShiftSpectrum;  // 400 to 700 nm every 10 nm
+    // Third-order sums at the largest field (on axis where there is none); none for a lens the
+    // paraxial theory does not cover (decentred, mirrors, surface forms beyond the even asphere).
+    std::optional<SeidelSums> seidel;
 };
 
 // The inputs' own check (counts, ranges); SettingError naming the input's source. The lens settings
