@@ -178,7 +178,8 @@ std::vector<DesignVariable> variablesFromText(const std::string& text, const Len
             const DesignVariable v{VariableKind::Curvature, i};
             if (!table.rows[i].coordinateBreak && bends(i) && applies(v)) out.push_back(v);
         }
-        if (imageDistance(table)) out.push_back({VariableKind::Thickness, rows - 1});
+        const std::optional<double> distance = imageDistance(table);
+        if (distance && *distance > 0) out.push_back({VariableKind::Thickness, rows - 1});
         return out;
     }
     std::stringstream items(text);
@@ -228,7 +229,8 @@ ToleranceInputs defaultToleranceInputs(const LensTable& table) {
     in.spec.decentre = 0.01;
     in.spec.tilt = 0.01;
     in.spec.index = 5e-4;
-    if (imageDistance(table)) in.compensators.push_back({VariableKind::Thickness, int(table.rows.size()) - 1});
+    const std::optional<double> distance = imageDistance(table);
+    if (distance && *distance > 0) in.compensators.push_back({VariableKind::Thickness, int(table.rows.size()) - 1});
     return in;
 }
 

@@ -27,7 +27,7 @@ MeritFunction meritFromJson(const nlohmann::json& j, const LensTable& table);
 
 // "curvature:1-6,thickness:6,conic:3,asphere4:5,index:1,abbe:1" (surfaces from 1; asphereN: the r^N
 // term; a range covers every surface it names that the kind applies to). "all" or empty: every curvature
-// of a refracting surface and the image distance. Throws DesignInputError.
+// of a refracting surface and the image distance (where the table states one). Throws DesignInputError.
 std::vector<DesignVariable> variablesFromText(const std::string& text, const LensTable& table);
 
 // {"radius": 0.001, "power": 1, "astigmatism": 0.5, "thickness": 0.02, "decentre": 0.01, "tilt": 0.01,
@@ -45,7 +45,7 @@ struct ToleranceInputs {
 ToleranceInputs toleranceInputsFromJson(const nlohmann::json& j, const LensTable& table, const MeritFunction& merit);
 
 // The default tolerances of issue-style designs: radius 0.1%, thickness 0.02 mm, decentre 0.01 mm,
-// tilt 0.01 deg, index 5e-4, the image distance as compensator (where the table has one).
+// tilt 0.01 deg, index 5e-4, the image distance as compensator (where the table states one).
 ToleranceInputs defaultToleranceInputs(const LensTable& table);
 
 nlohmann::json meritEvaluationJson(const MeritFunction& merit, const MeritEvaluation& e);

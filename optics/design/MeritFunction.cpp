@@ -203,14 +203,18 @@ void checkValidity(const TracedLens& context, const MeritFunction& merit) {
         const LensSystem& at = context.lensAt(wavelength);
         const std::optional<FieldAim> aim = context.axialAim(wavelength);
         if (!aim) throw InvalidLens("no axial ray reaches the stop at " + formatNumber(wavelength) + " nm");
+        // Clear apertures may vignette the axial beam (a table's stop wider than its elements pass):
+        // that is the lens as stated, not a fault; the surfaces themselves must pass the ray.
+        TraceOptions surfacesOnly;
+        surfacesOnly.ignoreApertures = true;
         for (const auto& [px, py] : {std::pair{0.0, 1.0}, std::pair{1.0, 0.0}}) {
             constexpr double kRim = 1 - 1e-6;
             const std::optional<Ray> in = aimedRay(at, *aim, kRim * px, kRim * py);
-            const TraceResult out = in ? traceRay(at, *in, TraceDirection::SceneToFilm) : TraceResult{};
+            const TraceResult out = in ? traceRay(at, *in, TraceDirection::SceneToFilm, surfacesOnly) : TraceResult{};
             if (!in || !out.ok())
                 throw InvalidLens("the axial marginal ray at " + formatNumber(wavelength) + " nm does not pass" +
                                   (out.surface >= 0 ? " surface " + std::to_string(out.surface + 1) : std::string()) +
-                                  " (total internal reflection or a clear aperture in the way)");
+                                  " (total internal reflection, or it misses the surface)");
         }
     }
 }
@@ -452,15 +456,23 @@ MeritFunction defaultMerit(const LensTable& table) {
         merit.wavelengths = table.wavelengths;
         merit.weights = table.wavelengthWeights;
     }
+    // A table that states no image distance (pbrt's tables end at gap 0: the film is placed by
+    // focusing) is measured at its paraxial focus.
+    const std::optional<double> distance = imageDistance(table);
+    if (!distance || *distance <= 0) merit.imagePlane = MeritImagePlane::Paraxial;
     const LensSystem lens = buildLensSystem(table);
     const FirstOrder fo = computeFirstOrder(lens);
     std::vector<std::pair<double, double>> fields;  // degrees, weight
     if (table.fields.type == FieldType::ObjectAngle && !table.fields.points.empty()) {
         for (const FieldPoint& p : table.fields.points) fields.push_back({std::hypot(p.x, p.y), p.weight});
     } else {
+        // A lens that defines no field (an objective used on its axis) is optimised on its axis.
         const FieldOfView view = lensFieldOfView(lens);
-        if (!view.largestDegrees) throw OpticsError("the lens defines no field to optimise its spots over");
-        for (double fraction : {0.0, 0.7, 1.0}) fields.push_back({fraction * *view.largestDegrees, 1.0});
+        if (view.largestDegrees) {
+            for (double fraction : {0.0, 0.7, 1.0}) fields.push_back({fraction * *view.largestDegrees, 1.0});
+        } else {
+            fields.push_back({0.0, 1.0});
+        }
     }
     for (const auto& [field, weight] : fields) {
         MeritOperand spot;

@@ -57,10 +57,11 @@ MeritEvaluation evaluateMerit(const LensTable& table, const MeritFunction& merit
 MeritEvaluation evaluateMeritAtImageDistance(const MeritEvaluation& base, double imageDistance, const MeritFunction& merit);
 
 // The design's own figures as a merit: the polychromatic RMS spot at each of the table's fields
-// (0, 0.7 and 1 of the lens's largest field when it lists none) with their weights, at its wavelengths
-// and weights (F, d, C when it lists none); the EFL held at its present value; glass at least 1 mm
-// thick at the centre and 0.5 mm at the edge, air gaps at least 0 at both. Throws OpticsError for a
-// lens without a focal length or a field.
+// (0, 0.7 and 1 of the lens's largest field when it lists none; the axis alone for a lens that defines
+// no field) with their weights, at its wavelengths and weights (F, d, C when it lists none), on its
+// image plane (its paraxial focus where the table states no image distance); the EFL held at its
+// present value; glass at least 1 mm thick at the centre and 0.5 mm at the edge, air gaps at least 0
+// at both. Throws OpticsError for a lens without a focal length.
 MeritFunction defaultMerit(const LensTable& table);
 
 // The operands' residuals' sum of squares.
