@@ -76,6 +76,7 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
              "(default 4)");
     p.option("--keep-days", "D", "finished renders are deleted after D days (default 30; 0: no age limit)");
     p.option("--keep-gb", "GB", "finished renders' files kept at most, oldest deleted first (default 2; 0: no limit)");
+    p.option("--keep-renders", "N", "finished renders kept at most, oldest deleted first (default 10000; 0: no limit)");
     p.option("--max-data-gb", "GB", "data folder at most: past it uploads and renders are refused with 507 "
              "(default 10; 0: no quota)");
     p.option("--token-file", "FILE", "API token for requests that write or spend CPU; made on first start "
@@ -120,6 +121,7 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     c.retention.keepDays = boundedNumber(p, "--keep-days", c.retention.keepDays, 0, 36500);
     c.retention.keepBytes = static_cast<std::uintmax_t>(
         boundedNumber(p, "--keep-gb", static_cast<double>(c.retention.keepBytes) / (1 << 30), 0, 1e6) * (1 << 30));
+    c.retention.keepCount = boundedInteger(p, "--keep-renders", c.retention.keepCount, 0, 100000000);
     c.maxDataBytes = static_cast<std::uintmax_t>(
         boundedNumber(p, "--max-data-gb", static_cast<double>(c.maxDataBytes) / (1 << 30), 0, 1e6) * (1 << 30));
     c.maxDataBytesGiven = p.has("--max-data-gb");

@@ -2,7 +2,8 @@
 // no build step and no external resources: lens.js (lenses and their controls), renders.js (renders
 // and their history), viewer.js (exposure, comparison, zoom), report.js (the report build),
 // token.js (the API token field), editor.js (the live prescription editor), analysis.js (the
-// designer's analysis of the lens shown), glass-catalogs.js (uploaded glass catalogs).
+// designer's analysis of the lens shown), glass-catalogs.js (uploaded glass catalogs), design.js
+// (optimise and tolerance jobs).
 import { showMessage } from "./api.js";
 import { setUpTokenField } from "./token.js";
 import { loadLenses, setUpLensPanel } from "./lens.js";
@@ -10,6 +11,7 @@ import { followReport, setUpReport } from "./report.js";
 import { loadHistory, loadScenes, setUpRenderPanel } from "./renders.js";
 import { setUpViewer } from "./viewer.js";
 import { setUpEditor } from "./editor.js";
+import { setUpDesign } from "./design.js";
 import { loadGlassCatalogs } from "./glass-catalogs.js";
 
 async function start() {
@@ -18,6 +20,7 @@ async function start() {
   setUpRenderPanel();
   setUpViewer();
   setUpReport();
+  setUpDesign();
   followReport();
   try {
     await setUpEditor();

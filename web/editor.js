@@ -186,6 +186,11 @@ function deleteRow(i) {
   edit(state.rows.filter((_, k) => k !== i));
 }
 
+// The optimiser's lens (design.js) comes in as one edit: the editor's Undo returns to the lens before.
+export const editedRows = () => structuredClone(state.rows);
+export const editorLens = () => state.lensId;
+export function replaceRows(rows) { edit(rows); }
+
 function undo() { if (state.history.canUndo) edit(state.history.undo(), false); }
 function redo() { if (state.history.canRedo) edit(state.history.redo(), false); }
 

@@ -2,16 +2,9 @@
 // brightest first, as a table and as a plot of its blur on the film against its intensity beside
 // the direct image (both logarithmic: the dangerous ghosts sit at the top left).
 import { $, fixed } from "./api.js";
+import { svg } from "./svg.js";
 
-const SVG = "http://www.w3.org/2000/svg";
 const PLOT = { width: 480, height: 260, left: 56, right: 12, top: 12, bottom: 40 };
-
-function svg(name, attributes, text) {
-  const e = document.createElementNS(SVG, name);
-  for (const [k, v] of Object.entries(attributes)) e.setAttribute(k, v);
-  if (text !== undefined) e.textContent = text;
-  return e;
-}
 
 // Decades spanning the values, for a logarithmic axis.
 function decades(values) {

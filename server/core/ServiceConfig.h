@@ -49,6 +49,7 @@ struct AccessPolicy {
 struct RetentionPolicy {
     double keepDays = 30;                   // 0: no age limit
     std::uintmax_t keepBytes = 2ull << 30;  // finished renders' files together; 0: no size limit
+    int keepCount = 10000;                  // finished renders' records; 0: no count limit
 };
 
 struct ServiceConfig {

@@ -137,23 +137,27 @@ JobView JobQueue::viewOf(LiveJob& job) {
 }
 
 JobQueue::Cancel JobQueue::cancel(const std::string& id) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    auto it = live_.find(id);
-    if (it == live_.end()) return store_.find(id) ? Cancel::AlreadyFinished : Cancel::NotFound;
-    const std::shared_ptr<LiveJob> job = it->second;
-    auto waitingAt = std::find(waiting_.begin(), waiting_.end(), job);
-    if (waitingAt == waiting_.end()) {
-        job->cancel = true;
-        return Cancel::Requested;
-    }
-    waiting_.erase(waitingAt);
     {
-        std::lock_guard<std::mutex> jobLock(job->mutex);
-        job->record.state = JobState::Cancelled;
-        job->record.finished = secondsSinceEpoch();
-        saveOrLog(store_, job->record);  // out of the queue already: the cancel holds in memory
+        std::lock_guard<std::mutex> lock(mutex_);
+        auto it = live_.find(id);
+        if (it == live_.end()) return store_.find(id) ? Cancel::AlreadyFinished : Cancel::NotFound;
+        const std::shared_ptr<LiveJob> job = it->second;
+        auto waitingAt = std::find(waiting_.begin(), waiting_.end(), job);
+        if (waitingAt == waiting_.end()) {
+            job->cancel = true;
+            return Cancel::Requested;
+        }
+        waiting_.erase(waitingAt);
+        {
+            std::lock_guard<std::mutex> jobLock(job->mutex);
+            job->record.state = JobState::Cancelled;
+            job->record.finished = secondsSinceEpoch();
+            saveOrLog(store_, job->record);  // out of the queue already: the cancel holds in memory
+        }
+        live_.erase(it);
     }
-    live_.erase(it);
+    // A job cancelled while waiting has finished too: submit and cancel must not pile up records.
+    runAfterJob(id);
     return Cancel::Cancelled;
 }
 
@@ -262,16 +266,20 @@ void JobQueue::work() {
             runJob(job);
         }
         finish(job);
-        std::function<void()> afterJob;
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            afterJob = afterJob_;
-        }
-        try {
-            if (afterJob) afterJob();
-        } catch (const std::exception& e) {
-            std::cerr << "lenslab serve: after render " << job->record.id << ": " << e.what() << "\n";
-        }
+        runAfterJob(job->record.id);
+    }
+}
+
+void JobQueue::runAfterJob(const std::string& id) {
+    std::function<void()> afterJob;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        afterJob = afterJob_;
+    }
+    try {
+        if (afterJob) afterJob();
+    } catch (const std::exception& e) {
+        std::cerr << "lenslab serve: after render " << id << ": " << e.what() << "\n";
     }
 }
 
@@ -291,6 +299,7 @@ void JobQueue::runJob(const std::shared_ptr<LiveJob>& job) {
         std::lock_guard<std::mutex> lock(job->mutex);
         job->record.state = JobState::Done;
         job->record.stats = std::move(images.stats);
+        job->record.imageBytes = static_cast<std::int64_t>(images.png.size() + images.exr.size());
     } catch (const RenderCancelled&) {
         bool stopping;
         {

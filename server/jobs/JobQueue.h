@@ -66,7 +66,8 @@ public:
     // Bytes of a finished job's files on disk.
     std::uintmax_t imageBytes(const std::string& id) const;
 
-    // Called on a worker thread after each job has finished and been saved (e.g. retention).
+    // Called after each job has finished and been saved (e.g. retention): on a worker thread after a
+    // render, on the cancelling thread for a job cancelled while it waited.
     void setAfterJob(std::function<void()> afterJob);
 
     // The partial image of a running job as PNG (nullopt before its first tile or when not running).
@@ -90,6 +91,7 @@ private:
     void work();
     void runJob(const std::shared_ptr<LiveJob>& job);
     void finish(const std::shared_ptr<LiveJob>& job);
+    void runAfterJob(const std::string& id);  // afterJob_, its errors logged
 
     JobStore& store_;
     JobRenderer& renderer_;

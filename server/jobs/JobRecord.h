@@ -2,6 +2,7 @@
 // One render job as the database keeps it.
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -22,6 +23,7 @@ struct JobRecord {
     bool interrupted = false;  // the service stopped abruptly while it rendered
     int tilesDone = 0, tilesTotal = 0;
     nlohmann::json stats = nlohmann::json::object();
+    std::int64_t imageBytes = 0;  // done: its PNG and EXR on disk, for the retention's size limit
 };
 
 }  // namespace lenslab

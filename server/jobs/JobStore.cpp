@@ -4,7 +4,11 @@ namespace lenslab {
 
 namespace {
 
-const char* kColumns = "id, request, state, created, started, finished, error, interrupted, tiles_done, tiles_total, stats";
+const char* kColumns =
+    "id, request, state, created, started, finished, error, interrupted, tiles_done, tiles_total, stats, image_bytes";
+const char* kFinished = "state IN ('done', 'failed', 'cancelled')";
+// Oldest finish first; a job marked interrupted has no finish time and goes first.
+const char* kByFinish = " ORDER BY finished, created";
 
 JobRecord readJob(const SqlRow& row) {
     JobRecord j;
@@ -19,7 +23,14 @@ JobRecord readJob(const SqlRow& row) {
     j.tilesDone = static_cast<int>(row.integer(8));
     j.tilesTotal = static_cast<int>(row.integer(9));
     j.stats = nlohmann::json::parse(row.text(10), nullptr, false);
+    j.imageBytes = row.integer(11);
     return j;
+}
+
+std::vector<std::string> ids(Database& database, const std::string& sql, const std::vector<SqlValue>& parameters) {
+    std::vector<std::string> found;
+    database.run(sql, parameters, [&](const SqlRow& row) { found.push_back(row.text(0)); });
+    return found;
 }
 
 SqlValue optionalValue(const std::optional<double>& v) { return v ? SqlValue(*v) : SqlValue(nullptr); }
@@ -31,22 +42,28 @@ JobStore::JobStore(Database& database) : database_(database) {
         "CREATE TABLE IF NOT EXISTS jobs (id TEXT PRIMARY KEY, request TEXT NOT NULL, state TEXT NOT NULL, "
         "created REAL NOT NULL, started REAL, finished REAL, error TEXT NOT NULL DEFAULT '', "
         "interrupted INTEGER NOT NULL DEFAULT 0, tiles_done INTEGER NOT NULL DEFAULT 0, "
-        "tiles_total INTEGER NOT NULL DEFAULT 0, stats TEXT NOT NULL DEFAULT '{}')");
+        "tiles_total INTEGER NOT NULL DEFAULT 0, stats TEXT NOT NULL DEFAULT '{}', image_bytes INTEGER)");
+    bool measured = false;
+    database_.run("SELECT name FROM pragma_table_info('jobs') WHERE name = 'image_bytes'", {},
+                  [&](const SqlRow&) { measured = true; });
+    if (!measured) database_.run("ALTER TABLE jobs ADD COLUMN image_bytes INTEGER");  // NULL: not measured yet
+    database_.run("CREATE INDEX IF NOT EXISTS jobs_by_finish ON jobs (finished, created)");
 }
 
 void JobStore::insert(const JobRecord& j) {
-    database_.run(std::string("INSERT INTO jobs (") + kColumns + ") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+    database_.run(std::string("INSERT INTO jobs (") + kColumns + ") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                   {j.id, j.request.dump(), std::string(jobStateName(j.state)), j.created, optionalValue(j.started),
                    optionalValue(j.finished), j.error, std::int64_t(j.interrupted), std::int64_t(j.tilesDone),
-                   std::int64_t(j.tilesTotal), j.stats.dump()});
+                   std::int64_t(j.tilesTotal), j.stats.dump(), j.imageBytes});
 }
 
 void JobStore::save(const JobRecord& j) {
     database_.run(
         "UPDATE jobs SET state = ?, started = ?, finished = ?, error = ?, interrupted = ?, tiles_done = ?, "
-        "tiles_total = ?, stats = ? WHERE id = ?",
+        "tiles_total = ?, stats = ?, image_bytes = ? WHERE id = ?",
         {std::string(jobStateName(j.state)), optionalValue(j.started), optionalValue(j.finished), j.error,
-         std::int64_t(j.interrupted), std::int64_t(j.tilesDone), std::int64_t(j.tilesTotal), j.stats.dump(), j.id});
+         std::int64_t(j.interrupted), std::int64_t(j.tilesDone), std::int64_t(j.tilesTotal), j.stats.dump(),
+         j.imageBytes, j.id});
 }
 
 std::optional<JobRecord> JobStore::find(const std::string& id) const {
@@ -70,12 +87,38 @@ std::vector<JobRecord> JobStore::queued() const {
     return jobs;
 }
 
-std::vector<JobRecord> JobStore::finished() const {
-    std::vector<JobRecord> jobs;
-    database_.run(std::string("SELECT ") + kColumns +
-                      " FROM jobs WHERE state IN ('done', 'failed', 'cancelled') ORDER BY finished, created",
-                  {}, [&](const SqlRow& row) { jobs.push_back(readJob(row)); });
-    return jobs;
+std::vector<std::string> JobStore::finishedBefore(double time) const {
+    return ids(database_, std::string("SELECT id FROM jobs WHERE ") + kFinished + " AND COALESCE(finished, created) < ?" +
+                              kByFinish, {time});
+}
+
+std::vector<std::string> JobStore::oldestFinished(int count) const {
+    return ids(database_, std::string("SELECT id FROM jobs WHERE ") + kFinished + kByFinish + " LIMIT ?",
+               {std::int64_t(count)});
+}
+
+std::vector<std::string> JobStore::finishedBeyondBytes(std::int64_t keptBytes) const {
+    // Each job's bytes added up from the newest: those whose sum passes the limit go.
+    return ids(database_,
+               std::string("SELECT id FROM (SELECT id, finished, created, SUM(COALESCE(image_bytes, 0)) OVER "
+                           "(ORDER BY finished DESC, created DESC ROWS UNBOUNDED PRECEDING) AS newer FROM jobs WHERE ") +
+                   kFinished + ") WHERE newer > ?" + kByFinish,
+               {keptBytes});
+}
+
+int JobStore::finishedCount() const {
+    int count = 0;
+    database_.run(std::string("SELECT COUNT(*) FROM jobs WHERE ") + kFinished, {},
+                  [&](const SqlRow& row) { count = static_cast<int>(row.integer(0)); });
+    return count;
+}
+
+std::vector<std::string> JobStore::withoutImageBytes() const {
+    return ids(database_, "SELECT id FROM jobs WHERE image_bytes IS NULL", {});
+}
+
+void JobStore::setImageBytes(const std::string& id, std::int64_t bytes) {
+    database_.run("UPDATE jobs SET image_bytes = ? WHERE id = ?", {bytes, id});
 }
 
 bool JobStore::remove(const std::string& id) { return database_.run("DELETE FROM jobs WHERE id = ?", {id}) > 0; }

@@ -4,7 +4,7 @@
 // /api/lenses/{id}/ghosts: its ghost analysis (`lenslab analyze --ghosts --json`) at fstop and
 // focus. The inputs are checked first (at most 16 fields and 16 wavelengths; a malformed or
 // out-of-range list is 400 naming its parameter); the analyses run in the heavy-work pool and are
-// cached by the lens's content and the inputs; settings the lens cannot take are optics' 422 as
+// cached by the lens's content, the glass catalogs and the inputs; settings the lens cannot take are optics' 422 as
 // elsewhere.
 #include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
@@ -73,7 +73,7 @@ void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
         if (views && *views != "html") throw HttpError(400, "query parameter views: html or absent");
         const DesignAnalysisInputs inputs = analysisInputs(req);
         // Cached without the lens's id and name: two uploads of one table share it.
-        const std::string key = "analysis|" + lens->digest + "|" + inputsKey(inputs) + (views ? "|views" : "");
+        const std::string key = "analysis|" + lensContentKey(parts, *lens) + "|" + inputsKey(inputs) + (views ? "|views" : "");
         const auto analysis = parts.work.cachedOrComputed(parts.analyses, key, clientOf(req), [&] {
             const LensDesignAnalysis a = analyzeLensDesign(lens->system, inputs);
             json body = designAnalysisJson(a);
@@ -91,7 +91,7 @@ void addAnalysisRoutes(httplib::Server& server, ServiceParts& parts) {
         DesignAnalysisInputs inputs;
         inputs.lens = settings;
         const auto ghosts = parts.work.cachedOrComputed(
-            parts.analyses, "ghosts|" + lens->digest + "|" + inputsKey(inputs), clientOf(req), [&] {
+            parts.analyses, "ghosts|" + lensContentKey(parts, *lens) + "|" + inputsKey(inputs), clientOf(req), [&] {
                 return textBytes(ghostAnalysisJson(analyzeGhosts(analyzeLens(lens->system, settings)))
                                      .dump(-1, ' ', false, json::error_handler_t::replace));
             });

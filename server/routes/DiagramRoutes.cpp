@@ -1,5 +1,6 @@
 // GET /api/lenses/{id}/diagram.png: the lens cross-section drawn on request (in the heavy-work pool)
-// and cached by its parameters (lens, mode, f-number, focus, wavelength, colour fans, field height, size).
+// and cached by its parameters (lens and glass catalogs, mode, f-number, focus, wavelength, colour
+// fans, field height, size).
 #include <charconv>
 #include <cstdio>
 #include <optional>
@@ -73,7 +74,8 @@ void addDiagramRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Get(R"(/api/lenses/([^/]+)/diagram\.png)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
         const DiagramOptions options = diagramOptions(req);
-        const auto png = parts.work.cachedOrComputed(parts.diagrams, cacheKey(lens->id, options), clientOf(req),
+        const std::string key = cacheKey(lens->id + "|" + parts.glassCatalogs.digest(), options);
+        const auto png = parts.work.cachedOrComputed(parts.diagrams, key, clientOf(req),
                                                      [&] { return drawLensDiagramPng(lens->system, options); });
         replyBytes(res, *png, "image/png");
         res.set_header("Cache-Control", "max-age=300");

@@ -93,6 +93,18 @@ void addEventRoutes(httplib::Server& server, ServiceParts& parts) {
         });
     });
 
+    server.Get(R"(/api/design-jobs/([^/]+)/events)", [&server, &parts, slots](const httplib::Request& req, httplib::Response& res) {
+        const std::string id = findDesignJob(parts, req.matches[1]).status["id"];
+        std::optional<std::uint64_t> lastVersion;
+        streamEvents(server, *slots, req, res, [&parts, id, lastVersion](bool changedOnly) mutable -> std::pair<json, bool> {
+            const auto job = parts.designJobs.find(id);
+            if (!job) return {json{{"id", id}, {"state", "deleted"}}, true};
+            if (changedOnly && lastVersion == job->version && !job->over) return {nullptr, false};
+            lastVersion = job->version;
+            return {job->status, job->over};
+        });
+    });
+
     server.Get("/api/report/events", [&server, &parts, slots](const httplib::Request& req, httplib::Response& res) {
         std::string lastSent;
         streamEvents(server, *slots, req, res, [&parts, lastSent](bool changedOnly) mutable -> std::pair<json, bool> {

@@ -114,8 +114,6 @@ void addGlassCatalogRoutes(httplib::Server& server, ServiceParts& parts) {
         const bool removed = parts.work.run(
             [&] { return parts.glassCatalogs.remove(id, [&](const std::string& name) { return lensesUsing(parts.lenses, name); }); });
         if (!removed) throw HttpError(404, "no glass catalog with id '" + id + "'");
-        // Previews are cached by their text, and a glass name in one may now find another glass or none.
-        parts.analyses.forget("preview|");
         replyJson(res, 200, {{"deleted", id}});
     });
 }

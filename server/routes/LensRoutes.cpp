@@ -49,6 +49,16 @@ std::shared_ptr<const StoredLens> findLens(const ServiceParts& parts, const std:
     return lens;
 }
 
+LensTable storedTable(const StoredLens& lens) {
+    LensTable table = readLensTable(lens.path, lens.system.layout);
+    table.name = lens.name;
+    return table;
+}
+
+std::string lensContentKey(const ServiceParts& parts, const StoredLens& lens) {
+    return lens.digest + "|" + parts.glassCatalogs.digest();
+}
+
 void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Get("/api/lenses", [&parts](const httplib::Request&, httplib::Response& res) {
         json list = json::array();
@@ -92,12 +102,15 @@ void addLensRoutes(httplib::Server& server, ServiceParts& parts) {
 
     server.Delete(R"(/api/lenses/([^/]+))", [&parts](const httplib::Request& req, httplib::Response& res) {
         const std::string id = findLens(parts, req.matches[1])->id;
-        // Its renders would fail when they start: the client hears it now instead.
-        if (const auto renders = parts.jobs.liveJobsWithLens(id); !renders.empty())
-            throw HttpError(409, "lens '" + id + "' is used by " + std::to_string(renders.size()) +
-                                     " queued or running render(s) (" + renders.front() +
-                                     (renders.size() > 1 ? ", ..." : "") + "); cancel them first (DELETE /api/renders/{id})");
-        switch (parts.lenses.remove(id)) {
+        // Its renders would fail when they start: the client hears it now instead. Checked with
+        // submissions held off, so no render can take the lens between the check and the deletion.
+        const auto checkUnused = [&] {
+            if (const auto renders = parts.jobs.liveJobsWithLens(id); !renders.empty())
+                throw HttpError(409, "lens '" + id + "' is used by " + std::to_string(renders.size()) +
+                                         " queued or running render(s) (" + renders.front() +
+                                         (renders.size() > 1 ? ", ..." : "") + "); cancel them first (DELETE /api/renders/{id})");
+        };
+        switch (parts.lenses.remove(id, checkUnused)) {
             case LensStore::Removal::Removed:
                 parts.diagrams.forget(id + "|");
                 replyJson(res, 200, {{"deleted", id}});

@@ -155,11 +155,12 @@ void preview(ServiceParts& parts, const httplib::Request& req, httplib::Response
         const LensSettings settings = bodyLensSettings(body);
         const DiagramOptions drawing = previewDiagramOptions(body, settings);
         const DesignAnalysisInputs inputs = previewAnalysisInputs(body, settings);
-        const auto answer = parts.work.cachedOrComputed(parts.analyses, "preview|" + contentDigest(req.body), clientOf(req),
-                                                        [&] {
-                                                            const auto catalogsKept = parts.glassCatalogs.holdCatalogs();
-                                                            return textBytes(previewJson(table, drawing, inputs));
-                                                        });
+        // The glass names in the body find the glasses of the catalogs held now.
+        const std::string key = "preview|" + parts.glassCatalogs.digest() + "|" + contentDigest(req.body);
+        const auto answer = parts.work.cachedOrComputed(parts.analyses, key, clientOf(req), [&] {
+            const auto catalogsKept = parts.glassCatalogs.holdCatalogs();
+            return textBytes(previewJson(table, drawing, inputs));
+        });
         res.status = 200;
         res.set_content(reinterpret_cast<const char*>(answer->data()), answer->size(), "application/json");
     } catch (const LensTableError& e) {
@@ -192,12 +193,6 @@ std::string downloadName(const StoredLens& lens, const char* extension) {
     const std::string stem = lensFileStem(lens.name);
     const std::string& name = !stem.empty() ? stem : !lens.description.empty() ? lens.description : lens.id;
     return name + extension;
-}
-
-LensTable storedTable(const StoredLens& lens) {
-    LensTable table = readLensTable(lens.path, lens.system.layout);
-    table.name = lens.name;
-    return table;
 }
 
 }  // namespace

@@ -30,6 +30,8 @@ JobView findJob(const ServiceParts& parts, const std::string& id) {
 
 void submit(ServiceParts& parts, const RenderRequest& request, httplib::Response& res) {
     parts.quota.checkRoomForWrite();
+    // From the lens's lookup until the job is queued: a deletion of the lens waits, then sees the job.
+    const auto lensKept = parts.lenses.holdLenses();
     const RenderJobInput input = resolveRenderJob(newRandomIdentifier("render-"), request, parts.lenses, parts.scenes, parts.renderChecks);
     try {
         const JobRecord record = parts.jobs.submit(input);

@@ -4,6 +4,7 @@
 
 #include "storage/DataFolderQuota.h"
 #include "storage/ResultCache.h"
+#include "jobs/DesignJobs.h"
 #include "jobs/JobQueue.h"
 #include "storage/GlassCatalogStore.h"
 #include "storage/LensStore.h"
@@ -26,12 +27,23 @@ struct ServiceParts {
     WorkPool& work;          // where heavy work runs (analyses, previews, diagrams, uploads, reports)
     JobQueue& jobs;
     ReportJob& report;
+    DesignJobs& designJobs;  // optimisations and tolerance analyses
     DataFolderQuota& quota;  // checked before uploads and render submissions
     double startedAt;  // seconds since the epoch
 };
 
 // The lens a URL names: HttpError 400 for an id outside the safe alphabet, 404 for an unknown one.
 std::shared_ptr<const StoredLens> findLens(const ServiceParts& parts, const std::string& id);
+
+// A stored lens's table as its file holds it, named as the page names the lens.
+LensTable storedTable(const StoredLens& lens);
+
+// The design job a URL names: HttpError 400 for an id outside the safe alphabet, 404 for an unknown one.
+DesignJobView findDesignJob(const ServiceParts& parts, const std::string& id);
+
+// What a result computed from a stored lens depends on besides the request's settings: the table's
+// text (two uploads of one table share it) and the glass catalogs its glasses were looked up in.
+std::string lensContentKey(const ServiceParts& parts, const StoredLens& lens);
 
 // Who is asking, for the heavy-work pool's per-client share: the client's address.
 inline const std::string& clientOf(const httplib::Request& req) { return req.remote_addr; }
@@ -45,6 +57,7 @@ void addGlassCatalogRoutes(httplib::Server& server, ServiceParts& parts);
 void addDiagramRoutes(httplib::Server& server, ServiceParts& parts);
 void addRenderRoutes(httplib::Server& server, ServiceParts& parts);
 void addReportRoutes(httplib::Server& server, ServiceParts& parts);
+void addDesignRoutes(httplib::Server& server, ServiceParts& parts);  // optimise and tolerance jobs
 void addEventRoutes(httplib::Server& server, ServiceParts& parts);
 void addImageRoutes(httplib::Server& server, ServiceParts& parts);
 void addStaticRoutes(httplib::Server& server, ServiceParts& parts);  // last: it owns "/"

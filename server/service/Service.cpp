@@ -67,8 +67,9 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
       renderer_(std::move(renderer)),
       jobs_(jobStore_, *renderer_, config_.limits, (fs::path(config_.dataDir) / "renders").string()),
       report_(work_),
+      designJobs_(work_),
       quota_(config_.dataDir, dataQuota(config_), [this] { collectFinishedRenders(); }),
-      parts_{config_, lenses_, glassCatalogs_, scenes_, renderChecks_, diagrams_, analyses_, work_, jobs_, report_, quota_, secondsSinceEpoch()},
+      parts_{config_, lenses_, glassCatalogs_, scenes_, renderChecks_, diagrams_, analyses_, work_, jobs_, report_, designJobs_, quota_, secondsSinceEpoch()},
       http_(config_, accessLog_) {
     recoverJobs();
     jobs_.setAfterJob([this] { collectFinishedRenders(); });
@@ -81,6 +82,7 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
     addDiagramRoutes(http_.routes(), parts_);
     addRenderRoutes(http_.routes(), parts_);
     addReportRoutes(http_.routes(), parts_);
+    addDesignRoutes(http_.routes(), parts_);
     addEventRoutes(http_.routes(), parts_);
     addImageRoutes(http_.routes(), parts_);
     addStaticRoutes(http_.routes(), parts_);
@@ -93,6 +95,8 @@ void Service::recoverJobs() {
         const int interrupted = jobStore_.markInterrupted();
         if (interrupted > 0) std::cerr << "lenslab serve: " << interrupted << " render(s) were interrupted; marked failed\n";
         restoreQueuedJobs();
+        for (const std::string& id : jobStore_.withoutImageBytes())
+            jobStore_.setImageBytes(id, static_cast<std::int64_t>(jobs_.imageBytes(id)));
         collectFinishedRenders();
     } catch (const StorageError& e) {
         // A full or read-only disk must not keep the service down: reads work, writes say why.

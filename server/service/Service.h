@@ -10,6 +10,7 @@
 #include "storage/Database.h"
 #include "storage/ResultCache.h"
 #include "service/HttpServer.h"
+#include "jobs/DesignJobs.h"
 #include "jobs/JobQueue.h"
 #include "jobs/JobStore.h"
 #include "storage/LensStore.h"
@@ -52,6 +53,7 @@ private:
     std::unique_ptr<JobRenderer> renderer_;
     JobQueue jobs_;
     ReportJob report_;
+    DesignJobs designJobs_;  // after the pool, which runs them
     DataFolderQuota quota_;
     ServiceParts parts_;
     HttpServer http_;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "core/ContentDigest.h"
 #include "core/HttpError.h"
 #include "core/Identifiers.h"
 #include "core/WallClock.h"
@@ -24,6 +25,7 @@ std::shared_ptr<StoredGlassCatalog> readCatalog(const std::string& bytes, const 
     auto catalog = std::make_shared<StoredGlassCatalog>();
     catalog->name = file.name;
     catalog->fileName = fileName;
+    catalog->digest = contentDigest(bytes);
     catalog->glasses = std::move(file.glasses);
     catalog->formulaNumbers = std::move(file.formulaNumbers);
     return catalog;
@@ -61,6 +63,7 @@ GlassCatalogStore::GlassCatalogStore(const std::string& folder, Database& databa
             std::cerr << "lenslab serve: skipping uploaded glass catalog " << id << ": " << e.what() << "\n";
         }
     });
+    renewDigest();
     std::error_code ec;
     for (fs::directory_iterator it(folder_, ec), end; !ec && it != end; it.increment(ec))
         if (std::find(known.begin(), known.end(), it->path().filename().string()) == known.end()) fs::remove(it->path(), ec);
@@ -105,6 +108,7 @@ std::shared_ptr<const StoredGlassCatalog> GlassCatalogStore::add(const std::stri
                   {catalog->id, catalog->fileName, catalog->created});
     addGlassCatalog(catalog->name, catalog->glasses, CatalogPrecedence::AfterBundled);
     catalogs_.push_back(catalog);
+    renewDigest();
     return catalog;
 }
 
@@ -129,7 +133,19 @@ bool GlassCatalogStore::remove(const std::string& id,
     database_.run("DELETE FROM glass_catalogs WHERE id = ?", {id});
     removeGlassCatalog(catalog->name);
     catalogs_.erase(std::find(catalogs_.begin(), catalogs_.end(), catalog));
+    renewDigest();
     return true;
+}
+
+std::string GlassCatalogStore::digest() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return digest_;
+}
+
+void GlassCatalogStore::renewDigest() {
+    std::string all;
+    for (const auto& catalog : catalogs_) all += catalog->name + "\n" + catalog->digest + "\n";
+    digest_ = contentDigest(all);
 }
 
 std::shared_lock<std::shared_mutex> GlassCatalogStore::holdCatalogs() const {

@@ -23,6 +23,7 @@ struct StoredGlassCatalog {
     std::string fileName;  // the upload's name, as shown
     double created = 0;    // seconds since the epoch
     std::string path;      // the file on disk
+    std::string digest;    // SHA-256 of the file
     std::vector<Medium> glasses;
     std::vector<int> formulaNumbers;  // Zemax's, parallel to glasses
 };
@@ -50,15 +51,23 @@ public:
     // so a lens stored with a glass of a catalog always finds the catalog there.
     std::shared_lock<std::shared_mutex> holdCatalogs() const;
 
+    // SHA-256 of the catalogs held, in lookup order: part of the key of every cached result that
+    // reads glasses (a catalog deleted and uploaded again under its name with other glasses
+    // changes it).
+    std::string digest() const;
+
     static constexpr int kMaxCatalogs = 64;
     static constexpr std::size_t kMaxGlasses = 50000;  // in all the catalogs (about 300 bytes each)
 
 private:
+    void renewDigest();  // under mutex_, whenever catalogs_ changes
+
     std::string folder_;
     Database& database_;
     mutable std::shared_mutex deleting_;  // shared: lenses being read; exclusive: a deletion
     mutable std::mutex mutex_;            // the list, and the lookup's names against it
     std::vector<std::shared_ptr<const StoredGlassCatalog>> catalogs_;
+    std::string digest_;                  // digest(): of catalogs_
 };
 
 }  // namespace lenslab

@@ -30,7 +30,7 @@ std::shared_ptr<StoredLens> describeLens(const LensTable& table) {
     const LensAnalysis a = analyzeLens(lens->system, std::nullopt, std::numeric_limits<double>::infinity());
     lens->efl = a.firstOrder.efl;
     lens->fstopMin = a.aperture.fstopMin;
-    lens->fstopMax = a.aperture.fstopMax;
+    lens->fstopMax = a.aperture.fstopMaxOffered;
     if (!table.comments.empty()) {
         std::string d = table.comments.front();
         d.erase(0, d.find_first_not_of(' '));
@@ -284,7 +284,9 @@ std::shared_ptr<const StoredLens> LensStore::add(const std::string& uploadName, 
     return lens;
 }
 
-LensStore::Removal LensStore::remove(const std::string& id) {
+LensStore::Removal LensStore::remove(const std::string& id, const std::function<void()>& checkUnused) {
+    std::unique_lock<std::shared_mutex> noLensTaken(deleting_);
+    if (checkUnused) checkUnused();
     std::unique_lock<std::shared_mutex> lock(mutex_);
     auto it = std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e->id == id && !e->failed; });
     if (it == entries_.end()) return Removal::NotFound;
@@ -298,6 +300,10 @@ LensStore::Removal LensStore::remove(const std::string& id) {
     database_.run("DELETE FROM lenses WHERE id = ?", {id});
     entries_.erase(it);
     return Removal::Removed;
+}
+
+std::shared_lock<std::shared_mutex> LensStore::holdLenses() const {
+    return std::shared_lock<std::shared_mutex>(deleting_);
 }
 
 }  // namespace lenslab

@@ -70,8 +70,14 @@ public:
     // The ids of the lenses for which `test` is true, every upload described first if it was not yet.
     std::vector<std::string> lensesWhere(const std::function<bool(const StoredLens&)>& test) const;
 
+    // Deletes an upload. `checkUnused` runs first, with submissions held off (holdLenses waits), and
+    // throws to keep the lens: nothing can start using it between that check and the deletion.
     enum class Removal { Removed, NotFound, ReadOnly };
-    Removal remove(const std::string& id);
+    Removal remove(const std::string& id, const std::function<void()>& checkUnused);
+
+    // Held from a lens's lookup until what uses it is recorded (a render queued): the lens is not
+    // deleted meanwhile.
+    std::shared_lock<std::shared_mutex> holdLenses() const;
 
 private:
     struct Entry;
@@ -84,6 +90,7 @@ private:
     std::string uploadDir_;
     Database& database_;
     int maxUploads_;
+    mutable std::shared_mutex deleting_;  // shared: lenses being taken into use; exclusive: a deletion
     mutable std::shared_mutex mutex_;
     std::vector<std::shared_ptr<Entry>> entries_;  // bundled first, then uploads by age
     std::atomic<bool> stopping_{false};

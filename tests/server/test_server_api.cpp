@@ -391,7 +391,7 @@ TEST_F(ServerApi, RenderSettingsOutsideTheLensNameTheirField) {
     const Reply sceneWide = postJson(c, "/api/renders", {{"scene", "depth-of-field"}, {"lens", "telephoto.250mm"}});
     EXPECT_EQ(sceneWide.status, 422) << sceneWide.raw;
     EXPECT_EQ(sceneWide.body["error"].get<std::string>().rfind(
-                  "depth-of-field.pbrt:7: Camera \"realistic\": fstop: f-number 2.1 is outside this lens's range f/5.59", 0),
+                  "depth-of-field.pbrt:7: Camera \"realistic\": fstop: f-number 2.1 is outside this lens's range f/5.6 to f/64", 0),
               0u)
         << sceneWide.raw;
     const Reply again = postJson(c, "/api/renders", {{"scene", "depth-of-field"}, {"lens", "telephoto.250mm"}});

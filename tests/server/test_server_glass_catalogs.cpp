@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <future>
+#include <tuple>
 #include <vector>
 
 #include "ServerProcess.h"
@@ -29,10 +30,10 @@ const std::string kCatalog =
     "TD 0 0 0 0 0 0 20\n"
     "LD 0.3 2.5\n";
 
-double sellmeierIndex(double nm) {
+double sellmeierIndex(double nm, double b1 = kB[0]) {
     const double l2 = (nm / 1000) * (nm / 1000);
     double n2 = 1;
-    for (int i = 0; i < 3; ++i) n2 += kB[i] * l2 / (l2 - kC[i]);
+    for (int i = 0; i < 3; ++i) n2 += (i == 0 ? b1 : kB[i]) * l2 / (l2 - kC[i]);
     return std::sqrt(n2);
 }
 const double kNd = sellmeierIndex(587.5618);
@@ -180,6 +181,40 @@ TEST_F(ServerGlassCatalogs, CatalogsAndTheLensesUsingThemSurviveARestart) {
     EXPECT_NEAR(stored.body["efl"].get<double>(), thickLensEfl(kNd, 50, -50, 5), 1e-9);
     EXPECT_EQ(postRaw(after, "/api/lenses?name=again.dat", kSingletInTestGlass).status, 201);
     EXPECT_EQ(remove(after, "/api/glass-catalogs/" + catalog).status, 409);
+}
+
+// Issue 40, finding 5: analyses were cached by the lens's text alone, so the same table uploaded
+// again after its catalog was replaced (deleted, uploaded under its name with another glass) was
+// answered with the old glass's analysis. The cache keys hold the catalogs' digest now.
+TEST_F(ServerGlassCatalogs, AReplacedCatalogIsNotAnsweredFromTheOldGlasssCache) {
+    auto c = server_->client();
+    const auto uploadAndAnalyse = [&](const std::string& catalogText) {
+        const Reply catalog = postCatalog(c, "llab.agf", catalogText);
+        EXPECT_EQ(catalog.status, 201) << catalog.raw;
+        const Reply lens = postRaw(c, "/api/lenses?name=singlet.dat", kSingletInTestGlass);
+        EXPECT_EQ(lens.status, 201) << lens.raw;
+        const std::string id = lens.body["id"];
+        const std::string query = "?fstop=8&focus=inf&wavelengths=d&fields=0";
+        const Reply analysis = get(c, "/api/lenses/" + id + "/analysis" + query);
+        EXPECT_EQ(analysis.status, 200) << analysis.raw.substr(0, 300);
+        EXPECT_EQ(analysis.body["efl"], lens.body["efl"]);
+        const Reply ghosts = get(c, "/api/lenses/" + id + "/ghosts?fstop=8&focus=inf");
+        EXPECT_EQ(ghosts.status, 200) << ghosts.raw.substr(0, 300);
+        EXPECT_EQ(remove(c, "/api/lenses/" + id).status, 200);
+        EXPECT_EQ(remove(c, "/api/glass-catalogs/" + catalog.body["id"].get<std::string>()).status, 200);
+        json ghostsOfTheGlass = ghosts.body;
+        ghostsOfTheGlass.erase("id");  // a new upload's
+        return std::make_tuple(lens.body["efl"].get<double>(), analysis.body["image_z"].get<double>(), ghostsOfTheGlass);
+    };
+    const auto [eflBefore, imageZBefore, ghostsBefore] = uploadAndAnalyse(kCatalog);
+    EXPECT_NEAR(eflBefore, thickLensEfl(kNd, 50, -50, 5), 1e-9);
+    // The first Sellmeier term 1.2 -> 1.6: nd about 1.70 instead of 1.58.
+    std::string denser = kCatalog;
+    denser.replace(denser.find("CD 1.2 "), 7, "CD 1.6 ");
+    const auto [eflAfter, imageZAfter, ghostsAfter] = uploadAndAnalyse(denser);
+    EXPECT_NEAR(eflAfter, thickLensEfl(sellmeierIndex(587.5618, 1.6), 50, -50, 5), 1e-9);  // 36.2 against 43.9
+    EXPECT_GT(imageZAfter, imageZBefore + 5);  // the shorter focal length's image nearer the lens
+    EXPECT_NE(ghostsAfter, ghostsBefore);
 }
 
 // An upload adds glass names: one the bundled makers have keeps the makers' glass (and says so).

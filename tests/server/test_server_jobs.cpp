@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <thread>
 
 #include "ServerProcess.h"
@@ -197,3 +198,35 @@ TEST_F(ServerJobs, ALensARenderWaitsForCannotBeDeleted) {
     EXPECT_EQ(waitForRenderState(c, waiting.body["id"], {"done"}, 20)["state"], "done");
     EXPECT_EQ(remove(c, "/api/lenses/" + id).status, 200);
 }
+
+// Issue 40, finding 7: a render submitted while its lens was being deleted got 202 and the delete
+// 200 (22 rounds of 30), and the job failed when it opened the lens. The lens's lookup and the job's
+// queueing now hold the deletion off: each round either the delete sees the render (409) or the
+// render never finds the lens (400). The delete goes out a little later each round, across the
+// submission's check of the new lens (the window the race had).
+TEST_F(ServerJobs, ARenderAndItsLenssDeletionNeverBothSucceed) {
+    auto server = start(sceneArgs());
+    auto c = server->client();
+    for (int round = 0; round < 30; ++round) {
+        const Reply lens = postRaw(c, "/api/lenses?name=mine.dat", kSmallLensTable);
+        ASSERT_EQ(lens.status, 201) << lens.raw;
+        const std::string id = lens.body["id"];
+        json request = slowRender(1);
+        request["lens"] = id;
+        auto submitted = std::async(std::launch::async, [&] {
+            auto own = server->client();
+            return postJson(own, "/api/renders", request);
+        });
+        std::this_thread::sleep_for(std::chrono::microseconds(200 * (round % 15)));
+        const Reply deleted = remove(c, "/api/lenses/" + id);
+        const Reply render = submitted.get();
+        ASSERT_TRUE((render.status == 202 && deleted.status == 409) || (render.status == 400 && deleted.status == 200))
+            << "round " << round << ": render " << render.status << " " << render.raw << ", delete " << deleted.status << " "
+            << deleted.raw;
+        if (render.status == 400) continue;
+        const json ended = waitForRenderState(c, render.body["id"], {"done", "failed", "cancelled"}, 20);
+        EXPECT_EQ(ended["state"], "done") << ended.dump();
+        EXPECT_EQ(remove(c, "/api/lenses/" + id).status, 200);
+    }
+}
+

@@ -1,7 +1,7 @@
 // The service's parts in-process: request checking, a download's file name, a chunked body's payload count, identifiers, the result cache's sharing and
 // eviction, the heavy-work pool's admission, event-stream slots, storage errors' statuses, the
-// remembered render checks, and the job queue's limits, cancellation and persistence with a fake
-// renderer.
+// remembered render checks, and the job queue's limits, cancellation, persistence and retention by
+// count with a fake renderer.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -18,6 +18,7 @@
 #include "core/HttpError.h"
 #include "core/ContentDisposition.h"
 #include "core/Identifiers.h"
+#include "core/WallClock.h"
 #include "guards/ChunkedBodyMeter.h"
 #include "guards/EventStreamSlots.h"
 #include "jobs/JobJson.h"
@@ -26,6 +27,7 @@
 #include "storage/LensStore.h"
 #include "storage/StorageError.h"
 #include "jobs/RenderRequest.h"
+#include "jobs/RenderRetention.h"
 #include "jobs/RenderSettingsChecks.h"
 #include "jobs/WorkPool.h"
 #include "ServerProcess.h"
@@ -331,6 +333,33 @@ TEST(JobQueueTest, LimitsCancelsAndPersists) {
     EXPECT_TRUE(std::filesystem::exists(queue.imagePath(slowId, "png")));
     EXPECT_TRUE(std::filesystem::exists(queue.imagePath(slowId, "exr")));
     EXPECT_EQ(renderer.mostAtOnce(), 1);
+}
+
+// Issue 40, finding 8: submit + cancel kept every job record for 30 days (20,464 in 240 s), and a
+// job cancelled while it waited never ran the retention. With a count limit of 5, 12 jobs cancelled
+// while they wait leave the 5 newest.
+TEST(JobQueueTest, FinishedJobsAreCappedByCountTheNewestKept) {
+    test::TempDir dir;
+    Database db(dir.path() + "/jobs.db");
+    JobStore store(db);
+    FakeRenderer renderer;
+    RenderLimits limits;
+    limits.concurrentRenders = 1;
+    JobQueue queue(store, renderer, limits, dir.path() + "/renders");
+    RetentionPolicy policy;
+    policy.keepCount = 5;
+    queue.setAfterJob([&] { collectRenders(queue, store, policy, secondsSinceEpoch()); });
+    const std::string slowId = queue.submit(fakeJob(200)).id;  // keeps the others waiting
+    ASSERT_EQ(waitForState(queue, slowId, JobState::Running), JobState::Running);
+    std::vector<std::string> cancelled;
+    for (int i = 0; i < 12; ++i) {
+        cancelled.push_back(queue.submit(fakeJob(1)).id);
+        EXPECT_EQ(queue.cancel(cancelled.back()), JobQueue::Cancel::Cancelled);
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));  // finish times apart
+    }
+    EXPECT_EQ(store.finishedCount(), 5);
+    for (int i = 0; i < 12; ++i) EXPECT_EQ(store.find(cancelled[i]).has_value(), i >= 7) << "job " << i;
+    EXPECT_EQ(store.find(slowId)->state, JobState::Running);
 }
 
 namespace {
