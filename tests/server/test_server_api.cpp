@@ -9,6 +9,7 @@
 #include <future>
 #include <thread>
 
+#include "FileText.h"
 #include "RawConnection.h"
 #include "ServerProcess.h"
 
@@ -19,13 +20,6 @@ namespace {
 
 const std::string kBinary = LENSLAB_BINARY;
 const std::string kSource = LENSLAB_SOURCE_DIR;
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 class ServerApi : public ::testing::Test {
 protected:

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "FileText.h"
 #include "DesignJson.h"
 #include "ServerProcess.h"
 #include "design/MeritFunction.h"
@@ -25,13 +26,6 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 const std::string kSource = LENSLAB_SOURCE_DIR;
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 // docs/design.md's starting point: each of the six curvatures 5% off, alternately + and -.
 std::string perturbedCooke() {

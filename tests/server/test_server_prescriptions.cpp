@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "FileText.h"
 #include "RawConnection.h"
 #include "ServerProcess.h"
 
@@ -20,13 +21,6 @@ protected:
     TempDir data_;
     std::unique_ptr<ServerProcess> server_;
 };
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 // UTF-16 LE with a byte order mark, as OpticStudio saves (the text is ASCII).
 std::string utf16(const std::string& ascii) {
