@@ -249,7 +249,8 @@ ToleranceInputs toleranceInputsFromJson(const json& j, const LensTable& table, c
         {"element_decentre", &ToleranceSpec::elementDecentre}, {"element_tilt", &ToleranceSpec::elementTilt},
         {"index", &ToleranceSpec::index}, {"abbe", &ToleranceSpec::abbeFraction},
     };
-    for (const auto& [key, value] : j.items()) {
+    for (const auto& item : j.items()) {
+        const std::string& key = item.key();
         const bool known = std::any_of(std::begin(limits), std::end(limits), [&](const Limit& l) { return key == l.key; }) ||
                            key == "compensators" || key == "draw" || key == "specification" || key == "merit_limit";
         if (!known) refuse(where + ": unknown key '" + key.substr(0, 40) + "'");
