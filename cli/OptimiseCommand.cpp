@@ -1,10 +1,12 @@
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "ArgParser.h"
 #include "Commands.h"
 #include "DesignInputs.h"
 #include "DesignJson.h"
+#include "design/GlassSnap.h"
 #include "design/GlobalSearch.h"
 
 namespace lenslab {
@@ -20,6 +22,8 @@ int runOptimiseCommand(const std::vector<std::string>& args) {
     p.option("--global", "HOPS", "basin hopping: this many hops, each a descent from a random move of the best design");
     p.option("--seed", "S", "the hops' seed (default 1)");
     p.option("--max-iterations", "N", "per descent (default 200)");
+    p.option("--snap-glasses", "CATALOGS", "after the search, each glass whose index or abbe varied becomes its nearest catalog glass\n"
+                                           "(SCHOTT,OHARA,... or all), and the other variables are optimised again");
     p.option("-o", "OUT", "the optimised lens (.zmx or .dat; read back to check), or results as .json");
     p.flag("--json", "print the result as one JSON object");
     if (!p.parse(args)) {
@@ -42,6 +46,7 @@ int runOptimiseCommand(const std::vector<std::string>& args) {
     local.progress = [&](const OptimiserProgress& progress) {
         if (!json) std::cerr << "  step " << progress.iteration << ": merit " << progress.merit << " (" << progress.evaluations << " evaluations)\n";
     };
+    const LensTable startTable = problem.start;  // the lens as given, before any glass is snapped
     const double cpu = processCpuSeconds();
     OptimiserResult result;
     if (p.has("--global")) {
@@ -54,11 +59,32 @@ int runOptimiseCommand(const std::vector<std::string>& args) {
     } else {
         result = optimiseDampedLeastSquares(problem, local);
     }
+    if (p.has("--snap-glasses")) {
+        std::vector<int> rows;
+        std::vector<DesignVariable> others;
+        for (const DesignVariable& v : problem.variables)
+            (v.kind == VariableKind::Index || v.kind == VariableKind::Abbe ? rows.push_back(v.row) : others.push_back(v));
+        std::vector<std::string> catalogs;
+        std::stringstream names(p.get("--snap-glasses"));
+        for (std::string name; std::getline(names, name, ',');)
+            if (!name.empty() && name != "all") catalogs.push_back(name);
+        DesignProblem refined = problem;
+        refined.start = result.lens;
+        for (const GlassChoice& c : snapToCatalogGlasses(refined.start, rows, catalogs))
+            if (!json)
+                std::cerr << "  surface " << c.row + 1 << ": model glass " << c.nd << " / " << c.vd << " -> " << c.glass.name << " ("
+                          << c.glass.catalog << ") " << c.glass.nd << " / " << c.glass.vd << ", distance " << c.distance << "\n";
+        refined.variables = others;
+        const MeritEvaluation start = result.start;
+        result = optimiseDampedLeastSquares(refined, local);
+        result.start = start;
+        problem = refined;
+    }
     const double used = processCpuSeconds() - cpu;
     // The figures a designer quotes: both lenses on the analysis's converged sampling.
     MeritFunction settled = problem.merit;
     settled.settle = true;
-    const MeritEvaluation before = evaluateMerit(problem.start, settled), after = evaluateMerit(result.lens, settled);
+    const MeritEvaluation before = evaluateMerit(startTable, settled), after = evaluateMerit(result.lens, settled);
     if (json) {
         nlohmann::json j = optimiserResultJson(problem, result);
         j["cpu_seconds"] = used;

@@ -9,6 +9,7 @@
 #include "DesignRows.h"
 #include "ParaxialYNu.h"
 #include "analysis/LensDesignAnalysis.h"
+#include "design/GlassSnap.h"
 #include "design/ToleranceAnalysis.h"
 #include "firstorder/FirstOrder.h"
 
@@ -228,4 +229,24 @@ TEST(Sensitivity, EachToleranceAloneAtBothLimitsRankedByItsEffect) {
         return *std::find_if(rows.begin(), rows.end(), [&](const SensitivityRow& r) { return r.tolerance.kind == kind; });
     };
     EXPECT_GT(std::fabs(rowOf(ToleranceKind::Radius).plus.values[3] - 50.0), 1e-3);
+}
+
+TEST(GlassSnap, AModelGlassBecomesItsNearestCatalogGlass) {
+    // Schott's N-BK7 is 1.5168 / 64.17 and F2 1.62004 / 36.37: a model glass a little off each
+    // snaps to it (not to P-BK7, 1.5164 / 64.06, nor N-F2, 1.62005 / 36.43, each farther on the
+    // map's scale); air stays. 1.5170 / 64.0 is nearer P-BK7.
+    EXPECT_EQ(nearestCatalogGlass(1.5168, 64.17, {"SCHOTT"})->name, "N-BK7");
+    EXPECT_EQ(nearestCatalogGlass(1.5170, 64.0, {"SCHOTT"})->name, "P-BK7");
+    LensTable table = tableOfRows({stopRow(1, 10), openRow(60, 4, 1.5168, 64.2), openRow(-40, 2, 1.6200, 36.36), openRow(-200, 90, 0)});
+    table.rows[0].glass = "";
+    const std::vector<GlassChoice> choices = snapToCatalogGlasses(table, {1, 2, 3}, {"SCHOTT"});
+    ASSERT_EQ(choices.size(), 2u);
+    EXPECT_EQ(table.rows[1].glass, "N-BK7");
+    EXPECT_EQ(table.rows[2].glass, "F2");
+    EXPECT_EQ(table.rows[2].glassCatalog, "SCHOTT");
+    EXPECT_NEAR(choices[0].distance, std::hypot(100 * (1.5168 - 1.5168), 64.17 - 64.2), 1e-9);
+    EXPECT_TRUE(table.rows[3].glass.empty());  // air
+    // The snapped table builds with the catalog's glasses.
+    const LensSystem lens = buildLensSystem(table);
+    EXPECT_NEAR(refractiveIndex(lens.surfaces[1].mediumAfter, kWavelengthD), 1.5168, 1e-5);
 }
