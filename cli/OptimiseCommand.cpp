@@ -17,7 +17,7 @@ int runOptimiseCommand(const std::vector<std::string>& args) {
                 "stops falling; every step keeps a lens that can be built. Prints the merit as it falls, then each\n"
                 "operand and variable before and after. --global adds basin hopping from a seed.");
     declareDesignInputs(p);
-    p.option("--variables", "LIST", "curvature:1-6,thickness:6,conic:3,asphere4:5,index:1,abbe:1 (default: every curvature and the image distance)");
+    p.option("--variables", "LIST", "curvature:1-6,thickness:6,conic:3,asphere4:5,index:1,abbe:1 (default: every curvature, and the image distance where the table states one)");
     p.flag("--image-solve", "hold the image distance at the paraxial marginal ray's focus");
     p.option("--global", "HOPS", "basin hopping: this many hops, each a descent from a random move of the best design");
     p.option("--seed", "S", "the hops' seed (default 1)");

@@ -74,7 +74,7 @@ int runToleranceCommand(const std::vector<std::string>& args) {
     } else {
         const long most = p.has("--most") ? *p.integer("--most") : 15;
         std::cout << problem.tolerances.size() << " tolerances, " << problem.compensators.size() << " compensator(s)\n\n"
-                  << sensitivityText(problem, rows, std::size_t(std::max(0L, most))) << "\n";
+                  << sensitivityText(rows, std::size_t(std::max(0L, most))) << "\n";
         if (trials > 0)
             std::cout << monteCarloText(problem, mc) << "\nCPU " << sensitivityCpu << " s sensitivity, " << monteCarloCpu << " s Monte Carlo ("
                       << monteCarloCpu / trials << " s a trial)\n";

@@ -324,7 +324,7 @@ json monteCarloJson(const ToleranceProblem& problem, const MonteCarloResult& r) 
         operands.push_back(o);
     }
     json tolerances = json::array();
-    for (const Tolerance& t : problem.tolerances) tolerances.push_back(describeTolerance(problem.nominal, t));
+    for (const Tolerance& t : problem.tolerances) tolerances.push_back(describeTolerance(t));
     return {{"trials", r.trials.size()},   {"invalid", r.invalid},
             {"yield", r.yield},            {"nominal_merit", r.nominal.valid ? json(r.nominal.merit) : json(nullptr)},
             {"merit", distributionJson(r.merit)}, {"operands", operands},
@@ -335,7 +335,7 @@ json sensitivityJson(const ToleranceProblem& problem, const std::vector<Sensitiv
     json out = json::array();
     for (const SensitivityRow& row : rows) {
         const auto side = [&](const MeritEvaluation& e) { return meritEvaluationJson(problem.merit, e); };
-        out.push_back({{"tolerance", describeTolerance(problem.nominal, row.tolerance)},
+        out.push_back({{"tolerance", describeTolerance(row.tolerance)},
                        {"merit_change", std::isfinite(row.meritChange) ? json(row.meritChange) : json(nullptr)},
                        {"plus", side(row.plus)},
                        {"minus", side(row.minus)}});
@@ -381,13 +381,13 @@ std::string monteCarloText(const ToleranceProblem& problem, const MonteCarloResu
     return s.str();
 }
 
-std::string sensitivityText(const ToleranceProblem& problem, const std::vector<SensitivityRow>& rows, std::size_t most) {
+std::string sensitivityText(const std::vector<SensitivityRow>& rows, std::size_t most) {
     std::ostringstream s;
     s << padded("tolerance", 36) << padded("merit +", 14) << padded("merit -", 14) << "largest change\n";
     for (std::size_t k = 0; k < rows.size() && k < most; ++k) {
         const SensitivityRow& row = rows[k];
         const auto merit = [](const MeritEvaluation& e) { return e.valid ? scientific(e.merit) : std::string("invalid"); };
-        s << padded(describeTolerance(problem.nominal, row.tolerance), 36) << padded(merit(row.plus), 14) << padded(merit(row.minus), 14)
+        s << padded(describeTolerance(row.tolerance), 36) << padded(merit(row.plus), 14) << padded(merit(row.minus), 14)
           << scientific(row.meritChange) << "\n";
     }
     return s.str();

@@ -56,6 +56,6 @@ nlohmann::json sensitivityJson(const ToleranceProblem& problem, const std::vecto
 // The terminal's tables: each operand before and after, and each variable's change.
 std::string optimiserResultText(const DesignProblem& problem, const OptimiserResult& r);
 std::string monteCarloText(const ToleranceProblem& problem, const MonteCarloResult& r);
-std::string sensitivityText(const ToleranceProblem& problem, const std::vector<SensitivityRow>& rows, std::size_t most);
+std::string sensitivityText(const std::vector<SensitivityRow>& rows, std::size_t most);
 
 }  // namespace lenslab

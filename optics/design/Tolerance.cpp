@@ -120,8 +120,7 @@ std::optional<ToleranceKind> parseToleranceKind(const std::string& name) {
     return std::nullopt;
 }
 
-std::string describeTolerance(const LensTable& table, const Tolerance& t) {
-    (void)table;
+std::string describeTolerance(const Tolerance& t) {
     std::string rows = std::to_string(t.row + 1);
     if (isElementKind(t.kind)) rows += "-" + std::to_string(t.lastRow + 1);
     const std::string limit = t.kind == ToleranceKind::Radius ? formatNumber(100 * t.limit) + "%" : formatNumber(t.limit) + info(t.kind).unit;
@@ -131,7 +130,7 @@ std::string describeTolerance(const LensTable& table, const Tolerance& t) {
 void checkTolerance(const LensTable& table, const Tolerance& t) {
     const int rows = static_cast<int>(table.rows.size());
     const auto refuse = [&](const std::string& why) {
-        throw std::invalid_argument("tolerance " + describeTolerance(table, t) + ": " + why);
+        throw std::invalid_argument("tolerance " + describeTolerance(t) + ": " + why);
     };
     if (t.row < 0 || t.row >= rows) refuse("the lens has rows 1 to " + std::to_string(rows));
     if (!(t.limit >= 0) || !std::isfinite(t.limit)) refuse("its limit must be a finite number at least 0");

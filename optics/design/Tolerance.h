@@ -42,7 +42,7 @@ struct Tolerance {
     double clearRadius = 0;  // Power, Astigmatism: the surface's clear semi-diameter the fringes are counted over, mm
 };
 
-std::string describeTolerance(const LensTable& table, const Tolerance& t);  // "tilt_x 3 +-0.01 deg"
+std::string describeTolerance(const Tolerance& t);  // "tilt_x 3 +-0.01 deg"
 
 // The tolerances a designer states once for the whole lens, applied to every surface they fit.
 struct ToleranceSpec {

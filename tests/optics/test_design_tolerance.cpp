@@ -221,7 +221,7 @@ TEST(Sensitivity, EachToleranceAloneAtBothLimitsRankedByItsEffect) {
             ASSERT_TRUE(e.valid);
             // The y-nu trace sees no tilt: a tilt's own effect on the focal length is of second order.
             const bool tilted = row.tolerance.kind == ToleranceKind::TiltX;
-            EXPECT_NEAR(e.values[3], ynuFocalLength(lens), tilted ? 1e-4 : 1e-8) << describeTolerance(p.nominal, row.tolerance);
+            EXPECT_NEAR(e.values[3], ynuFocalLength(lens), tilted ? 1e-4 : 1e-8) << describeTolerance(row.tolerance);
         }
     }
     // A tilt leaves the focal length, to first order; a radius changes it.
