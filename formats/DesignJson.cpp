@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "FiniteOrNull.h"
 #include "prescription/NumberText.h"
 
 namespace lenslab {
@@ -336,7 +337,7 @@ json sensitivityJson(const ToleranceProblem& problem, const std::vector<Sensitiv
     for (const SensitivityRow& row : rows) {
         const auto side = [&](const MeritEvaluation& e) { return meritEvaluationJson(problem.merit, e); };
         out.push_back({{"tolerance", describeTolerance(row.tolerance)},
-                       {"merit_change", std::isfinite(row.meritChange) ? json(row.meritChange) : json(nullptr)},
+                       {"merit_change", finiteOrNull(row.meritChange)},
                        {"plus", side(row.plus)},
                        {"minus", side(row.minus)}});
     }

@@ -3,15 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "FiniteOrNull.h"
 #include "prescription/NumberText.h"
 
 namespace lenslab {
-
-namespace {
-
-nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-}  // namespace
 
 std::string ghostAnalysisText(const GhostAnalysis& g, const LensAnalysis& a) {
     std::string out = "Ghosts of " + a.lens.name + " at f/" + formatFNumber(a.fstop) + ", focus " +

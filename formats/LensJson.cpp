@@ -2,14 +2,13 @@
 
 #include <cmath>
 
+#include "FiniteOrNull.h"
 #include "PrescriptionPartsJson.h"
 #include "trace/ThinFilm.h"
 
 namespace lenslab {
 
 namespace {
-
-nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 // The fields added for decentred, tilted, shaped and non-even surfaces: present only where they apply.
 void addSurfaceShape(nlohmann::json& surface, const Surface& s) {

@@ -29,7 +29,7 @@ bool isColumnHeader(const std::string& comment) {
     return false;
 }
 
-[[noreturn]] void refuse(const LensTable& table, int line, const std::string& what) {
+[[noreturn]] void refuseForDat(const LensTable& table, int line, const std::string& what) {
     throw LensTableError(table.name, line, what + ": a lens table (.dat) cannot hold it; write a .zmx instead");
 }
 
@@ -48,26 +48,26 @@ void refuseCatalogOrderThatMatters(const LensTable& table, const LensTableRow& r
     const GlassLookup preferred = findGlass(row.glass, order), plain = findGlass(row.glass, {});
     if (preferred.glass && plain.glass &&
         (preferred.glass->catalog != plain.glass->catalog || preferred.glass->name != plain.glass->name))
-        refuse(table, row.line, std::string(row.glassCatalog.empty() ? "the catalog order (GCAT)" : "the row's catalog") +
+        refuseForDat(table, row.line, std::string(row.glassCatalog.empty() ? "the catalog order (GCAT)" : "the row's catalog") +
                                     " that makes '" + row.glass + "' " + preferred.glass->catalog + " " +
                                     preferred.glass->name + " rather than " + plain.glass->catalog + " " + plain.glass->name);
 }
 
 void refuseWhatATableCannotHold(const LensTable& table, const LensTableRow& row) {
-    if (row.conic != 0) refuse(table, row.line, "a conic constant");
+    if (row.conic != 0) refuseForDat(table, row.line, "a conic constant");
     for (double a : row.aspheric)
-        if (a != 0) refuse(table, row.line, "aspheric terms");
-    if (row.mirror) refuse(table, row.line, "a mirror");
-    if (row.obscurationDiameter > 0) refuse(table, row.line, "a central obscuration");
-    if (row.stop && (row.radius != 0 || !isAir(row))) refuse(table, row.line, "a stop on a curved or glass surface");
+        if (a != 0) refuseForDat(table, row.line, "aspheric terms");
+    if (row.mirror) refuseForDat(table, row.line, "a mirror");
+    if (row.obscurationDiameter > 0) refuseForDat(table, row.line, "a central obscuration");
+    if (row.stop && (row.radius != 0 || !isAir(row))) refuseForDat(table, row.line, "a stop on a curved or glass surface");
     if (!row.coating.empty()) {
-        if (const auto problem = wordTextProblem(row.coating)) refuse(table, row.line, "a coating with " + *problem);
-        if (row.coating.find('#') != std::string::npos) refuse(table, row.line, "a coating with '#' (a comment)");
+        if (const auto problem = wordTextProblem(row.coating)) refuseForDat(table, row.line, "a coating with " + *problem);
+        if (row.coating.find('#') != std::string::npos) refuseForDat(table, row.line, "a coating with '#' (a comment)");
     }
     if (row.glass.empty()) return;
-    if (const auto problem = wordTextProblem(row.glass)) refuse(table, row.line, "a glass name with " + *problem);
-    if (row.glass.find('#') != std::string::npos) refuse(table, row.line, "a glass name with '#' (a comment)");
-    if (isNumber(row.glass)) refuse(table, row.line, "the glass name '" + row.glass + "' (it would read as an Abbe number)");
+    if (const auto problem = wordTextProblem(row.glass)) refuseForDat(table, row.line, "a glass name with " + *problem);
+    if (row.glass.find('#') != std::string::npos) refuseForDat(table, row.line, "a glass name with '#' (a comment)");
+    if (isNumber(row.glass)) refuseForDat(table, row.line, "the glass name '" + row.glass + "' (it would read as an Abbe number)");
     refuseCatalogOrderThatMatters(table, row);
 }
 
@@ -75,9 +75,9 @@ void refuseWhatItsHeaderCannotHold(const LensTable& table) {
     refuseUnwrittenFeatures(table, ".dat");
     for (std::size_t i = 0; i < table.comments.size(); ++i)
         if (const auto problem = lineTextProblem(table.comments[i]))
-            refuse(table, 0, "comment " + std::to_string(i + 1) + " with " + *problem);
+            refuseForDat(table, 0, "comment " + std::to_string(i + 1) + " with " + *problem);
     if (table.primaryWavelength != kWavelengthD)
-        refuse(table, 0, "the primary wavelength " + formatNumber(table.primaryWavelength, 9) +
+        refuseForDat(table, 0, "the primary wavelength " + formatNumber(table.primaryWavelength, 9) +
                              " nm (a table is read at the d line, " + formatNumber(kWavelengthD, 9) + " nm)");
 }
 

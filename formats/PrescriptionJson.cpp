@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "FiniteOrNull.h"
 #include "LineText.h"
 #include "PrescriptionPartsJson.h"
 #include "prescription/GlassCatalog.h"
@@ -62,7 +63,7 @@ json prescriptionJson(const LensTable& source) {
             {"wavelength_weights", table.wavelengthWeights},
             {"primary_wavelength_nm", table.primaryWavelength},
             {"fields", designFieldsJson(table.fields)},
-            {"object_distance", std::isfinite(table.objectDistance) ? json(table.objectDistance) : json(nullptr)},
+            {"object_distance", finiteOrNull(table.objectDistance)},
             {"entrance_pupil_diameter", optionalJson(table.entrancePupilDiameter)},
             {"f_number", optionalJson(table.designFNumber)},
             {"object_numerical_aperture", optionalJson(table.objectNumericalAperture)},

@@ -24,18 +24,34 @@ cmake --build build-fuzz -j"${LENSLAB_JOBS:-2}" --target "${targets[@]/#/fuzz_}"
 
 rm -rf build-fuzz/findings
 mkdir -p build-fuzz/findings
-for t in "${targets[@]}"; do
-  work="build-fuzz/corpus-$t"
-  log="build-fuzz/fuzz-$t.log"
+# Fuzzes one target; prints its statistics, or its log's tail and where the reproducer is.
+fuzz_one() {
+  local t=$1 work="build-fuzz/corpus-$1" log="build-fuzz/fuzz-$1.log"
   rm -rf "$work"
   cp -r "tests/fuzz/corpus/$t" "$work"
-  echo "fuzz.sh: fuzz_$t for ${seconds}s (log: $log)"
   # -timeout: an input taking 10 s counts as a hang; -rss_limit_mb catches runaway allocation.
   if ! build-fuzz/tests/fuzz/fuzz_"$t" "$work" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
       -max_len=4096 -print_final_stats=1 -artifact_prefix=build-fuzz/findings/"$t"- >"$log" 2>&1; then
     tail -n 60 "$log"
     echo "fuzz.sh: fuzz_$t found a problem; reproducer in build-fuzz/findings/"
-    exit 1
+    return 1
   fi
+  echo "fuzz.sh: fuzz_$t for ${seconds}s (log: $log)"
   grep -E '^(Done|stat::)' "$log"
+}
+
+# As many targets at once as the build uses cores (each fuzzer is one process on one core).
+jobs_at_once="${LENSLAB_JOBS:-2}"
+failed=0
+for ((i = 0; i < ${#targets[@]}; i += jobs_at_once)); do
+  pids=()
+  for t in "${targets[@]:i:jobs_at_once}"; do
+    fuzz_one "$t" >"build-fuzz/fuzz-$t.out" 2>&1 &
+    pids+=($!)
+  done
+  for j in "${!pids[@]}"; do
+    wait "${pids[$j]}" || failed=1
+    cat "build-fuzz/fuzz-${targets[$((i + j))]}.out"
+  done
 done
+exit "$failed"

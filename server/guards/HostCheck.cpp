@@ -2,19 +2,13 @@
 
 #include <arpa/inet.h>
 
-#include <algorithm>
-#include <cctype>
 
 #include "core/CommaList.h"
+#include "core/LowerCase.h"
 
 namespace lenslab {
 
 namespace {
-
-std::string lowerCase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-    return text;
-}
 
 // "name:port", "[v6]:port" or either without a port -> the name or address alone; a fully
 // qualified name's final dot ("localhost.") dropped, as DNS does.

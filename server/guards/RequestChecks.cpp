@@ -1,8 +1,9 @@
 #include "guards/RequestChecks.h"
 
 #include <algorithm>
-#include <cctype>
 #include <string>
+
+#include "core/LowerCase.h"
 
 namespace lenslab {
 
@@ -10,11 +11,6 @@ namespace {
 
 bool sendsBody(const httplib::Request& req) {
     return req.has_header("Content-Length") || req.has_header("Transfer-Encoding");
-}
-
-std::string lowerCase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-    return text;
 }
 
 // The declared body length when it is a plain number.

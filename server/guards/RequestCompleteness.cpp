@@ -1,17 +1,12 @@
 #include "guards/RequestCompleteness.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdlib>
+
+#include "core/LowerCase.h"
 
 namespace lenslab {
 
 namespace {
-
-std::string lowerCase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-    return text;
-}
 
 // The value of header `name` (lower case, with its colon) in `head`, or "" when absent.
 std::string headerValue(const std::string& head, const std::string& name) {

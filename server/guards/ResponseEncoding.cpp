@@ -1,19 +1,13 @@
 #include "guards/ResponseEncoding.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdlib>
 
 #include "core/CommaList.h"
+#include "core/LowerCase.h"
 
 namespace lenslab {
 
 namespace {
-
-std::string lowerCase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-    return text;
-}
 
 // A coding's quality ("gzip;q=0.5" -> 0.5); 1 without one.
 double quality(const std::string& coding) {

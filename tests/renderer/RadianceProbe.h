@@ -2,8 +2,6 @@
 // Helpers for light and integrator tests: a parsed scene with its geometry and an integrator, to
 // measure the radiance along chosen rays; image files written through OpenImageIO; lights made
 // straight from parameters.
-#include <OpenImageIO/imageio.h>
-
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +10,7 @@
 #include "lights/Light.h"
 #include "scene/SceneDescription.h"
 #include "geometry/SceneGeometry.h"
+#include "SceneParams.h"
 
 namespace lenslab::test {
 
@@ -46,14 +45,9 @@ private:
 };
 
 // Writes RGB float pixels (row-major, top row first) as `path`; the format follows the extension,
-// stored as 8-bit where the format is (PNG).
-inline void writeImage(const std::string& path, int width, int height, const std::vector<float>& rgb) {
-    auto out = OIIO::ImageOutput::create(path);
-    const bool eightBit = path.size() > 4 && path.substr(path.size() - 4) == ".png";
-    OIIO::ImageSpec spec(width, height, 3, eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
-    if (!out || !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()) || !out->close())
-        throw std::runtime_error("cannot write test image " + path);
-}
+// stored as 8-bit where the format is (PNG). In RadianceProbe.cpp: OpenImageIO's headers cost each
+// file that includes them 4 CPU seconds to compile.
+void writeImage(const std::string& path, int width, int height, const std::vector<float>& rgb);
 
 // A light from `LightSource "type"` with the given parameters, under `lightToWorld`.
 inline std::unique_ptr<Light> lightFrom(const std::string& type, std::vector<Param> params,
@@ -62,30 +56,6 @@ inline std::unique_ptr<Light> lightFrom(const std::string& type, std::vector<Par
     const ParamSet p(SourceLocation{"test", 1, "LightSource \"" + type + "\""}, std::move(params));
     return makeLight(type, p, lightToWorld, SceneDialect::PbrtV3, [](const std::string& name, const SourceLocation&) { return name; },
                      warnings);
-}
-
-inline Param stringParam(const std::string& name, const std::string& value) {
-    Param p;
-    p.type = ParamType::String;
-    p.name = name;
-    p.strings = {value};
-    return p;
-}
-
-inline Param rgbParam(const std::string& name, Vec3f c) {
-    Param p;
-    p.type = ParamType::Rgb;
-    p.name = name;
-    p.numbers = {c.x, c.y, c.z};
-    return p;
-}
-
-inline Param floatParam(const std::string& name, double v) {
-    Param p;
-    p.type = ParamType::Float;
-    p.name = name;
-    p.numbers = {v};
-    return p;
 }
 
 }  // namespace lenslab::test

@@ -9,17 +9,10 @@
 
 #include "materials/Material.h"
 #include "Render.h"
+#include "SceneParams.h"
 #include "textures/Texture.h"
 
 namespace lenslab::test {
-
-inline Param floatParam(const std::string& name, double x) { return {ParamType::Float, name, {x}, {}}; }
-inline Param intParam(const std::string& name, int x) { return {ParamType::Integer, name, {double(x)}, {}}; }
-inline Param rgbParam(const std::string& name, Vec3f c) { return {ParamType::Rgb, name, {c.x, c.y, c.z}, {}}; }
-inline Param vectorParam(const std::string& name, Vec3f c) { return {ParamType::Vector3, name, {c.x, c.y, c.z}, {}}; }
-inline Param stringParam(const std::string& name, const std::string& s) { return {ParamType::String, name, {}, {s}}; }
-inline Param textureRef(const std::string& name, const std::string& s) { return {ParamType::Texture, name, {}, {s}}; }
-inline Param boolParam(const std::string& name, bool b) { return {ParamType::Bool, name, {}, {b ? "true" : "false"}}; }
 
 // Resolves names as paths; a missing file fails the way the scene parser's resolver does.
 inline std::string resolveAsIs(const std::string& name, const SourceLocation& where) {
