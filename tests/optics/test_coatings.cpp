@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <filesystem>
 #include <random>
 
@@ -122,6 +123,36 @@ TEST(ThinFilm, LosslessStacksConserveEnergyAndAreReciprocal) {
 TEST(ThinFilm, HalfWaveLayerIsAbsentAtItsDesignWavelength) {
     EXPECT_NEAR(reflectance("2.05:2q@600", 1, 1.6, 1, 600), reflectance("none", 1, 1.6, 1, 600), 1e-14);
     EXPECT_GT(std::fabs(reflectance("2.05:2q@600", 1, 1.6, 1, 450) - reflectance("none", 1, 1.6, 1, 450)), 0.01);
+}
+
+// One layer at oblique incidence against Airy's sum of the multiply reflected waves, written here
+// with complex amplitudes: r = (r12 + r23 e^{2i delta}) / (1 + r12 r23 e^{2i delta}), delta the
+// layer's phase thickness 2 pi n d cos(theta_layer) / lambda. A phase thickness without the layer's
+// cosine (every angle coated as at normal incidence) is off by 0.004 to 0.08 at 30 to 75 deg.
+TEST(ThinFilm, OneLayerAtObliqueIncidenceIsAirysSum) {
+    using C = std::complex<double>;
+    const double n1 = 1, nf = 1.38, n2 = 1.72, d = 137.5;
+    const auto airy = [&](double cos1, double nm) {
+        const double s1 = std::sqrt(1 - cos1 * cos1);
+        const double cf = std::sqrt(1 - std::pow(n1 * s1 / nf, 2)), c2 = std::sqrt(1 - std::pow(n1 * s1 / n2, 2));
+        const C phase = std::exp(C(0, 2 * (2 * M_PI * nf * d * cf / nm)));
+        double r = 0;
+        for (const bool p : {false, true}) {
+            const auto fresnel = [p](double na, double ca, double nb, double cb) {
+                return p ? (nb * ca - na * cb) / (nb * ca + na * cb) : (na * ca - nb * cb) / (na * ca + nb * cb);
+            };
+            const double r12 = fresnel(n1, cos1, nf, cf), r23 = fresnel(nf, cf, n2, c2);
+            r += 0.5 * std::norm((r12 + r23 * phase) / (1.0 + r12 * r23 * phase));
+        }
+        return r;
+    };
+    const std::vector<CoatingLayer> layer = {{nf, d}};
+    for (const double degrees : {0.0, 30.0, 45.0, 60.0, 75.0})
+        for (const double nm : {450.0, 550.0, 650.0}) {
+            const double cos1 = std::cos(degrees * M_PI / 180);
+            EXPECT_NEAR(thinFilmResponse(n1, n2, layer, false, cos1, nm).reflectance, airy(cos1, nm), 1e-12)
+                << degrees << " deg, " << nm << " nm";
+        }
 }
 
 // Real lenses: every refracting surface between air and glass is coated with MgF2 unless its row

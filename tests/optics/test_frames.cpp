@@ -3,6 +3,7 @@
 // by the closed form, and the batch trace through moved surfaces equals the scalar one to the bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -140,6 +141,37 @@ TEST(Frames, FoldMirrorAt45DegreesLeavesFirstOrderAsUnfolded) {
     EXPECT_NEAR(path[3].y, 0, 1e-12);
     // In image space the ray runs along the axis toward the film, as through the unfolded lens.
     EXPECT_NEAR(r.ray.direction.z, -1, 1e-15);
+}
+
+// Code V's alpha (ADE) and beta (BDE) turn the same way about their axes, so a lens tilted by BDE
+// and decentred along x is the one tilted by ADE and decentred along y, turned 90 degrees about the
+// axis (x -> y, y -> -x): each ray turned likewise comes out turned likewise. A beta traced with the
+// opposite sign breaks it by millimetres.
+TEST(Frames, BetaTiltIsAlphaTiltTurnedAQuarterAboutTheAxis) {
+    const std::string alpha = "rdm\nso 0 1e10\ns 40 5 1.6,40\nyde 1.5; ade 6\nsto\ns -60 30\ns 0 20\nepd 10; wl 587.56\n";
+    const std::string beta = "rdm\nso 0 1e10\ns 40 5 1.6,40\nxde -1.5; bde 6\nsto\ns -60 30\ns 0 20\nepd 10; wl 587.56\n";
+    const LensSystem a = buildLensSystem(parseCodeV(alpha, "alpha.seq"));
+    const LensSystem b = buildLensSystem(parseCodeV(beta, "beta.seq"));
+    const LensSystem plain = buildLensSystem(
+        parseCodeV("rdm\nso 0 1e10\ns 40 5 1.6,40\nsto\ns -60 30\ns 0 20\nepd 10; wl 587.56\n", "plain.seq"));
+    const auto turned = [](const Ray& r) {
+        return Ray{{-r.origin.y, r.origin.x, r.origin.z}, {-r.direction.y, r.direction.x, r.direction.z}};
+    };
+    double largestShift = 0;
+    int passed = 0;
+    for (const Ray& ray : testRays()) {
+        const TraceResult ra = traceRay(a, ray, TraceDirection::SceneToFilm);
+        const TraceResult rb = traceRay(b, turned(ray), TraceDirection::SceneToFilm);
+        ASSERT_EQ(ra.ok(), rb.ok());  // the stop (EPD 10) passes the same rays, turned
+        if (!ra.ok()) continue;
+        ++passed;
+        expectSameRay(onPlane(rb.ray, -35), turned(onPlane(ra.ray, -35)), 1e-12);
+        const Ray tilted = onPlane(ra.ray, -35), straight = onPlane(traceRay(plain, ray, TraceDirection::SceneToFilm).ray, -35);
+        largestShift = std::max(largestShift, std::hypot(tilted.origin.x - straight.origin.x, tilted.origin.y - straight.origin.y));
+    }
+    // The tilt and decentre move the rays by millimetres: the check above is not a trivial one.
+    EXPECT_GE(passed, 6);
+    EXPECT_GT(largestShift, 1.0);
 }
 
 // A plate of thickness t and index n tilted by theta shifts a ray across by t sin(theta - theta') /

@@ -6,6 +6,7 @@
 // refused naming them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "RadianceProbe.h"
@@ -78,6 +79,25 @@ TEST(FlareFrames, AutoModelsBrightEmittersInOrNearTheFrameOnly) {
     EXPECT_GT(total(all.image), total(five.image));
     EXPECT_GT(total(five.image), total(off.image));
     EXPECT_NE(all.metadata.at("lensFlare").find("45 paths of 1 point light"), std::string::npos) << all.metadata.at("lensFlare");
+}
+
+// More bright lights than auto models (kMostFlareSources, 8): the brightest are kept. Two lights
+// of 10^6 W/sr among eight of 5000: the ten's flare holds at least the two's (kept the dimmest
+// eight, it would hold about 2% of it).
+TEST(FlareFrames, AutoKeepsTheBrightestWhenMoreQualifyThanItModels) {
+    test::TempDir dir;
+    const auto flare = [&](const std::string& lights) {
+        const std::string scene = flareScene(dir, lights);
+        const RenderOutput on = renderWith(scene, "auto"), off = renderWith(scene, "off");
+        EXPECT_EQ(on.stats.flareSources, std::min(8, int(std::count(lights.begin(), lights.end(), '\n'))));
+        return total(on.image) - total(off.image);
+    };
+    const std::string bright = pointLight(-1.5, 0.8, 20, 1e6) + pointLight(1.5, -0.6, 20, 1e6);
+    std::string dim;
+    for (int i = 0; i < 8; ++i) dim += pointLight(-2 + 0.5 * i, 0.3 * (i % 3) - 0.3, 20, 5000);
+    const double brightOnly = flare(bright), all = flare(dim + bright);
+    EXPECT_GT(brightOnly, 0);
+    EXPECT_GT(all, 0.95 * brightOnly);
 }
 
 // A 256 x 128 sky, black but for one texel (1.4 deg across) of radiance 10^5: one source.
