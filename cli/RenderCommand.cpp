@@ -7,6 +7,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "ArgParser.h"
 #include "Commands.h"
 #include "LensFlags.h"
@@ -162,14 +164,17 @@ RenderSettings renderSettings(const ArgParser& p) {
     return s;
 }
 
-// The closing lines: the JSON statistics for --progress-json, the human summary otherwise.
-void printStatistics(const RenderStats& st, bool json, bool quiet, const std::vector<std::string>& outputs) {
+// The closing lines: the JSON statistics (and the render's warnings) for --progress-json, the human
+// summary otherwise.
+void printStatistics(const RenderOutput& out, bool json, bool quiet, const std::vector<std::string>& outputs) {
+    const RenderStats& st = out.stats;
     if (json) {
-        std::printf("{\"finished\":true,\"setupSeconds\":%.6f,\"renderSeconds\":%.6f,\"cameraRays\":%llu,"
-                    "\"blockedCameraRays\":%llu,\"raysTraced\":%llu,\"flarePaths\":%d,\"flareRays\":%llu,\"flareSeconds\":%.6f}\n",
-                    st.setupSeconds, st.renderSeconds, (unsigned long long)st.cameraRays,
-                    (unsigned long long)st.blockedCameraRays, (unsigned long long)st.raysTraced, st.flarePaths,
-                    (unsigned long long)st.flareRays, st.flareSeconds);
+        const nlohmann::json finished = {{"finished", true},           {"setupSeconds", st.setupSeconds},
+                                         {"renderSeconds", st.renderSeconds}, {"cameraRays", st.cameraRays},
+                                         {"blockedCameraRays", st.blockedCameraRays}, {"raysTraced", st.raysTraced},
+                                         {"flarePaths", st.flarePaths}, {"flareRays", st.flareRays},
+                                         {"flareSeconds", st.flareSeconds}, {"warnings", out.warnings}};
+        std::printf("%s\n", finished.dump().c_str());
         std::fflush(stdout);
     }
     if (quiet) return;
@@ -259,7 +264,8 @@ int runRenderCommand(const std::vector<std::string>& argsIn) {
     }
     for (const auto& o : outputs) writeImageFile(out, o, exposure);
     if (auto it = out.metadata.find("warnings"); it != out.metadata.end()) std::cerr << "warnings:\n" << it->second << "\n";
-    printStatistics(out.stats, progressJson, quiet, outputs);
+    for (const std::string& w : out.warnings) std::cerr << "warning: " << w << "\n";
+    printStatistics(out, progressJson, quiet, outputs);
     return 0;
 }
 

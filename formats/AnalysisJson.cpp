@@ -17,7 +17,10 @@ json numbers(const std::vector<double>& values) {
     return a;
 }
 
+json number(std::optional<double> v) { return v ? number(*v) : json(nullptr); }
+
 json point(Point2 p) { return json::array({p.x, p.y}); }
+json point(std::optional<Point2> p) { return p ? point(*p) : json(nullptr); }
 
 json statisticsJson(const SpotStatistics& s) {
     return {{"rms_radius_mm", s.rmsRadius}, {"geo_radius_mm", s.geometricRadius}, {"centroid_mm", point(s.centroid)}};
@@ -47,7 +50,7 @@ json fieldJson(const FieldAnalysis& f, const LensDesignAnalysis& a) {
     for (const SpotDiagram& s : f.spots) spots.push_back(spotJson(s));
     return {{"field_deg", f.fieldDegrees},
             {"traced", f.traced},
-            {"image_height_mm", std::hypot(f.chiefImage.x, f.chiefImage.y)},
+            {"image_height_mm", f.chiefImage ? json(std::hypot(f.chiefImage->x, f.chiefImage->y)) : json(nullptr)},
             {"chief_ray_image_mm", point(f.chiefImage)},
             {"reference_mm", point(f.reference)},
             {"spots", spots},
@@ -97,6 +100,8 @@ json definitionsJson(const LensDesignAnalysis& a) {
             {"pupil_sampling", "area-uniform: Gauss-Legendre rings in r^2 times equally spaced azimuths over the stop (real rays "
                                "aimed), doubled until the RMS radius moves by at most 0.1%; blocked rays take their area with them"},
             {"field", "the angle of a distant object's chief ray to the axis in object space"},
+            {"traced", "false: no ray of the field reaches the image plane (not imaged); it has no image height, distortion "
+                       "or relative illumination (null)"},
             {"wavelength_weights", "relative weights of the wavelengths in every polychromatic number"},
             {"mtf", "geometric: the spot's weighted rays; diffraction: the FFT of the pupil function; both polychromatic, "
                     "sagittal along x, tangential along y"}};

@@ -86,6 +86,10 @@ struct RenderOutput {
     RenderStats stats;
     std::map<std::string, std::string> metadata;  // camera and lens parameters, for EXR headers
     std::optional<RawMosaic> raw;  // a sensor's ADC numbers when it has a colour mosaic (a .dng output's)
+    // What the picture does not show of the scene, in words (render/RenderWarnings.h): the lens
+    // blocking most camera rays, an image circle smaller than the film. Also in the EXR header
+    // (lenslab.renderWarnings).
+    std::vector<std::string> warnings;
 };
 
 // Scene problems (file, line, directive) and bad settings.

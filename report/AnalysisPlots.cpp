@@ -13,7 +13,6 @@ namespace lenslab {
 
 namespace {
 
-constexpr double kUm = 1000;  // spot and fan plots in micrometres: the sizes designers read
 // A spot plot draws every ray up to this many per wavelength, else every k-th: more dots than a
 // plot's 280-pixel square shows only weigh on the page.
 constexpr std::size_t kMaxDrawnSpotPoints = 1000;
@@ -64,7 +63,7 @@ std::string wavelengthList(const LensDesignAnalysis& a) {
     return list + " nm";
 }
 
-const char* const kBlocked = "no ray of this field reaches the image plane";
+const char* const kBlocked = kNotImagedWhy;
 
 // A colour key per wavelength and a line-style key per section: tangential solid, sagittal dashed.
 std::vector<PlotSeries> wavelengthAndSectionLegend(const std::vector<double>& wavelengths) {
@@ -246,7 +245,7 @@ std::vector<NamedSvg> designAnalysisPlots(const LensDesignAnalysis& a, bool curv
     for (std::size_t i = 0; i < a.fields.size(); ++i) {
         const FieldAnalysis& f = a.fields[i];
         const std::string suffix = "field-" + std::to_string(i + 1), at = fieldName(f);
-        const std::string blocked = f.traced ? "" : " No ray of this field reaches the image plane.";
+        const std::string blocked = f.traced ? "" : std::string(" This field is ") + kNotImagedWhy + ".";
         plots.push_back(named("spot-" + suffix,
                               "Spot diagram at " + at + " (" + wavelengthList(a) + "): ray hits on the image plane about " +
                                   reference + "; RMS radii about " + referenceWords(a) + "." + blocked,

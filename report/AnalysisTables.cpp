@@ -11,8 +11,6 @@ namespace lenslab {
 
 namespace {
 
-constexpr double kUm = 1000;
-
 std::string exactNumber(double v) {
     if (!std::isfinite(v)) return "null";  // as designAnalysisJson writes it
     char b[40];
@@ -32,6 +30,12 @@ ShownValue number(double v, const std::string& pointer, int decimals, double sca
     return {formatFixed(v * scale, decimals), pointer, exactNumber(v), scale};
 }
 ShownValue word(const std::string& text, const std::string& pointer, const std::string& exact) { return {text, pointer, exact, 1}; }
+
+// A field's value that exists only where the field is imaged: "not imaged" where no ray of the
+// field reaches the image plane; NaN (a dash, null in the JSON) where it is imaged but unknown.
+ShownValue fieldValue(const FieldAnalysis& f, double v, const std::string& pointer, int decimals) {
+    return f.traced ? number(v, pointer, decimals) : word(kNotImaged, pointer, "null");
+}
 ShownValue label(const std::string& text) { return {text, "", "", 1}; }
 
 std::string fieldPointer(std::size_t i, const std::string& rest) { return path({"fields", index(i)}) + rest; }
@@ -112,7 +116,7 @@ std::vector<AnalysisTable> analysisTables(const LensDesignAnalysis& a, bool curv
                                   number(f.polychromatic.rmsRadius, fieldPointer(i, "/polychromatic/rms_radius_mm"), 2, kUm),
                                   number(f.polychromatic.geometricRadius, fieldPointer(i, "/polychromatic/geo_radius_mm"), 2, kUm)});
         else
-            spots.rows.push_back({field, label("polychromatic"), word("no ray reaches the image plane", fieldPointer(i, "/traced"), "false")});
+            spots.rows.push_back({field, label("polychromatic"), word(kNotImagedWhy, fieldPointer(i, "/traced"), "false")});
     }
 
     AnalysisTable fields{"fields", "Per field: the chief ray's image height on the image plane, its distortion", {"field (\u00b0)", "image height (mm)", "distortion (%)"}, {}};
@@ -122,10 +126,11 @@ std::vector<AnalysisTable> analysisTables(const LensDesignAnalysis& a, bool curv
     }
     for (std::size_t i = 0; i < a.fields.size(); ++i) {
         const FieldAnalysis& f = a.fields[i];
+        const double height = f.chiefImage ? std::hypot(f.chiefImage->x, f.chiefImage->y) : NAN;
         std::vector<ShownValue> row{number(f.fieldDegrees, fieldPointer(i, "/field_deg"), 2),
-                                    number(std::hypot(f.chiefImage.x, f.chiefImage.y), fieldPointer(i, "/image_height_mm"), 4),
-                                    number(f.distortionPercent, fieldPointer(i, "/distortion_percent"), 3)};
-        if (curves) row.push_back(number(f.relativeIllumination, fieldPointer(i, "/relative_illumination"), 3));
+                                    fieldValue(f, height, fieldPointer(i, "/image_height_mm"), 4),
+                                    fieldValue(f, f.distortionPercent.value_or(NAN), fieldPointer(i, "/distortion_percent"), 3)};
+        if (curves) row.push_back(fieldValue(f, f.relativeIllumination.value_or(NAN), fieldPointer(i, "/relative_illumination"), 3));
         fields.rows.push_back(row);
     }
 

@@ -32,6 +32,14 @@ struct AnalysisTable {
     std::vector<std::vector<ShownValue>> rows;
 };
 
+// Spot radii and fans are shown in micrometres, the sizes designers read: micrometres per mm.
+inline constexpr double kUm = 1000;
+
+// What every view shows for a field no ray of which reaches the image plane, in place of its image
+// height, distortion and illumination, and (with why) in place of its spot.
+inline constexpr const char* kNotImaged = "not imaged";
+inline constexpr const char* kNotImagedWhy = "not imaged: no ray reaches the image plane";
+
 // f-number, focus, image plane and its z (and the other planes'), reference point, primary
 // wavelength, largest field and its source, central obscuration, the MTF's range.
 std::vector<AnalysisSetting> analysisSettings(const LensDesignAnalysis& analysis);

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,9 @@ struct ReportOptions {
     std::vector<std::string> lenses;
     // Paths of further lens tables (uploaded lenses) added to those; a repeated id gets a suffix.
     std::vector<std::string> extraLenses;
+    // What to call a lens given by its path (an upload, stored under an id: the file name it was
+    // uploaded as): its heading and the file its `lenslab lens` line names. Else its id and file.
+    std::map<std::string, std::string> lensNames;
     // Lenses rendered through every scene with a realistic camera (those of them in the report).
     std::vector<std::string> renderLenses = {"dgauss.50mm", "wide.22mm", "telephoto.250mm", "fisheye.10mm"};
     std::optional<double> fstop;      // tables and diagrams; nullopt: each lens at its widest

@@ -1,6 +1,7 @@
 #include "LensItems.h"
 
 #include <exception>
+#include <filesystem>
 
 #include "AnalysisJson.h"
 #include "AnalysisPlots.h"
@@ -12,6 +13,7 @@
 #include "analysis/LensDesignAnalysis.h"
 #include "LensDiagram.h"
 #include "SiteFiles.h"
+#include "prescription/NumberText.h"
 
 namespace lenslab {
 
@@ -40,13 +42,23 @@ LensSettings tableSettings(const ReportOptions& o, const std::string& path) {
     return s;
 }
 
-// lenslab analyze's plots and data for the lens at the tables' settings, cached like the tables.
-DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const std::string& path, const LensSettings& settings,
-                             const ReportOptions& o) {
+// The designer's analysis as the web page first shows it and `lenslab analyze` makes it: the widest
+// aperture focused at infinity, or the report's --fstop and --focus where given (not the tables'
+// 2 m default focus, which would part the report's numbers from the page's).
+LensSettings designSettings(const ReportOptions& o) {
+    LensSettings s;
+    if (o.fstop) s.fstop = Setting{*o.fstop, "report --fstop"};
+    if (o.focusGiven) s.focusDistance = Setting{o.focusDistance, "report --focus"};
+    return s;
+}
+
+// lenslab analyze's plots and data for the lens at designSettings, cached like the tables.
+DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const std::string& path, const ReportOptions& o) {
     DesignPlots design;
+    const LensSettings settings = designSettings(o);
     const std::string label = "analysis " + id;
     InputsHash h = itemInputs("analysis");
-    h.addFile(path).add(o.fstop.value_or(0)).add(o.focusDistance);
+    h.addFile(path).add(o.fstop.value_or(0)).add(settings.focusDistance ? settings.focusDistance->value : 0.0);  // 0: infinity
     const std::string folder = "assets/lenses/" + id + "-analysis/";
     const ManifestItem* item = runner.run("analysis/" + id, label, h.hex(), [&] {
         DesignAnalysisInputs inputs;
@@ -54,6 +66,7 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
         const LensDesignAnalysis a = analyzeLensDesign(loadLensSystem(path), inputs);
         ManifestItem m;
         m.data = {{"fstop", a.lens.fstop},
+                  {"focus", a.lens.focus.infinity ? "infinity" : formatNumber(a.lens.focus.objectZ - a.lens.lens.frontZ()) + " mm"},
                   {"settings_html", analysisSettingsHtml(a)},
                   {"tables_html", analysisTablesHtml(a)},
                   {"captions", json::array()}};
@@ -80,6 +93,7 @@ DesignPlots buildDesignPlots(ItemRunner& runner, const std::string& id, const st
     design.jsonFile = item->files.front();
     design.plots.assign(item->files.begin() + 1, item->files.end());
     design.fstop = item->data.value("fstop", 0.0);
+    design.focus = item->data.value("focus", std::string());
     design.captions = item->data.value("captions", std::vector<std::string>{});
     design.settingsHtml = item->data.value("settings_html", std::string());
     design.tablesHtml = item->data.value("tables_html", std::string());
@@ -113,6 +127,9 @@ LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::s
         entry.facts.error = "the lens data could not be stored (see the problems list)";
     }
     entry.facts.path = path;
+    const auto given = o.lensNames.find(path);
+    entry.name = given != o.lensNames.end() ? given->second : id;
+    entry.fileName = given != o.lensNames.end() ? given->second : std::filesystem::path(path).filename().string();
     if (entry.facts.error.empty()) entry.jsonFile = jsonFile;
 
     for (const char* mode : {"exact", "thick", "overlay"}) {
@@ -138,7 +155,7 @@ LensEntry buildLensEntry(ItemRunner& runner, const std::string& id, const std::s
         if (item) entry.diagrams.push_back({mode, image, d.width, d.height});
         else entry.problem = "a diagram could not be drawn (see the problems list)";
     }
-    if (entry.facts.error.empty()) entry.design = buildDesignPlots(runner, id, path, settings, o);
+    if (entry.facts.error.empty()) entry.design = buildDesignPlots(runner, id, path, o);
     else runner.skip("analysis " + id);
     return entry;
 }

@@ -192,6 +192,7 @@ ColourFringes buildColourFringes(ItemRunner& runner, const SceneSource& chart, c
     ColourFringes c;
     const int height = heightFor(chart, plan.width);
     const double fstop = renderFstopFor(lens, o.renderFstop);
+    c.fstop = fstop;
     const std::optional<RenderRecord> spectral =
         renderItem(runner, RenderJob{chart, lens, "exact", plan.spp, plan.width, height, fstop, plan.ghostModel, true}, o.threads);
     const std::optional<RenderRecord> rgb =

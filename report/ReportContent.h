@@ -29,6 +29,7 @@ struct RenderRecord {
 // A dispersive lens through the lateral colour chart: the spectral render (colour fringes) beside
 // the RGB render at the lens's own wavelength (none).
 struct ColourFringes {
+    double fstop = 0;  // the chart's f-number, asked for (the renders' when they are made)
     RenderRecord spectral, rgb;
     std::string problem;  // why they are missing
 };
@@ -40,6 +41,7 @@ struct DesignPlots {
     std::vector<std::string> captions;  // each plot's
     std::string jsonFile;
     double fstop = 0;
+    std::string focus;                     // "infinity" or the distance, "2000 mm"
     std::string settingsHtml, tablesHtml;  // the settings and the numbers, each marked with its place in the JSON
     std::string problem;                   // why they are missing
     nlohmann::json ghosts;                 // the ghost analysis (ghostAnalysisJson), its plot the last of `plots`
@@ -47,6 +49,8 @@ struct DesignPlots {
 
 struct LensEntry {
     LensFacts facts;
+    std::string name;      // its heading: the id, or the name it was given (ReportOptions::lensNames)
+    std::string fileName;  // the file `lenslab lens` reads: the name given, else the file's own
     std::vector<DiagramImage> diagrams;
     DesignPlots design;
     std::string jsonFile;  // the table's JSON, as `lenslab lens --json` prints it

@@ -178,7 +178,7 @@ Plot distortionPlot(const LensFacts& f) {
 // The chart through a dispersive lens: a wavelength per sample through the glasses' dispersion,
 // beside every ray at the lens's own wavelength.
 void colourFringes(std::ostringstream& out, const LensFacts& f, const ColourFringes& c) {
-    out << "<section class=\"colour\">\n<h4>Lateral colour: the chart at f/" << formatNumber(c.spectral.fstop, 3) << "</h4>\n";
+    out << "<section class=\"colour\">\n<h4>Lateral colour: the chart at f/" << formatFNumber(c.fstop) << "</h4>\n";
     if (!c.problem.empty()) {
         out << "<p class=\"problem\">" << escapeMarkup(c.problem) << "</p>\n</section>\n";
         return;
@@ -225,10 +225,10 @@ void ghostTable(std::ostringstream& out, const nlohmann::json& g) {
 }
 
 // lenslab analyze's plots for the lens, each an SVG file opened full size by a click.
-void designSection(std::ostringstream& out, const LensFacts& f, const DesignPlots& d) {
+void designSection(std::ostringstream& out, const LensFacts& f, const std::string& fileName, const DesignPlots& d) {
     if (d.plots.empty() && d.problem.empty()) return;  // not asked for
     out << "<section class=\"analysis\" data-lens=\"" << escapeMarkup(f.id) << "\">\n<h4>The lens designer's analysis at f/"
-        << formatFNumber(d.fstop) << "</h4>\n";
+        << formatFNumber(d.fstop) << ", focused at " << escapeMarkup(d.focus) << "</h4>\n";
     if (!d.problem.empty()) {
         out << "<p class=\"problem\">" << escapeMarkup(d.problem) << "</p>\n</section>\n";
         return;
@@ -243,13 +243,19 @@ void designSection(std::ostringstream& out, const LensFacts& f, const DesignPlot
     out << "</div>\n";
     if (d.ghosts.contains("ghosts")) ghostTable(out, d.ghosts);
     out << "<p class=\"download\"><a href=\"" << escapeMarkup(d.jsonFile)
-        << "\">The analysis as JSON</a> (the output of <code>lenslab analyze " << escapeMarkup(f.id)
+        << "\">The analysis as JSON</a> (the output of <code>lenslab analyze " << escapeMarkup(fileName)
         << " --json</code> with the settings above; the ghosts: <code>--ghosts --json</code>).</p>\n</section>\n";
+}
+
+// What a lens file holds, by its content: an upload is stored under an id whatever it was.
+std::string lensFileKind(const LensFacts& f) {
+    const std::string format = f.analysis.value("format", std::string());
+    return format == "zmx" ? "a Zemax .zmx prescription" : format == "seq" ? "a Code V .seq prescription" : "a lens table (.dat)";
 }
 
 void lensArticle(std::ostringstream& out, const LensEntry& lens) {
     const LensFacts& f = lens.facts;
-    out << "<article class=\"lens\" id=\"" << escapeMarkup(lensAnchor(f.id)) << "\">\n<h3>" << escapeMarkup(f.id) << "</h3>\n";
+    out << "<article class=\"lens\" id=\"" << escapeMarkup(lensAnchor(f.id)) << "\">\n<h3>" << escapeMarkup(lens.name) << "</h3>\n";
     if (!f.description.empty()) out << "<p class=\"design\">" << escapeMarkup(f.description) << "</p>\n";
     if (!f.error.empty()) {
         out << "<p class=\"problem\">This lens could not be analysed: " << escapeMarkup(f.error) << "</p>\n</article>\n";
@@ -274,10 +280,11 @@ void lensArticle(std::ostringstream& out, const LensEntry& lens) {
         out << figure(svgPlot(distortionPlot(f)), "Chief ray height on the F\u2032 plane against f tan \u03b8; negative is barrel.");
     }
     out << "</div>\n";
-    designSection(out, f, lens.design);
+    designSection(out, f, lens.fileName, lens.design);
     if (lens.colourFringes) colourFringes(out, f, *lens.colourFringes);
     out << "<p class=\"download\"><a href=\"" << escapeMarkup(lens.jsonFile) << "\">The table as JSON</a> (the output of <code>lenslab lens "
-        << escapeMarkup(f.id) << ".dat --json</code> with the settings above).</p>\n</article>\n";
+        << escapeMarkup(lens.fileName) << " --json</code> with the settings above; " << lensFileKind(f)
+        << ").</p>\n</article>\n";
 }
 
 void statsTable(std::ostringstream& out, const RenderPair& pair) {
@@ -347,13 +354,13 @@ void comparisonPlots(std::ostringstream& out, const ReportContent& c) {
     distortion.y.label = "distortion (%)";
     for (const LensEntry& l : c.lenses) {
         if (!l.facts.error.empty()) continue;
-        PlotSeries s{l.facts.id, {}, {}};
+        PlotSeries s{l.name, {}, {}};
         for (const auto& i : l.facts.illumination) {
             s.x.push_back(i.filmRadius);
             s.y.push_back(i.relativeIllumination);
         }
         light.series.push_back(s);
-        distortion.series.push_back(distortionSeries(l.facts, l.facts.id));
+        distortion.series.push_back(distortionSeries(l.facts, l.name));
     }
     out << "<div class=\"plots wide\">\n"
         << figure(svgPlot(light), "Each curve ends at the lens's image circle; the lenses at the f-number of their tables.")
@@ -419,7 +426,7 @@ std::string reportHtml(const ReportContent& c) {
     out << "</ul>\n<nav aria-label=\"Contents\">\n<ol>\n<li><a href=\"#conventions\">Conventions</a></li>\n"
            "<li><a href=\"#lenses\">Lenses</a>:";
     for (const LensEntry& l : c.lenses)
-        out << " <a href=\"#" << escapeMarkup(lensAnchor(l.facts.id)) << "\">" << escapeMarkup(l.facts.id) << "</a>";
+        out << " <a href=\"#" << escapeMarkup(lensAnchor(l.facts.id)) << "\">" << escapeMarkup(l.name) << "</a>";
     out << "</li>\n<li><a href=\"#renders\">Renders</a>:";
     for (const ReportScene& s : c.scenes)
         out << " <a href=\"#" << escapeMarkup(sceneAnchor(s.scene.id)) << "\">" << escapeMarkup(s.scene.id) << "</a>";

@@ -90,17 +90,18 @@ EdgeComparison compareSlantedEdge(const EdgeCase& c) {
     in.frequencies = kFrequencies;
     const LensDesignAnalysis analysis = analyzeLensDesign(lens, in);
     const FieldAnalysis& field = analysis.fields.front();
-    if (!field.traced) throw std::runtime_error("slanted edge: no ray of the " + formatNumber(out.fieldDegrees) + " degree field reaches the film");
+    if (!field.chiefImage) throw std::runtime_error("slanted edge: no ray of the " + formatNumber(out.fieldDegrees) + " degree field reaches the film");
+    const Point2 chief = *field.chiefImage;
     out.fstop = analysis.lens.fstop;
 
     // The analysis's field lies toward +y and images toward -y; the sagittal edges lie below the axis.
     const double sign = c.direction == MtfDirection::Sagittal ? -1.0 : 1.0;
-    const int x0 = int(std::lround(film.rasterX(field.chiefImage.x))) - c.cropPixels / 2;
-    const int y0 = int(std::lround(film.rasterY(sign * field.chiefImage.y))) - c.cropPixels / 2;
+    const int x0 = int(std::lround(film.rasterX(chief.x))) - c.cropPixels / 2;
+    const int y0 = int(std::lround(film.rasterY(sign * chief.y))) - c.cropPixels / 2;
     // The crop's window starts half a pixel before x0 (edgeRender), so x0 = 0 is off the film too.
     if (x0 < 1 || y0 < 1 || x0 + c.cropPixels > kFilmWidthPixels || y0 + c.cropPixels > kFilmHeightPixels)
         throw std::out_of_range("slanted edge: the chart's " + formatNumber(c.chartStep * kChartStepDegrees) +
-                                " degree edge images off the film (chief ray at " + formatNumber(field.chiefImage.y) + " mm)");
+                                " degree edge images off the film (chief ray at " + formatNumber(chief.y) + " mm)");
     std::vector<double> cycles;
     for (double nu : analysis.frequencies) cycles.push_back(nu * film.pixelMm);
     out.edge = slantedEdgeSfr(luminance(renderScene(edgeRender(c, settings, x0, y0)).image), cycles);

@@ -73,8 +73,11 @@ export function showAnalysis(analysis, label) {
   // A bundled table's name is its path: the file's name is enough beside the lens's id.
   const file = (analysis.name || "").split("/").pop();
   const name = file && file !== label ? `${file} (${label})` : label;
+  // A field no ray reaches (traced false) has no image height, distortion or illumination: named here too.
+  const notImaged = analysis.fields.filter((f) => !f.traced).map((f) => `${f.field_deg.toFixed(2)}°`);
   $("analysis-status").textContent = `${name}: ${analysis.fields.length} field${analysis.fields.length > 1 ? "s" : ""}, ` +
-    `wavelengths ${analysis.wavelengths_nm.map((w) => w.toFixed(1)).join(", ")} nm`;
+    `wavelengths ${analysis.wavelengths_nm.map((w) => w.toFixed(1)).join(", ")} nm` +
+    (notImaged.length ? `; not imaged: ${notImaged.join(", ")}` : "");
   const section = $("analysis");
   section.dataset.state = "shown";
   section.dataset.lens = label;

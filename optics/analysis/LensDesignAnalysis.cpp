@@ -38,13 +38,15 @@ std::optional<Point2> chiefImage(const LensSystem& lens, const FieldAim& aim, do
     return Point2{p->x, p->y};
 }
 
-double interpolate(const std::vector<IlluminationSample>& curve, double radius) {
+// The curve's value at a film radius; none beyond the radii it was sampled at (a field given in
+// degrees past the largest field): the curve says nothing there.
+std::optional<double> interpolate(const std::vector<IlluminationSample>& curve, double radius) {
     for (std::size_t k = 1; k < curve.size(); ++k)
-        if (radius <= curve[k].filmRadius) {
+        if (radius <= curve[k].filmRadius * (1 + 1e-12)) {
             const double t = (radius - curve[k - 1].filmRadius) / (curve[k].filmRadius - curve[k - 1].filmRadius);
             return curve[k - 1].relativeIllumination + t * (curve[k].relativeIllumination - curve[k - 1].relativeIllumination);
         }
-    return curve.empty() ? kNaN : curve.back().relativeIllumination;
+    return std::nullopt;
 }
 
 // The rays of one field at every wavelength, traced once; nothing for a wavelength the field cannot be aimed at.
@@ -120,7 +122,6 @@ public:
         const double z = out_.imageZ;
         const std::optional<FieldAim>& primaryAim = rays.aims[primary_];
         const std::optional<Point2> chief = primaryAim ? chiefImage(lenses_[primary_], *primaryAim, z) : std::nullopt;
-        f.chiefImage = chief.value_or(Point2{});
         // The polychromatic spot on the image plane fixes the reference point.
         std::vector<Point2> points;
         std::vector<double> weights;
@@ -130,6 +131,7 @@ public:
                 weights.push_back(out_.weights[j] * rays.rays[j].weight[i]);
             }
         f.traced = !points.empty();
+        if (f.traced) f.chiefImage = chief;
         const bool aboutChief = out_.reference == SpotReference::ChiefRay && chief;
         const SpotStatistics all = spotStatistics(points, weights, aboutChief ? chief : std::nullopt);
         f.reference = aboutChief ? *chief : all.centroid;
@@ -142,7 +144,7 @@ public:
         // side, then summed in their order, so the result does not depend on the thread count.
         std::vector<WavelengthTrace> traces(lenses_.size());
         tbb::parallel_for(std::size_t(0), lenses_.size(), [&](std::size_t j) {
-            traces[j] = traceWavelength(lenses_[j], rays.aims[j], f.chiefImage);
+            traces[j] = traceWavelength(lenses_[j], rays.aims[j], chief.value_or(Point2{}));
         });
         std::vector<std::complex<double>> sagittal(out_.frequencies.size()), tangential(out_.frequencies.size());
         double weightTotal = 0;
@@ -347,8 +349,16 @@ LensDesignAnalysis analyzeLensDesign(const LensSystem& lensAsBuilt, const Design
             out.fieldCurvature.push_back(fieldCurvature(lenses[j], objectZ, out.imageZ, out.curveFieldDegrees));
         out.distortion = distortionCurve(lensP, out.lens.firstOrder, largest, in.curveSamples);
     }
-    for (FieldAnalysis& f : out.fields)
-        if (f.fieldDegrees > 0) f.distortionPercent = distortionCurve(lensP, out.lens.firstOrder, f.fieldDegrees, 2).back().distortionPercent;
+    // Each imaged field's distortion (on the axis its limit, 0).
+    for (FieldAnalysis& f : out.fields) {
+        if (!f.traced) continue;
+        if (f.fieldDegrees == 0) {
+            f.distortionPercent = 0.0;
+            continue;
+        }
+        const DistortionSample d = distortionCurve(lensP, out.lens.firstOrder, f.fieldDegrees, 2).back();
+        if (d.found) f.distortionPercent = d.distortionPercent;
+    }
 
     // Relative illumination out to the largest field's image height, read at each field's.
     const std::optional<FieldAim> edge = largest > 0 ? aimField(lensP, {largest, objectZ}) : std::nullopt;
@@ -365,8 +375,7 @@ LensDesignAnalysis analyzeLensDesign(const LensSystem& lensAsBuilt, const Design
         }
     }
     for (FieldAnalysis& f : out.fields)
-        f.relativeIllumination = f.fieldDegrees == 0 ? (out.illumination.empty() ? kNaN : 1.0)
-                                                     : interpolate(out.illumination, std::hypot(f.chiefImage.x, f.chiefImage.y));
+        if (f.chiefImage) f.relativeIllumination = interpolate(out.illumination, std::hypot(f.chiefImage->x, f.chiefImage->y));
 
     out.focalShift = chromaticFocalShift(lensP, objectZ, out.wavelengths);
     std::vector<double> spectrum;

@@ -72,8 +72,10 @@ constexpr double kDefaultMaxFrequency = 200;
 
 struct FieldAnalysis {
     double fieldDegrees = 0;
-    bool traced = false;                 // some ray of the field reaches the image plane
-    Point2 chiefImage;                   // the primary chief ray on the image plane (lens x, y), mm
+    bool traced = false;                 // some ray of the field reaches the image plane; false: "not imaged"
+    // The primary chief ray on the image plane (lens x, y), mm; none where the field is not imaged
+    // or its chief ray cannot be traced: a field no light reaches has no image height.
+    std::optional<Point2> chiefImage;
     Point2 reference;                    // where the spots' points are measured from, mm
     std::vector<SpotDiagram> spots;      // per wavelength
     SpotStatistics polychromatic;        // every wavelength's rays with their weights
@@ -81,8 +83,9 @@ struct FieldAnalysis {
     std::vector<double> rmsWavefrontWaves;  // per wavelength; NaN where the wavefront could not be traced
     // Polychromatic (weighted) MTF at LensDesignAnalysis::frequencies.
     std::vector<double> geometricSagittal, geometricTangential, diffractionSagittal, diffractionTangential;
-    double distortionPercent = 0;
-    double relativeIllumination = 0;     // at the primary chief ray's image height
+    // Both none where the field is not imaged, or its chief ray (or the illumination curve) is unknown.
+    std::optional<double> distortionPercent;
+    std::optional<double> relativeIllumination;  // at the primary chief ray's image height
 };
 
 struct ImagePlanes {

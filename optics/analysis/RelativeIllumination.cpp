@@ -147,11 +147,15 @@ std::vector<IlluminationSample> relativeIllumination(const LensSystem& lens, dou
 
 double imageCircleRadius(const LensSystem& lens, double filmZ, double limit) {
     requireFilmBehindLens(lens, filmZ);
-    FilmPointProbe probe(lens, filmZ, int(lens.surfaces.size()) - 1);
+    // Aimed through the rear vertex's plane, else the front vertex's, as relativeIllumination aims
+    // (a cover glass at the film, a mirror lens whose rear plane no passing ray crosses near the axis).
+    FilmPointProbe nearProbe(lens, filmZ, int(lens.surfaces.size()) - 1), farProbe(lens, filmZ, 0);
+    FilmPointProbe* probe = &nearProbe;
     auto anyPasses = [&](double r) {
-        const Box b = passingBounds(probe, r);
+        const Box b = passingBounds(*probe, r);
         return b.x1 > b.x0;
     };
+    if (!anyPasses(0.0)) probe = &farProbe;
     if (!anyPasses(0.0)) return 0.0;
     if (anyPasses(limit)) return limit;
     double lo = 0, hi = limit;

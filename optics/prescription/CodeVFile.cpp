@@ -162,6 +162,7 @@ struct Reader {
     LensTable t;
     RawSurface object, image;
     bool haveObject = false, haveImage = false;
+    bool closed = false;  // GO read: the file's last line, so nothing after it was lost
     std::vector<RawSurface> surfaces;
     RawSurface* current = nullptr;
     std::vector<double> wavelengths, weights;
@@ -548,6 +549,8 @@ void readApertureRotation(Reader& r, const Command& c) {
 
 void ignore(Reader&, const Command&) {}
 
+void readGo(Reader& r, const Command&) { r.closed = true; }
+
 // CUF is zero in every file seen; anything else would change the surface.
 void readZeroOnly(Reader& r, const Command& c) {
     for (std::size_t i = 0; i < c.words.size(); ++i)
@@ -574,7 +577,7 @@ const std::unordered_map<std::string, Handler>& handlers() {
             {"ADE", readTilt}, {"BDE", readTilt}, {"CDE", readTilt}, {"DAR", readFrameMode},
             {"BEN", readFrameMode}, {"REV", readFrameMode}, {"CIR", readAperture}, {"REX", readAperture},
             {"REY", readAperture}, {"ELX", readAperture}, {"ELY", readAperture}, {"ADX", readApertureDecentre},
-            {"ADY", readApertureDecentre}, {"ARO", readApertureRotation}, {"CUF", readZeroOnly}, {"GO", ignore},
+            {"ADY", readApertureDecentre}, {"ARO", readApertureRotation}, {"CUF", readZeroOnly}, {"GO", readGo},
             // Display, optimisation, tolerancing and bookkeeping: they change no surface.
             {"INI", ignore}, {"TEM", ignore}, {"PRE", ignore}, {"VUX", ignore}, {"VLX", ignore}, {"VUY", ignore},
             {"VLY", ignore}, {"CA", ignore}, {"POL", ignore}, {"PIM", ignore}, {"CLS", ignore}, {"PIK", ignore},
@@ -771,7 +774,14 @@ LensTable parseCodeV(const std::string& bytes, const std::string& name) {
         h->second(r, named);
     }
     if (commands.empty()) r.fail(1, "empty file: no Code V commands");
-    return assemble(r, lastLine);
+    LensTable t = assemble(r, lastLine);
+    // A file cut short loses its last surfaces and still reads as a lens: without the image surface
+    // and the closing GO nothing shows the end was reached.
+    if (!r.haveImage && !r.closed)
+        t.warnings.push_back({lastLine, name + " ends at line " + std::to_string(lastLine) +
+                                            " with neither an image surface (SI) nor GO: the file may be cut short; read as the " +
+                                            std::to_string(t.rows.size()) + " surfaces it gives"});
+    return t;
 }
 
 bool looksLikeCodeV(const std::string& text) {

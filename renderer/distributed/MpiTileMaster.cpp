@@ -15,6 +15,7 @@
 
 #include "MasterSignalNote.h"
 #include "TileMessages.h"
+#include "render/RenderWarnings.h"
 #include "render/SplatImage.h"
 
 namespace lenslab {
@@ -86,6 +87,7 @@ public:
         out.stats.cameraRays = counters_.cameraRays;
         out.stats.blockedCameraRays = counters_.blockedCameraRays;
         out.stats.raysTraced = counters_.raysTraced;
+        addRenderWarnings(out, frame_);
         return result;
     }
 

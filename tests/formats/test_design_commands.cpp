@@ -1,6 +1,7 @@
 // `lenslab optimise` and `lenslab tolerance` run as a user runs them: the optimised lens written and
 // read back at the merit it reached, the tolerance run's results and as-built lenses on disk, and
-// bad inputs refused with the file and the problem named.
+// bad inputs refused with the file and the problem named. Then what `lenslab analyze` and `lenslab
+// lens` say of light that never arrives and of a file cut short (issue 38).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -111,4 +112,48 @@ TEST(DesignCommands, BadInputsAreRefusedByName) {
     r = runLenslab("tolerance " + kTriplet + " --spec " + notJson + " --trials 2");
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.out.find(notJson + ": not JSON"), std::string::npos) << r.out;
+}
+
+TEST(AnalyzeCommand, AFieldNoRayReachesIsNotImagedInTextAndJson) {
+    // dgauss.50mm passes no ray at 60 degrees: no image height, distortion or illumination there
+    // (they printed 0.0000, 0.000 and 1.000).
+    const std::string lens = LENSLAB_SOURCE_DIR "/lenses/dgauss.50mm.dat";
+    const CommandRun text = runLenslab("analyze " + lens + " --fields 20,60deg --wavelengths d");
+    ASSERT_EQ(text.status, 0) << text.out;
+    EXPECT_NE(text.out.find("\n20.00  18.1378  -1.074  0.295\n"), std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("\n60.00  not imaged  not imaged  not imaged\n"), std::string::npos) << text.out;
+    const CommandRun json = runLenslab("analyze " + lens + " --fields 20,60deg --wavelengths d --json");
+    ASSERT_EQ(json.status, 0) << json.out;
+    const nlohmann::json field = nlohmann::json::parse(json.out).at("fields").at(1);
+    EXPECT_EQ(field.at("traced"), false);
+    for (const char* key : {"image_height_mm", "distortion_percent", "relative_illumination"}) EXPECT_TRUE(field.at(key).is_null()) << key;
+}
+
+TEST(LensCommand, ACodeVFileCutShortIsReadWithAWarningNamingItsLastLine) {
+    // ag_dblgauss.seq (shared/realworld/prescriptions) cut after line 31: its last two surfaces,
+    // SI and GO lost. It reads as 9 surfaces of EFL 336.99 mm (the whole file: 100.00), so it says so.
+    const test::TempDir dir;
+    const std::string cut = dir.write("ag_dblgauss-cut.seq",
+        "RDM N;LEN      \"VERSION: 10.7       LENS VERSION: 80       Creation Date: 16-Jul-2015\"\n"
+        "TITLE 'Double Gauss F/2 -  Available Glasses'\n"
+        "EPD   50.0\nDIM   M\nWL    656.3 587.6 486.1\nREF   2\nWTW   1 1 1\nINI   ' '\n"
+        "XAN   0.0 0.0 0.0\nYAN   0.0 10.0000000023 14.0000000032\nWTF   1.0 1.0 1.0\n"
+        "VUY   0.0 0.2 0.4\nVLY   0.0 0.25 0.4\nSO    0.0 993938392063.0\n"
+        "S     0.01779284094091543 8.75 NSSK2_SCHOTT\n  CCY 0\n"
+        "S     0.006566600536925569 0.5\n  CCY 0\n"
+        "S     0.02653743294670983 12.5 NSK2_SCHOTT\n  CCY 0\n"
+        "S     0.0 3.8 F5_SCHOTT\n"
+        "S     0.04126892878570084 16.36944492653564\n  CCY 0; THC 0\n"
+        "S     0.0 13.74795696388906\n  THC 0\n  STO\n"
+        "S     -0.03523942654429074 3.8 F5_SCHOTT\n  CCY 0\n"
+        "S     0.0 11.0 NSK16_SCHOTT\n"
+        "S     -0.02636750828657709 0.5\n  CCY 0\n");
+    const CommandRun r = runLenslab("lens " + cut);
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("(9 surfaces, Code V file)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("warning (line 31): " + cut + " ends at line 31 with neither an image surface (SI) nor GO: the file may be "
+                         "cut short; read as the 9 surfaces it gives"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("effective focal length           336.9938 mm"), std::string::npos) << r.out;
 }

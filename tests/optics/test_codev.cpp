@@ -105,7 +105,12 @@ TEST(CodeV, AchromatFocalLengthAgainstParaxialTrace) {
     // The surface without CIR is sized by the file's aperture (EPD 25) and field (5 deg); the stop is the EPD's.
     EXPECT_NEAR(lens.surfaces[0].apertureRadius, 12.5, 1e-12);
     EXPECT_TRUE(lens.surfaces[1].automaticAperture);
-    EXPECT_GT(lens.surfaces[1].apertureRadius, 12.5 * 0.9);
+    // Surface 2's: 1.1 times the marginal ray's height plus the 5 degree chief ray's (through the
+    // stop's centre on surface 1), both paraxial, 6 mm behind surface 1 in the lens's own glass.
+    const std::vector<test::YNuSurface> front = {{0, 1 / 61.47, 1, lens.surfaces[0].indexAfter}};
+    const test::YNu marginal = test::traceYNu(front, 0, 12.5, 0), chief = test::traceYNu(front, 0, 0, std::tan(5 * M_PI / 180));
+    const double expected = 1.1 * (std::fabs(marginal.y + 6 * marginal.u) + std::fabs(chief.y + 6 * chief.u));
+    EXPECT_NEAR(lens.surfaces[1].apertureRadius, expected, 1e-9);
 }
 
 TEST(CodeV, CurvatureModeAndUnitsAndContinuations) {
@@ -287,6 +292,23 @@ TEST(CodeV, StopDefaultsToTheFirstSurface) {
     EXPECT_TRUE(t.rows[0].stop);
     ASSERT_TRUE(t.designFNumber);
     EXPECT_DOUBLE_EQ(*t.designFNumber, 8);
+}
+
+TEST(CodeV, AFileCutShortIsReadWithAWarningNamingItsLastLine) {
+    // The achromat cut after its second surface (line 15): its rear surface, SI and GO lost. It
+    // still reads as a lens, of two surfaces, so the reader says where the file stopped.
+    const std::string whole = achromat();
+    std::size_t cut = 0;
+    for (int line = 0; line < 15; ++line) cut = whole.find('\n', cut) + 1;
+    const LensTable t = parseCodeV(whole.substr(0, cut), "cut.seq");
+    EXPECT_EQ(t.rows.size(), 2u);
+    ASSERT_EQ(t.warnings.size(), 1u);
+    EXPECT_EQ(t.warnings[0].line, 15);
+    EXPECT_EQ(t.warnings[0].message, "cut.seq ends at line 15 with neither an image surface (SI) nor GO: the file may be cut short; "
+                                     "read as the 2 surfaces it gives");
+    // The whole file, and one that ends at its image surface without GO, are read without one.
+    EXPECT_TRUE(parseCodeV(whole, "whole.seq").warnings.empty());
+    EXPECT_TRUE(parseCodeV(whole.substr(0, whole.rfind("GO")), "no-go.seq").warnings.empty());
 }
 
 TEST(CodeVErrors, EveryRefusalNamesTheLineAndCommand) {

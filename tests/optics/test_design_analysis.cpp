@@ -410,7 +410,29 @@ TEST(DesignAnalysis, DistortionOfSonysPatentExampleMatchesItsPrintedImageHeight)
     const LensDesignAnalysis a = analyzeLensDesign(loadLensSystem(LENSLAB_SOURCE_DIR "/lenses/us2015-0092100-ex1-55mm.zmx"), in);
     // The printed numbers' last digits allow about +-0.05 points; lenslab's -0.80% lies 0.085 points
     // from the printed -0.886% (the patent's own image plane and cover glass are not stated).
-    EXPECT_NEAR(a.fields.at(0).distortionPercent, printed, 0.1);
+    ASSERT_TRUE(a.fields.at(0).distortionPercent);
+    EXPECT_NEAR(*a.fields.at(0).distortionPercent, printed, 0.1);
+}
+
+TEST(DesignAnalysis, AFieldNoRayReachesIsNotImaged) {
+    // dgauss.50mm's rims pass rays to 28.96 degrees: at 20 the chief ray lands 18.138 mm out, at 60
+    // no ray arrives, and that field has no image height, distortion or illumination (issue 38:
+    // they read 0, 0.000% and 1.000).
+    DesignAnalysisInputs in;
+    in.fields = {20, 60};
+    in.fieldsInDegrees = true;
+    in.wavelengths = {kWavelengthD};
+    const LensDesignAnalysis a = analyzeLensDesign(loadLensSystem(LENSLAB_SOURCE_DIR "/lenses/dgauss.50mm.dat"), in);
+    const FieldAnalysis& imaged = a.fields.at(0);
+    ASSERT_TRUE(imaged.traced && imaged.chiefImage && imaged.distortionPercent && imaged.relativeIllumination);
+    EXPECT_NEAR(std::hypot(imaged.chiefImage->x, imaged.chiefImage->y), 18.1378, 1e-4);
+    EXPECT_NEAR(*imaged.distortionPercent, -1.074, 1e-3);
+    EXPECT_NEAR(*imaged.relativeIllumination, 0.295, 1e-3);
+    const FieldAnalysis& blocked = a.fields.at(1);
+    EXPECT_FALSE(blocked.traced);
+    EXPECT_FALSE(blocked.chiefImage);
+    EXPECT_FALSE(blocked.distortionPercent);
+    EXPECT_FALSE(blocked.relativeIllumination);
 }
 
 TEST(DesignAnalysis, RefusesInputsOutOfRangeNamingTheirSource) {

@@ -187,10 +187,41 @@ TEST(AnalysisViews, ABlockedFieldSaysSo) {
     for (RayFan& fan : f.fans) std::fill(fan.tangential.begin(), fan.tangential.end(), NAN), std::fill(fan.sagittal.begin(), fan.sagittal.end(), NAN);
     const std::vector<NamedSvg> plots = designAnalysisPlots(a);
     for (const char* name : {"spot-field-3", "mtf-field-3", "fans-field-3"})
-        EXPECT_NE(plotNamed(plots, name).svg.find("no ray of this field reaches the image plane"), std::string::npos) << name;
-    EXPECT_EQ(plotNamed(plots, "spot-field-2").svg.find("no ray of this field"), std::string::npos);
-    EXPECT_NE(plotNamed(plots, "spot-field-3").caption.find("No ray of this field reaches the image plane."), std::string::npos);
-    EXPECT_NE(analysisTablesHtml(a).find("<td data-json=\"/fields/2/traced\" data-value=\"false\">no ray reaches the image plane</td>"),
+        EXPECT_NE(plotNamed(plots, name).svg.find("not imaged: no ray reaches the image plane"), std::string::npos) << name;
+    EXPECT_EQ(plotNamed(plots, "spot-field-2").svg.find("not imaged"), std::string::npos);
+    EXPECT_NE(plotNamed(plots, "spot-field-3").caption.find("This field is not imaged: no ray reaches the image plane."), std::string::npos);
+    EXPECT_NE(analysisTablesHtml(a).find("<td data-json=\"/fields/2/traced\" data-value=\"false\">not imaged: no ray reaches the image plane</td>"),
               std::string::npos);
     EXPECT_NE(analysisTablesText(a).find("blocked  blocked  0.000"), std::string::npos) << analysisTablesText(a);
+}
+
+TEST(AnalysisViews, AFieldNoRayReachesIsNotImagedInTheJsonAndEveryTable) {
+    // dgauss.50mm passes no ray at 60 degrees (issue 38: its image height, distortion and
+    // illumination read 0, 0.000% and 1.000 in the tables, 0, 0 and 1 in the JSON).
+    DesignAnalysisInputs in;
+    in.fields = {20, 60};
+    in.fieldsInDegrees = true;
+    in.wavelengths = {kWavelengthD};
+    const LensDesignAnalysis a = analyzeLensDesign(loadLensSystem(LENSLAB_SOURCE_DIR "/lenses/dgauss.50mm.dat"), in);
+    const nlohmann::json json = designAnalysisJson(a);
+    const nlohmann::json& blocked = json.at("fields").at(1);
+    EXPECT_EQ(blocked.at("traced"), false);
+    for (const char* key : {"image_height_mm", "chief_ray_image_mm", "distortion_percent", "relative_illumination"})
+        EXPECT_TRUE(blocked.at(key).is_null()) << key << ": " << blocked.at(key);
+    EXPECT_TRUE(json.at("distortion_percent").at(1).is_null());
+    EXPECT_TRUE(json.at("relative_illumination").at(1).is_null());
+    EXPECT_NEAR(json.at("fields").at(0).at("image_height_mm").get<double>(), 18.1378, 1e-4);
+
+    // The command line's text, the page's and the report's HTML; each value the JSON's at its pointer.
+    const std::string text = analysisTablesText(a);
+    EXPECT_NE(text.find("\n20.00  18.1378  -1.074  0.295\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\n60.00  not imaged  not imaged  not imaged\n"), std::string::npos) << text;
+    const std::string html = analysisTablesHtml(a);
+    for (const char* key : {"image_height_mm", "distortion_percent", "relative_illumination"})
+        EXPECT_NE(html.find("<td data-json=\"/fields/1/" + std::string(key) + "\" data-value=\"null\">not imaged</td>"), std::string::npos)
+            << key;
+    for (const AnalysisTable& t : analysisTables(a))
+        for (const auto& row : t.rows)
+            for (const ShownValue& v : row)
+                if (!v.pointer.empty()) expectShown(json, v);
 }

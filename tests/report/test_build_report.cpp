@@ -1,11 +1,13 @@
-// buildReport called directly, as the server's report job does: progress, cancellation and an
-// uploaded lens added to the bundled ones.
+// buildReport called directly, as the server's report job does: progress, cancellation, an
+// uploaded lens added to the bundled ones, named and cited as what it was.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+
+#include <nlohmann/json.hpp>
 
 #include "BuildReport.h"
 
@@ -22,6 +24,11 @@ ReportOptions lensOnlyOptions(const std::string& name) {
     o.lenses = {"dgauss.50mm"};
     o.quick = true;
     return o;
+}
+
+std::string fileText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 }  // namespace
@@ -83,4 +90,32 @@ TEST(BuildReport, RebuildsOnlyWhatAChangedLensTableFeeds) {
     EXPECT_EQ(second.reused, 5);
     fs::remove_all(o.outputDir);
     fs::remove_all(lenses);
+}
+
+TEST(BuildReport, AnUploadIsNamedAndCitedAsWhatItWasAndTheAnalysisIsThePages) {
+    ReportOptions o = lensOnlyOptions("names");
+    // An upload is stored under its id as .dat whatever it was: here a Zemax file.
+    const fs::path uploads = o.outputDir.string() + "-uploads", upload = uploads / "upload-0123456789abcdef.dat";
+    fs::create_directories(uploads);
+    std::ofstream(upload) << fileText(LENSLAB_SOURCE_DIR "/lenses/us2015-0092100-ex1-55mm.zmx");
+    o.lenses.push_back(upload.string());
+    o.lensNames[upload.string()] = "sony-ex1.zmx";
+    const ReportSummary s = buildReport(o);
+    EXPECT_TRUE(s.problems.empty());
+    const std::string html = fileText(s.indexPath);
+    EXPECT_NE(html.find("<h3>sony-ex1.zmx</h3>"), std::string::npos);
+    const std::size_t byId = html.find(">upload-0123456789abcdef<");
+    EXPECT_EQ(byId, std::string::npos) << html.substr(byId == std::string::npos ? 0 : byId - 300, 400);
+    EXPECT_NE(html.find("<code>lenslab lens sony-ex1.zmx --json</code> with the settings above; a Zemax .zmx prescription)"),
+              std::string::npos);
+    EXPECT_NE(html.find("<code>lenslab lens dgauss.50mm.dat --json</code> with the settings above; a lens table (.dat))"),
+              std::string::npos);
+    // The designer's analysis at the page's first settings, named: dgauss.50mm at its widest focused
+    // at infinity, 13.56 um RMS on the axis (the tables' 2 m focus gave 12.62).
+    EXPECT_NE(html.find("The lens designer's analysis at f/2.02, focused at infinity</h4>"), std::string::npos);
+    const nlohmann::json analysis = nlohmann::json::parse(fileText(o.outputDir / "assets/lenses/dgauss.50mm-analysis/analysis.json"));
+    EXPECT_TRUE(analysis.at("focus_distance").is_null());
+    EXPECT_NEAR(1000 * analysis.at("fields").at(0).at("polychromatic").at("rms_radius_mm").get<double>(), 13.56, 0.005);
+    fs::remove_all(o.outputDir);
+    fs::remove_all(uploads);
 }

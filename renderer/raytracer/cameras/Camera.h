@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/Vec3f.h"
 
@@ -72,6 +73,9 @@ public:
     virtual std::optional<FilmRadiometry> filmRadiometry() const { return std::nullopt; }
     // Camera and lens parameters for the image metadata.
     virtual std::map<std::string, std::string> describe() const = 0;
+    // What the camera knows its picture will not show (a lens's image circle smaller than the film),
+    // in words for the render's warnings; none for a camera without a lens.
+    virtual std::vector<std::string> warnings() const { return {}; }
 };
 
 }  // namespace lenslab

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/RelativeIllumination.h"
 #include "firstorder/Aperture.h"
 #include "trace/ExactTrace.h"
 #include "prescription/NumberText.h"
@@ -136,6 +137,7 @@ RealisticCamera::RealisticCamera(const RealisticParams& params, const Transform&
         } else {
             bounds_ = computeExitPupilBounds(analysis_.lens, filmZExact_, step, first, last, measure);
         }
+        if (!mounted_) imageCircleRadiusMm_ = imageCircleRadius(analysis_.lens, filmZExact_, 0.5 * params.filmDiagonalMm);
         const double centreWeight = params.simpleWeighting ? exactCentreWeight() : 0;
         weightScaleExact_ = params.simpleWeighting ? (centreWeight > 0 ? 1.0 / centreWeight : 0.0) : params.exposureTime;
     }
@@ -424,6 +426,15 @@ void RealisticCamera::aimExactRays(std::size_t count, ExactRayBatch& b) const {
     }
 }
 
+std::vector<std::string> RealisticCamera::warnings() const {
+    const double filmRadius = 0.5 * params_.filmDiagonalMm;
+    // A circle that reaches the corner (the bisection stops just short of it) is no shortfall; none
+    // from the centre is left to the render's count of blocked rays, which measures it.
+    if (!imageCircleRadiusMm_ || *imageCircleRadiusMm_ == 0 || *imageCircleRadiusMm_ >= filmRadius * (1 - 1e-6)) return {};
+    return {"the lens's image circle (" + formatFixed(2 * *imageCircleRadiusMm_, 2) + " mm across on the film) is smaller than the film (" +
+            formatFixed(params_.filmDiagonalMm, 2) + " mm diagonal): beyond it the frame is black"};
+}
+
 std::map<std::string, std::string> RealisticCamera::describe() const {
     const LensAnalysis& a = analysis_;
     std::map<std::string, std::string> d{{"camera", "realistic"},
@@ -440,6 +451,7 @@ std::map<std::string, std::string> RealisticCamera::describe() const {
                                                      : "focused"},
             {"aperture", params_.aperture.name()},
             {"filmDiagonalMm", formatNumber(params_.filmDiagonalMm)},
+            {"imageCircleDiameterMm", imageCircleRadiusMm_ ? formatNumber(2 * *imageCircleRadiusMm_) : "not measured (no exact trace, or a moved lens)"},
             {"filmZMm", formatNumber(filmZ())},
             {"eflMm", formatNumber(a.firstOrder.efl)},
             {"exitPupilZMm", formatNumber(a.pupils.exit.z)},

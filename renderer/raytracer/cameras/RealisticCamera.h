@@ -81,6 +81,7 @@ public:
     void generateSpectralRays(const CameraSample* samples, std::size_t n, const double* wavelengthsNm, int perSample,
                               CameraRay* out, FilmLanding* landings) const override;
     std::map<std::string, std::string> describe() const override;
+    std::vector<std::string> warnings() const override;
     bool spectral() const override { return params_.spectral; }
     // The exposure per value is the exposure time over the weight scale of the model the film is
     // rendered with (the exact trace's where it traces any ray exactly): each normalises its own.
@@ -92,6 +93,9 @@ public:
     const LensModeMap& lensModes() const { return modes_; }
     // Auto mode: the predicted thick-lens error over the rendered film radii (empty otherwise).
     const std::vector<ThickLensFilmError>& thickLensErrors() const { return errors_; }
+    // mm on the exact film: the largest film radius from which some ray passes the lens, up to the
+    // film's corner; none where the lens is not traced exactly or is moved (tilt-shift).
+    std::optional<double> imageCircleRadiusMm() const { return imageCircleRadiusMm_; }
     double minFilmRadius() const { return minFilmRadius_; }  // mm: the film radii rays can start from
     double maxFilmRadius() const { return maxFilmRadius_; }
     // The film point (mm, lens space z = filmZ) a raster position maps to; the lens inverts the
@@ -154,6 +158,7 @@ private:
     std::vector<ThickLensFilmError> errors_;
     LensModeMap modes_;
     double thickShare_ = 0;          // auto: thickShareOfCrop() of the allowed bands
+    std::optional<double> imageCircleRadiusMm_;
     ExitPupilBounds bounds_;         // for the exact trace's film radii (spectral: its own wavelength's band)
     SpectralExitPupilBounds spectralBounds_;  // spectral: per band of wavelengths
     WavelengthEtas etas_;            // spectral: the lens's index ratios per 1 nm band

@@ -87,6 +87,11 @@ std::vector<std::uint8_t> encodeExr(const RenderOutput& output) {
     header.insert("lenslab.blockedCameraRays", Imf::StringAttribute(std::to_string(s.blockedCameraRays)));
     header.insert("lenslab.renderSeconds", Imf::StringAttribute(std::to_string(s.renderSeconds)));
     header.insert("lenslab.setupSeconds", Imf::StringAttribute(std::to_string(s.setupSeconds)));
+    if (!output.warnings.empty()) {
+        std::string lines;
+        for (const std::string& w : output.warnings) lines += (lines.empty() ? "" : "\n") + w;
+        header.insert("lenslab.renderWarnings", Imf::StringAttribute(lines));
+    }
 
     Imf::FrameBuffer fb;
     const std::size_t xStride = 3 * sizeof(float), yStride = xStride * image.width;

@@ -80,6 +80,8 @@ public:
     const FlareStats& flareStats() const { return flare_.stats; }
     // Camera and lens parameters, scene, resolution, spp, seed: the image's metadata.
     std::map<std::string, std::string> metadata() const;
+    // What the camera knows its picture will not show (render/RenderWarnings.h).
+    std::vector<std::string> cameraWarnings() const { return camera_->warnings(); }
 
 private:
     void addSplats(const SplatBuffer& splats, Image& image) const;

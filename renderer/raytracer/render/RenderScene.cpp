@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "render/PreparedFrame.h"
+#include "render/RenderWarnings.h"
 #include "render/SplatImage.h"
 #include "Render.h"
 
@@ -67,6 +68,7 @@ RenderOutput renderScene(const RenderSettings& settings, const std::function<voi
     out.stats.flarePaths = frame.flareStats().paths;
     out.stats.flareRays = frame.flareStats().raysTraced;
     out.stats.flareSeconds = frame.flareStats().seconds;
+    addRenderWarnings(out, frame);
     return out;
 }
 
