@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "CodeVWriter.h"
 #include "DesignJson.h"
 #include "LensTableWriter.h"
 #include "SubstitutionFileWriter.h"
@@ -52,13 +53,15 @@ MeritFunction designMerit(const ArgParser& p, const LensTable& table) {
 }
 
 void writeDesignTable(const LensTable& table, const std::string& path, const MeritFunction& merit) {
-    const bool zmx = path.size() > 4 && path.compare(path.size() - 4, 4, ".zmx") == 0;
-    const bool dat = path.size() > 4 && path.compare(path.size() - 4, 4, ".dat") == 0;
-    if (!zmx && !dat) throw UsageError("-o: the lens is written as .zmx or .dat, got '" + path + "'");
+    const std::string extension = path.size() > 4 ? path.substr(path.size() - 4) : "";
+    if (extension != ".zmx" && extension != ".seq" && extension != ".dat")
+        throw UsageError("-o: the lens is written as .zmx, .seq or .dat, got '" + path + "'");
     // Glasses no catalog holds (an as-built lens's melts) go to the .smx file beside the lens, which
     // reading it takes up again.
     const LensTable stated = withoutSubstitutions(table);
-    const std::string text = zmx ? writeZemaxText(withRowCatalogsInTheFile(stated)) : writeLensTableText(stated);
+    const std::string text = extension == ".zmx"   ? writeZemaxText(withRowCatalogsInTheFile(stated))
+                             : extension == ".seq" ? writeCodeVText(stated)
+                                                   : writeLensTableText(stated);
     const auto write = [](const std::string& file, const std::string& bytes) {
         std::ofstream out(file, std::ios::binary);
         if (!out || !(out << bytes)) throw std::runtime_error(file + ": cannot write the file");

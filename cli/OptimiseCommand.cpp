@@ -24,7 +24,7 @@ int runOptimiseCommand(const std::vector<std::string>& args) {
     p.option("--max-iterations", "N", "per descent (default 200)");
     p.option("--snap-glasses", "CATALOGS", "after the search, each glass whose index or abbe varied becomes its nearest catalog glass\n"
                                            "(SCHOTT,OHARA,... or all), and the other variables are optimised again");
-    p.option("-o", "OUT", "the optimised lens (.zmx or .dat; read back to check), or results as .json");
+    p.option("-o", "OUT", "the optimised lens (.zmx, .seq or .dat; read back to check), or results as .json");
     p.flag("--json", "print the result as one JSON object");
     if (!p.parse(args)) {
         std::cout << p.help();

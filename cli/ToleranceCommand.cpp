@@ -12,7 +12,7 @@
 namespace lenslab {
 
 int runToleranceCommand(const std::vector<std::string>& args) {
-    ArgParser p("tolerance", "FILE [--spec T.json] [--merit M.json] [--trials N] [--seed S] [-o DIR]",
+    ArgParser p("tolerance", "FILE [--spec T.json] [--merit M.json] [--trials N] [--seed S] [-o DIR [--format zmx|seq]]",
                 "Tolerances a lens (docs/design.md): each tolerance alone at both limits (sensitivity), then N\n"
                 "Monte Carlo trials with every tolerance drawn at once, the compensators set again in each. Prints\n"
                 "the sensitivities, each operand's distribution and the yield; -o DIR writes results.json and the\n"
@@ -24,6 +24,7 @@ int runToleranceCommand(const std::vector<std::string>& args) {
     p.option("--seed", "S", "the trials' seed (default 1): trial k of seed S is the same lens everywhere");
     p.option("--most", "N", "sensitivity rows printed (default 15)");
     p.option("-o", "DIR", "results.json and the as-built lenses");
+    p.option("--format", "F", "zmx | seq: the as-built lenses as Zemax or Code V files (default zmx; a gap-before table's are .dat)");
     p.flag("--json", "print the results as one JSON object");
     if (!p.parse(args)) {
         std::cout << p.help();
@@ -45,6 +46,8 @@ int runToleranceCommand(const std::vector<std::string>& args) {
     const long trials = p.has("--trials") ? *p.integer("--trials") : 100;
     if (trials < 0 || trials > 1000000) throw UsageError("tolerance: --trials must be 0 to 1000000");
     const bool json = p.has("--json");
+    const std::string format = p.get("--format", "zmx");
+    if (format != "zmx" && format != "seq") throw UsageError("tolerance: --format must be zmx or seq, got '" + format + "'");
 
     double cpu = processCpuSeconds();
     const std::vector<SensitivityRow> rows = toleranceSensitivity(problem);
@@ -87,7 +90,7 @@ int runToleranceCommand(const std::vector<std::string>& args) {
             const std::optional<int> k = trialAtPercentile(mc, percentile);
             if (!k) continue;
             const LensTable lens = asBuiltLens(problem, mc.trials[*k].departures);
-            const std::string path = (dir / (std::string(name) + (lens.layout == TableLayout::GapAfter ? ".zmx" : ".dat"))).string();
+            const std::string path = (dir / (std::string(name) + (lens.layout == TableLayout::GapAfter ? "." + format : ".dat"))).string();
             try {
                 writeDesignTable(lens, path, problem.merit);
                 if (!json) std::cout << "wrote " << path << " (trial " << *k << ")\n";

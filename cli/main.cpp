@@ -21,7 +21,7 @@ struct Subcommand {
 const Subcommand kSubcommands[] = {
     {"lens", "first-order data of a lens table (EFL, F, F', P, P', pupils, f-number, focus)", lenslab::runLensCommand},
     {"analyze", "spot diagrams, ray fans, MTF, field curvature, distortion, focal shift (SVG and JSON)", lenslab::runAnalyzeCommand},
-    {"optimise", "damped least squares on a merit function, the optimised lens written as .zmx or .dat", lenslab::runOptimiseCommand},
+    {"optimise", "damped least squares on a merit function, the optimised lens written as .zmx, .seq or .dat", lenslab::runOptimiseCommand},
     {"tolerance", "sensitivity and Monte Carlo tolerancing with compensators; the as-built lenses", lenslab::runToleranceCommand},
     {"diagram", "the lens cross-section with ray fans as a PNG (offscreen OpenGL)", lenslab::runDiagramCommand},
     {"render", "render a scene (pbrt-v3 subset) with a perspective or realistic lens camera", lenslab::runRenderCommand},

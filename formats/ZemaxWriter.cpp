@@ -5,6 +5,7 @@
 
 #include "ExactNumberText.h"
 #include "LineText.h"
+#include "WrittenWavelengths.h"
 #include "prescription/GlassCatalog.h"
 #include "prescription/Wavelength.h"
 
@@ -15,7 +16,7 @@ namespace {
 // Zemax lists 12 field slots; the unused ones hold 0 (FTYP says how many are fields).
 constexpr std::size_t kFieldSlots = 12;
 
-[[noreturn]] void refuse(const LensTable& table, int line, const std::string& what) {
+[[noreturn]] void refuseForZmx(const LensTable& table, int line, const std::string& what) {
     throw LensTableError(table.name, line, what + ": a .zmx cannot hold it");
 }
 
@@ -27,16 +28,16 @@ constexpr std::size_t kFieldSlots = 12;
 
 // A name written as one word of a GLAS or GCAT line; MIRROR and ___BLANK are GLAS's own words.
 const std::string& word(const LensTable& table, int line, const std::string& what, const std::string& name) {
-    if (const auto problem = wordTextProblem(name)) refuse(table, line, what + " with " + *problem);
-    if (name == "MIRROR" || name == "___BLANK") refuse(table, line, what + " '" + name + "' (a GLAS keyword)");
+    if (const auto problem = wordTextProblem(name)) refuseForZmx(table, line, what + " with " + *problem);
+    if (name == "MIRROR" || name == "___BLANK") refuseForZmx(table, line, what + " '" + name + "' (a GLAS keyword)");
     return name;
 }
 
 // Text written after a keyword, which the reader takes trimmed (NAME, NOTE, COMM).
 const std::string& lineText(const LensTable& table, int line, const std::string& what, const std::string& text) {
-    if (const auto problem = lineTextProblem(text)) refuse(table, line, what + " with " + *problem);
+    if (const auto problem = lineTextProblem(text)) refuseForZmx(table, line, what + " with " + *problem);
     if (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.back() == ' ' || text.back() == '\t'))
-        refuse(table, line, what + " '" + text + "' with spaces at its ends (read back trimmed)");
+        refuseForZmx(table, line, what + " '" + text + "' with spaces at its ends (read back trimmed)");
     return text;
 }
 
@@ -55,7 +56,7 @@ std::vector<std::string> fileCatalogs(const LensTable& table) {
         if (!row.glassCatalog.empty()) own.insert(own.begin(), row.glassCatalog);
         const std::string meant = foundGlass(row.glass, own), read = foundGlass(row.glass, catalogs);
         if (meant != read)
-            refuse(table, row.line, "glass '" + row.glass + "' of catalog " + row.glassCatalog + " (" + meant +
+            refuseForZmx(table, row.line, "glass '" + row.glass + "' of catalog " + row.glassCatalog + " (" + meant +
                                         "), which the file's catalog list (GCAT) would make " + read);
     }
     return catalogs;
@@ -66,12 +67,12 @@ std::vector<std::string> fileCatalogs(const LensTable& table) {
 std::string glassLine(const LensTable& table, const LensTableRow& row) {
     if (row.mirror) return "  GLAS MIRROR\n";
     if (!row.glass.empty()) {
-        if (row.abbe != 0) refuse(table, row.line, "glass '" + row.glass + "' with an Abbe number besides (a catalog glass has its own)");
+        if (row.abbe != 0) refuseForZmx(table, row.line, "glass '" + row.glass + "' with an Abbe number besides (a catalog glass has its own)");
         return "  GLAS " + word(table, row.line, "a glass name", row.glass) + " 0 0 " + exactNumberText(row.index) + " 0\n";
     }
     if (row.index == 0 && row.abbe == 0) return "";
     if (!(row.index >= 1) || !(row.abbe >= 0))
-        refuse(table, row.line, "a model glass of nd " + exactNumberText(row.index) + ", Vd " + exactNumberText(row.abbe) +
+        refuseForZmx(table, row.line, "a model glass of nd " + exactNumberText(row.index) + ", Vd " + exactNumberText(row.abbe) +
                                     " (GLAS ___BLANK needs nd >= 1 and Vd >= 0)");
     return "  GLAS ___BLANK 1 0 " + exactNumberText(row.index) + " " + exactNumberText(row.abbe) + "\n";
 }
@@ -92,7 +93,7 @@ std::string formLines(const LensTable& table, const LensTableRow& row) {
         for (int i = 0; i < kAsphericTerms; ++i) out += parmLine(i + 1, row.aspheric[i]);
         return out;
     }
-    if (aspheric) refuse(table, row.line, std::string("even-asphere terms on a surface of the kind ") + surfaceKindName(f.kind));
+    if (aspheric) refuseForZmx(table, row.line, std::string("even-asphere terms on a surface of the kind ") + surfaceKindName(f.kind));
     std::string out;
     switch (f.kind) {
         case SurfaceKind::OddAsphere:
@@ -131,7 +132,7 @@ std::string apertureLines(const LensTable& table, const LensTableRow& row) {
     if (row.clearShape && row.clearShape->kind != ApertureKind::Circular) out += shapeLine(*row.clearShape, "SQAP", "ELAP");
     if (row.obscurationShape) {
         if (row.obscurationShape->kind == ApertureKind::Circular)
-            refuse(table, row.line, "a decentred circular obscuration (OBSC is about the vertex)");
+            refuseForZmx(table, row.line, "a decentred circular obscuration (OBSC is about the vertex)");
         out += shapeLine(*row.obscurationShape, "SQOB", "ELOB");
     }
     const SurfaceAperture* clear = row.clearShape ? &*row.clearShape : nullptr;
@@ -140,11 +141,11 @@ std::string apertureLines(const LensTable& table, const LensTableRow& row) {
     if (!placed) return out;
     const auto centred = [](const SurfaceAperture* a) { return !a || (a->centreX == 0 && a->centreY == 0); };
     if (!clear && !centred(obscuration))
-        refuse(table, row.line, "a decentred obscuration on a circular clear aperture about the vertex (OBDC moves both)");
+        refuseForZmx(table, row.line, "a decentred obscuration on a circular clear aperture about the vertex (OBDC moves both)");
     if (clear && obscuration && (clear->centreX != obscuration->centreX || clear->centreY != obscuration->centreY))
-        refuse(table, row.line, "a clear aperture and an obscuration decentred differently (OBDC moves both)");
+        refuseForZmx(table, row.line, "a clear aperture and an obscuration decentred differently (OBDC moves both)");
     if (clear && clear->kind == ApertureKind::Circular && centred(clear))
-        refuse(table, row.line, "a circular clear aperture about the vertex given as a shape");
+        refuseForZmx(table, row.line, "a circular clear aperture about the vertex given as a shape");
     if (!centred(placed)) out += "  OBDC " + exactNumberText(placed->centreX) + " " + exactNumberText(placed->centreY) + "\n";
     return out;
 }
@@ -154,7 +155,7 @@ std::string apertureLines(const LensTable& table, const LensTableRow& row) {
 // recomputes it; lenslab derives it from the aperture and fields).
 double semiDiameter(const LensTable& table, const LensTableRow& row) {
     if (row.automaticDiameter) {
-        if (row.diameter != 0 || row.clearShape) refuse(table, row.line, "an automatic clear aperture with a diameter or shape");
+        if (row.diameter != 0 || row.clearShape) refuseForZmx(table, row.line, "an automatic clear aperture with a diameter or shape");
         return 0;
     }
     if (!row.clearShape) return row.diameter / 2;
@@ -209,8 +210,8 @@ std::string surfaceBlocks(const LensTable& table, const LensTableRow& row, int& 
     const std::string name = row.name.empty() ? "" : "  COMM " + lineText(table, row.line, "a surface name", row.name) + "\n";
     if (row.coordinateBreak) {
         const FrameChange f = row.frame.value_or(FrameChange{});
-        if (f.mode != FrameMode::Basic) refuse(table, row.line, "a coordinate break whose coordinates return or bend");
-        if (f.decentre[2] != 0) refuse(table, row.line, "a coordinate break decentred along z (its DISZ is the move)");
+        if (f.mode != FrameMode::Basic) refuseForZmx(table, row.line, "a coordinate break whose coordinates return or bend");
+        if (f.decentre[2] != 0) refuseForZmx(table, row.line, "a coordinate break decentred along z (its DISZ is the move)");
         return surf() + name + coordinateBreakLines(f, row.gap);
     }
     const Breaks breaks = breaksAround(table, row);
@@ -234,19 +235,10 @@ std::string noteLines(const LensTable& table) {
     std::string out;
     for (std::size_t i = 0; i < table.comments.size(); ++i) {
         const std::string& text = lineText(table, 0, "comment " + std::to_string(i + 1), table.comments[i]);
-        if (text.empty()) refuse(table, 0, "comment " + std::to_string(i + 1) + ", an empty line (read back as none)");
+        if (text.empty()) refuseForZmx(table, 0, "comment " + std::to_string(i + 1) + ", an empty line (read back as none)");
         out += (i == 0 ? "NAME " : "NOTE 0 ") + text + "\n";
     }
     return out;
-}
-
-// The wavelengths with the primary among them (added when the list lacks it).
-std::vector<double> writtenWavelengths(const LensTable& table) {
-    std::vector<double> nm = table.wavelengths;
-    if (std::find(nm.begin(), nm.end(), table.primaryWavelength) == nm.end() &&
-        (!nm.empty() || table.primaryWavelength != kWavelengthD))
-        nm.push_back(table.primaryWavelength);
-    return nm;
 }
 
 // WAVM slot micrometres weight, and PWAV naming the primary unless it is the d line a file without
@@ -254,7 +246,7 @@ std::vector<double> writtenWavelengths(const LensTable& table) {
 std::string wavelengthLines(const LensTable& table, const std::vector<double>& nm) {
     std::string out;
     for (std::size_t i = 0; i < nm.size(); ++i) {
-        if (const auto problem = wavelengthProblem(nm[i])) refuse(table, 0, "the " + *problem);
+        if (const auto problem = wavelengthProblem(nm[i])) refuseForZmx(table, 0, "the " + *problem);
         const double weight = i < table.wavelengthWeights.size() ? table.wavelengthWeights[i] : 1;
         out += "WAVM " + std::to_string(i + 1) + " " + exactThousandthText(nm[i]) + " " + exactNumberText(weight) + "\n";
     }
@@ -286,7 +278,7 @@ std::string objectBlock(const LensTable& table) {
     std::string out = "SURF 0\n  TYPE STANDARD\n  CURV 0\n  DISZ ";
     if (!std::isfinite(table.objectDistance)) return out + "INFINITY\n";
     if (std::fabs(table.objectDistance) >= 1e10)
-        refuse(table, 0, "an object distance of 1e10 mm or more (read as infinite)");
+        refuseForZmx(table, 0, "an object distance of 1e10 mm or more (read as infinite)");
     return out + exactNumberText(table.objectDistance) + "\n";
 }
 
@@ -325,7 +317,7 @@ std::string writeZemaxText(const LensTable& table) {
     for (const LensTableRow& row : table.rows) out += surfaceBlocks(table, row, number);
     out += "SURF " + std::to_string(number) + "\n  TYPE STANDARD\n  CURV 0\n  DISZ 0\n";
     if (table.imageFrame && !table.imageFrame->isIdentity()) {
-        if (table.imageFrame->mode != FrameMode::Basic) refuse(table, 0, "an image surface decentre that returns, bends or reverses");
+        if (table.imageFrame->mode != FrameMode::Basic) refuseForZmx(table, 0, "an image surface decentre that returns, bends or reverses");
         out += decentreLine(table, 0, *table.imageFrame);
     }
     return out;

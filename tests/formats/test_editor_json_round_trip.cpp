@@ -12,6 +12,7 @@
 #include <functional>
 #include <tuple>
 
+#include "TextContains.h"
 #include "LensTableDifference.h"
 #include "PrescriptionJson.h"
 #include "ZemaxWriter.h"
@@ -43,7 +44,7 @@ void expectKeptThroughTheEditor(const LensTable& source, const std::string& what
     EXPECT_FALSE(again) << what << " read back: " << *again << "\n" << written;
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using test::contains;
 
 TEST(EditorJson, EveryBundledLensIsKeptThroughTheEditor) {
     int lenses = 0;

@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "TextContains.h"
+#include "BundledTables.h"
 #include "LensTableDifference.h"
 #include "PrescriptionJson.h"
 #include "ZemaxWriter.h"
@@ -16,19 +18,13 @@
 namespace lenslab {
 namespace {
 
-LensTable bundled(const std::string& name) {
-    return withGapAfterRows(readLensTable(std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name));
-}
+using test::bundled;
+using test::expectLines;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-// The Zemax lines a feature must appear as.
-void expectLines(const std::string& written, std::initializer_list<const char*> parts) {
-    for (const char* part : parts) EXPECT_TRUE(contains(written, part)) << part << " in\n" << written;
-}
+using test::contains;
 
 // Written, read back, compared field by field; the built lens's first order before and after.
-LensTable expectRoundTrip(const LensTable& original) {
+LensTable expectZemaxRoundTrip(const LensTable& original) {
     const std::string written = writeZemaxText(original);
     const LensTable again = parseZemax(written, "written.zmx");
     const auto difference = lensTableDifference(original, again);
@@ -66,7 +62,7 @@ TEST(ZemaxRoundTrip, TheDesignsOwnDataComeBack) {
                           "\nOBNA 0.01 0\n",
                           "SURF 0\n  TYPE STANDARD\n  CURV 0\n  DISZ 1234.5\n",
                           "SURF 1\n  COMM front crown\n"});
-    expectRoundTrip(t);
+    expectZemaxRoundTrip(t);
 
     // Image heights in mm, another primary, weights of 0.
     t.fields.type = FieldType::RealImageHeight;
@@ -75,7 +71,7 @@ TEST(ZemaxRoundTrip, TheDesignsOwnDataComeBack) {
     t.wavelengthWeights = {0, 1, 3};
     t.objectDistance = INFINITY;
     t.objectNumericalAperture.reset();
-    expectRoundTrip(t);
+    expectZemaxRoundTrip(t);
 }
 
 // A wavelength in nm written in micrometres reads back as the same double, also where the double
@@ -112,7 +108,7 @@ TEST(ZemaxRoundTrip, ARowsCatalogIsTheFilesCatalog) {
     expected.rows[0].glassCatalog.clear();
     const auto stated = lensTableDifference(withRowCatalogsInTheFile(t), expected);
     EXPECT_FALSE(stated) << *stated;
-    const LensTable again = expectRoundTrip(expected);
+    const LensTable again = expectZemaxRoundTrip(expected);
     EXPECT_EQ(computeFirstOrder(buildLensSystem(again)).efl, computeFirstOrder(buildLensSystem(t)).efl);
 }
 
@@ -138,7 +134,7 @@ TEST(ZemaxRoundTrip, CoordinateBreaksDecentresAndTiltsComeBack) {
     expectLines(written, {"  TYPE COORDBRK\n  CURV 0\n  DISZ 0.0625\n  PARM 1 0.125\n  PARM 2 -0.25\n  PARM 3 0.5\n"
                           "  PARM 4 -0.75\n  PARM 5 3\n  PARM 6 1\n",
                           "  SCBD 1 1 0 0.0625 0.03125 0.25 0.5 -1\n"});
-    expectRoundTrip(t);
+    expectZemaxRoundTrip(t);
 }
 
 // Odd aspheres, toroids, Qbfs and Qcon with their terms.
@@ -163,7 +159,7 @@ TEST(ZemaxRoundTrip, SurfaceFormsComeBack) {
     expectLines(written, {"  TYPE ODDASPH\n",
                           "  TYPE QTYPE\n  XDAT 1 1\n  XDAT 2 3\n  XDAT 3 11.5\n  XDAT 4 0.001\n",
                           "  TYPE QTYPE\n  XDAT 1 0\n"});
-    expectRoundTrip(t);
+    expectZemaxRoundTrip(t);
 }
 
 // Rectangles and ellipses, clear and obscuring, decentred together (OBDC); a decentred circle; a
@@ -185,7 +181,7 @@ TEST(ZemaxRoundTrip, ShapedDecentredAndAutomaticAperturesComeBack) {
     expectLines(written, {"  SQAP 10 8 0\n  ELOB 2 1 0\n  OBDC 0.5 -0.25\n",
                           "  DIAM 10\n  OBDC 0 0.75\n",
                           "  DIAM 0\n"});
-    expectRoundTrip(t);
+    expectZemaxRoundTrip(t);
 }
 
 // A Code V decentre whose coordinates do not return (basic, BEN, REV) is Zemax's coordinate breaks
