@@ -67,9 +67,13 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     p.option("--header-timeout", "S", "seconds a request's whole head may take to arrive (default 10)");
     p.option("--read-timeout", "S", "longest silence inside a request body, seconds (default 10)");
     p.option("--idle-timeout", "S", "keep-alive wait for the next request, seconds (default 2)");
+    p.option("--answer-timeout", "S", "seconds a whole answer may take to be sent, from its first byte; then the "
+             "connection is cut (default 300; event streams excepted)");
     p.option("--keep-alive-requests", "N", "requests per connection before it is closed (default 100)");
     p.option("--max-connections", "N", "connections waiting for a request at most; the longest waiting are dropped (default 512)");
     p.option("--http-threads", "N", "requests answered at once (default 32)");
+    p.option("--downloads-per-client", "N", "render images sent to one client address at once at most; more get 429 "
+             "(default 4)");
     p.option("--work-threads", "N", "heavy work (analyses, previews, diagrams, uploads, reports) running at once "
              "(default 0: one per core)");
     p.option("--work-per-client", "N", "requests of one client address waiting on heavy work at most; more get 429 "
@@ -113,6 +117,8 @@ std::optional<ServiceConfig> parseServeOptions(const std::vector<std::string>& a
     c.http.headerTimeoutSeconds = boundedInteger(p, "--header-timeout", c.http.headerTimeoutSeconds, 1, 600);
     c.http.readTimeoutSeconds = boundedInteger(p, "--read-timeout", c.http.readTimeoutSeconds, 1, 600);
     c.http.idleTimeoutSeconds = boundedInteger(p, "--idle-timeout", c.http.idleTimeoutSeconds, 1, 600);
+    c.http.answerTimeoutSeconds = boundedInteger(p, "--answer-timeout", c.http.answerTimeoutSeconds, 1, 86400);
+    c.http.downloadsPerClient = boundedInteger(p, "--downloads-per-client", c.http.downloadsPerClient, 1, 256);
     c.http.requestsPerConnection = boundedInteger(p, "--keep-alive-requests", c.http.requestsPerConnection, 1, 100000);
     c.http.maxConnections = boundedInteger(p, "--max-connections", c.http.maxConnections, 4, 100000);
     c.httpThreads = boundedInteger(p, "--http-threads", c.httpThreads, 2, 256);

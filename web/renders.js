@@ -106,6 +106,10 @@ function addItem(job, atTop) {
   progress.setAttribute("aria-label", `progress of ${job.id}`);
   const status = document.createElement("span");
   status.className = "status";
+  // What the finished picture does not show (the lens blocking most rays, a small image circle).
+  const warning = document.createElement("span");
+  warning.className = "range-note bad";
+  warning.hidden = true;
   const actions = document.createElement("div");
   actions.className = "actions";
   const id = job.id;
@@ -116,10 +120,10 @@ function addItem(job, atTop) {
       openInViewer(first ? [first, id] : [id]);
     }),
     button("Delete", `delete render ${id}`, () => deleteRender(id)));
-  text.append(title, about, progress, status, actions);
+  text.append(title, about, progress, status, warning, actions);
   element.append(thumb, text);
   $("history").insertAdjacentElement(atTop ? "afterbegin" : "beforeend", element);
-  const item = { job, element, thumb, progress, status, actions, tilesSeen: 0 };
+  const item = { job, element, thumb, progress, status, warning, actions, tilesSeen: 0 };
   items.set(id, item);
   update(item, job);
   if (!isOver(job.state)) followRender(item);
@@ -140,6 +144,9 @@ function update(item, job) {
     failed: "failed: " + (job.error || "unknown reason"),
     cancelled: "cancelled",
   }[job.state] || job.state;
+  const warnings = job.warnings || [];
+  item.warning.hidden = !warnings.length;
+  item.warning.textContent = warnings.map((w) => "warning: " + w).join("; ");
   const downloads = item.actions.querySelectorAll("a");
   if (job.state === "done" && !downloads.length) {
     for (const format of ["png", "exr"]) {

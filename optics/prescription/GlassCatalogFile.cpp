@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "prescription/LensTable.h"
@@ -16,6 +17,9 @@ namespace {
 
 // A catalog has a few thousand glasses at most; a bound keeps an upload from holding millions.
 constexpr std::size_t kMaxGlasses = 20000;
+// Makers' glass and catalog names are a dozen characters; a bound keeps a name from being megabytes
+// in every lookup, list and message.
+constexpr std::size_t kMaxNameLength = 64;
 
 std::string upper(std::string s) {
     for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -97,6 +101,10 @@ GlassCatalogFile parseGlassCatalogFile(const std::string& bytes, const std::stri
     Reader r{fileName};
     GlassCatalogFile catalog;
     catalog.name = catalogName(fileName);
+    if (catalog.name.size() > kMaxNameLength)
+        r.fail(0, "the catalog's name (the file name without .agf) has " + std::to_string(catalog.name.size()) +
+                      " characters, more than " + std::to_string(kMaxNameLength));
+    std::map<std::string, int> nameLines;  // each glass's name in upper case (as looked up), and its NM line
     std::istringstream in(toUtf8Text(bytes, fileName));
     int lineNo = 0;
     int formula = 0, nameLine = 0;
@@ -116,6 +124,12 @@ GlassCatalogFile parseGlassCatalogFile(const std::string& bytes, const std::stri
             if (catalog.glasses.size() == kMaxGlasses)
                 r.fail(lineNo, "more than " + std::to_string(kMaxGlasses) + " glasses in one catalog");
             if (f.size() < 6) r.fail(lineNo, "NM needs a name, a formula number, a code, nd and Vd");
+            if (f[1].size() > kMaxNameLength)
+                r.fail(lineNo, "the glass name has " + std::to_string(f[1].size()) + " characters, more than " +
+                                   std::to_string(kMaxNameLength));
+            if (const auto [first, added] = nameLines.emplace(upper(f[1]), lineNo); !added)
+                r.fail(lineNo, "glass " + f[1] + " is named twice in the catalog: first on line " +
+                                   std::to_string(first->second) + "; a lens could find only one of them");
             Medium glass;
             glass.name = f[1];
             glass.catalog = catalog.name;

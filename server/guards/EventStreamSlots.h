@@ -3,6 +3,7 @@
 // request, so a stream holds one of the --http-threads workers for its job's life; 32 open streams
 // stopped every other request (issue 23). A stream takes a slot first: at most a quarter of the
 // workers in all and a few per client address; past either the client is answered 503 and polls.
+// Render images being sent take slots of their own likewise (ServiceParts::downloads).
 #include <cstddef>
 #include <map>
 #include <memory>

@@ -8,11 +8,13 @@
 
 #include <iostream>
 
+#include "core/SecurityHeaders.h"
+
 namespace lenslab {
 
 namespace {
 
-thread_local const GuardedStream* streamOnThisThread = nullptr;
+thread_local GuardedStream* streamOnThisThread = nullptr;
 thread_local bool closeOnThisThread = false;
 
 void exclusiveSocketOptions(socket_t socket) {
@@ -45,8 +47,9 @@ std::size_t requestLineLength(const std::string& head) {
 // An answer written without cpp-httplib, for a request it cannot read at all.
 void writeRefusal(int socket, const char* statusLine, const std::string& message) {
     const std::string body = "{\"error\":\"" + message + "\"}";
-    const std::string reply = std::string("HTTP/1.1 ") + statusLine + "\r\nContent-Type: application/json\r\n"
-                              "Content-Length: " + std::to_string(body.size()) + "\r\nConnection: close\r\n\r\n" + body;
+    std::string reply = std::string("HTTP/1.1 ") + statusLine + "\r\nContent-Type: application/json\r\n";
+    for (const auto& [name, value] : securityHeaders()) reply += std::string(name) + ": " + value + "\r\n";
+    reply += "Content-Length: " + std::to_string(body.size()) + "\r\nConnection: close\r\n\r\n" + body;
     (void)::send(socket, reply.data(), reply.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
 }
 
@@ -96,6 +99,10 @@ void GuardedServer::closeConnections() {
 void GuardedServer::closeAfterThisRequest() { closeOnThisThread = true; }
 
 bool GuardedServer::closesAfterThisRequest() { return closeOnThisThread || violationOnThisThread() != StreamViolation::None; }
+
+void GuardedServer::liftAnswerDeadlineOnThisThread() {
+    if (streamOnThisThread) streamOnThisThread->liftAnswerDeadline();
+}
 
 StreamViolation GuardedServer::violationOnThisThread() {
     return streamOnThisThread ? streamOnThisThread->violation() : StreamViolation::None;

@@ -51,6 +51,8 @@ public:
     static void closeAfterThisRequest();
     // Whether it will be closed (asked for, or a limit broken): its answer says Connection: close.
     static bool closesAfterThisRequest();
+    // The answer to the request being answered on this thread has no deadline (an event stream).
+    static void liftAnswerDeadlineOnThisThread();
 
 private:
     bool process_and_close_socket(socket_t socket) override;  // on the listening thread: hands it on

@@ -55,7 +55,12 @@ GuardedStream::GuardedStream(int socket, const StreamLimits& limits, std::string
 
 bool GuardedStream::is_readable() const { return begin_ < buffer_.size() || waitFor(socket_, POLLIN, limits_.readTimeout); }
 
-bool GuardedStream::is_writable() const { return waitFor(socket_, POLLOUT, limits_.writeTimeout); }
+bool GuardedStream::is_writable() const {
+    if (answerDeadlineLifted_) return waitFor(socket_, POLLOUT, limits_.writeTimeout);
+    if (answerDeadline_ == Clock::time_point()) answerDeadline_ = Clock::now() + limits_.answerTimeout;
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(answerDeadline_ - Clock::now());
+    return left.count() > 0 && waitFor(socket_, POLLOUT, std::min(limits_.writeTimeout, left));
+}
 
 bool GuardedStream::fail(StreamViolation violation) {
     violation_ = violation;

@@ -26,7 +26,8 @@ struct StreamLimits {
     std::size_t maxBodyWireBytes = 1 << 20;  // body bytes as sent, chunk framing included
     std::chrono::milliseconds headerTimeout{10000};  // the whole head, from its first wait
     std::chrono::milliseconds readTimeout{10000};    // the body, in all
-    std::chrono::milliseconds writeTimeout{10000};
+    std::chrono::milliseconds writeTimeout{10000};   // one write
+    std::chrono::milliseconds answerTimeout{300000}; // the whole answer, from its first write
 };
 
 enum class StreamViolation { None, HeaderTimeout, HeaderTooLarge, BodyTooLarge };
@@ -39,6 +40,8 @@ public:
                   std::chrono::steady_clock::time_point headDeadline, std::chrono::steady_clock::time_point bodyDeadline);
 
     StreamViolation violation() const { return violation_; }
+    // For an answer that lasts as long as it must (an event stream): no answerTimeout.
+    void liftAnswerDeadline() { answerDeadlineLifted_ = true; }
     // Bytes received but not read (the start of a pipelined next request).
     std::string leftover() const { return buffer_.substr(begin_); }
 
@@ -64,6 +67,8 @@ private:
     std::string lineStart_;  // the current head line's first characters, to spot the framing headers
     std::size_t headBytes_ = 0, lineBytes_ = 0, bodyBytes_ = 0;
     std::chrono::steady_clock::time_point headDeadline_, bodyDeadline_;
+    mutable std::chrono::steady_clock::time_point answerDeadline_;  // set by the answer's first write
+    bool answerDeadlineLifted_ = false;
     StreamViolation violation_ = StreamViolation::None;
 };
 

@@ -20,6 +20,7 @@ RenderedImages EngineRenderer::render(const RenderJobInput& job, const TileCallb
                     {"flare_paths", output.stats.flarePaths},
                     {"flare_rays", output.stats.flareRays},
                     {"flare_s", output.stats.flareSeconds}};
+    images.warnings = output.warnings;
     return images;
 }
 

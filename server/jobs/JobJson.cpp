@@ -34,6 +34,7 @@ nlohmann::json jobJson(const JobView& job, std::size_t tilesSince, double now) {
                  {"interrupted", r.interrupted},
                  {"error", r.error.empty() ? json(nullptr) : json(publicMessage(r.error))},
                  {"stats", r.stats},
+                 {"warnings", r.warnings},
                  {"links", {{"self", base}, {"preview", base + "/preview.png"}}}};
     if (r.state == JobState::Done) {
         body["links"]["png"] = base + "/image.png";

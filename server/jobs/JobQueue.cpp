@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <iostream>
 
 #include "storage/AtomicFile.h"
@@ -47,9 +48,10 @@ struct JobQueue::LiveJob {
     std::vector<TileRect> tiles;
     Image partial;     // finished tiles copied in as they arrive
     int partialVersion = 0;
-    std::vector<std::uint8_t> previewPng;
+    PreviewPng previewPng;
     int previewVersion = -1;
     std::chrono::steady_clock::time_point previewEncodedAt;
+    std::shared_future<PreviewPng> previewEncoding;  // valid while one is under way
 };
 
 namespace {
@@ -161,27 +163,43 @@ JobQueue::Cancel JobQueue::cancel(const std::string& id) {
     return Cancel::Cancelled;
 }
 
-std::optional<std::vector<std::uint8_t>> JobQueue::preview(const std::string& id) {
+PreviewPng JobQueue::preview(const std::string& id) {
     const std::shared_ptr<LiveJob> job = liveJob(id);
-    if (!job) return std::nullopt;
+    if (!job) return nullptr;
+    std::promise<PreviewPng> encoding;
     Image snapshot;
     int version;
     {
-        std::lock_guard<std::mutex> lock(job->mutex);
-        if (job->partialVersion == 0) return std::nullopt;
+        std::unique_lock<std::mutex> lock(job->mutex);
+        if (job->partialVersion == 0) return nullptr;
         // Encoding a large image costs a good part of a second: readers get one at most per interval.
         const bool fresh = std::chrono::steady_clock::now() - job->previewEncodedAt < kPreviewInterval;
-        if (job->previewVersion == job->partialVersion || (job->previewVersion >= 0 && fresh)) return job->previewPng;
+        if (job->previewVersion == job->partialVersion || (job->previewPng && fresh)) return job->previewPng;
+        if (job->previewEncoding.valid()) {
+            const std::shared_future<PreviewPng> pending = job->previewEncoding;
+            lock.unlock();
+            return pending.get();
+        }
+        job->previewEncoding = encoding.get_future().share();
         snapshot = job->partial;
         version = job->partialVersion;
     }
-    std::vector<std::uint8_t> png = renderer_.encodePreview(snapshot);
-    std::lock_guard<std::mutex> lock(job->mutex);
-    if (version > job->previewVersion) {
-        job->previewPng = png;
-        job->previewVersion = version;
-        job->previewEncodedAt = std::chrono::steady_clock::now();
+    PreviewPng png;
+    try {
+        png = std::make_shared<const std::vector<std::uint8_t>>(renderer_.encodePreview(snapshot));
+        ++previewsEncoded_;
+    } catch (...) {
+        std::lock_guard<std::mutex> lock(job->mutex);
+        job->previewEncoding = {};
+        encoding.set_exception(std::current_exception());
+        throw;
     }
+    std::lock_guard<std::mutex> lock(job->mutex);
+    job->previewPng = png;
+    job->previewVersion = version;
+    job->previewEncodedAt = std::chrono::steady_clock::now();
+    job->previewEncoding = {};
+    encoding.set_value(png);
     return png;
 }
 
@@ -221,7 +239,7 @@ std::string JobQueue::imagePath(const std::string& id, const std::string& format
 QueueCounts JobQueue::counts() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return {static_cast<int>(waiting_.size()), static_cast<int>(live_.size() - waiting_.size()), limits_.maxQueued,
-            static_cast<int>(workers_.size())};
+            static_cast<int>(workers_.size()), previewsEncoded_.load()};
 }
 
 std::vector<std::string> JobQueue::liveJobsWithLens(const std::string& lensId) const {
@@ -299,6 +317,7 @@ void JobQueue::runJob(const std::shared_ptr<LiveJob>& job) {
         std::lock_guard<std::mutex> lock(job->mutex);
         job->record.state = JobState::Done;
         job->record.stats = std::move(images.stats);
+        job->record.warnings = std::move(images.warnings);
         job->record.imageBytes = static_cast<std::int64_t>(images.png.size() + images.exr.size());
     } catch (const RenderCancelled&) {
         bool stopping;

@@ -41,7 +41,10 @@ struct JobView {
 
 struct QueueCounts {
     int queued = 0, running = 0, maxQueued = 0, workers = 0;
+    std::uint64_t previewsEncoded = 0;  // partial images encoded as PNG since the start
 };
+
+using PreviewPng = std::shared_ptr<const std::vector<std::uint8_t>>;
 
 class JobQueue {
 public:
@@ -70,8 +73,11 @@ public:
     // render, on the cancelling thread for a job cancelled while it waited.
     void setAfterJob(std::function<void()> afterJob);
 
-    // The partial image of a running job as PNG (nullopt before its first tile or when not running).
-    std::optional<std::vector<std::uint8_t>> preview(const std::string& id);
+    // The partial image of a running job as PNG (null before its first tile or when not running).
+    // One encoding per version of the image at most once a second, shared by every reader: readers
+    // arriving while it is under way wait for it (a 1920^2 partial image is 44 MB to copy, and
+    // each reader used to copy and encode its own).
+    PreviewPng preview(const std::string& id);
 
     // Where a finished job's image lies ("png" or "exr").
     std::string imagePath(const std::string& id, const std::string& format) const;
@@ -104,6 +110,7 @@ private:
     bool stopping_ = false;
     std::vector<std::thread> workers_;
     std::function<void()> afterJob_;
+    std::atomic<std::uint64_t> previewsEncoded_{0};
 };
 
 }  // namespace lenslab

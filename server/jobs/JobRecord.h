@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace lenslab {
 
@@ -23,6 +24,7 @@ struct JobRecord {
     bool interrupted = false;  // the service stopped abruptly while it rendered
     int tilesDone = 0, tilesTotal = 0;
     nlohmann::json stats = nlohmann::json::object();
+    std::vector<std::string> warnings;  // done: what the picture does not show (RenderOutput::warnings)
     std::int64_t imageBytes = 0;  // done: its PNG and EXR on disk, for the retention's size limit
 };
 

@@ -25,6 +25,7 @@ struct RenderJobInput {
 struct RenderedImages {
     std::vector<std::uint8_t> png, exr;
     nlohmann::json stats = nlohmann::json::object();
+    std::vector<std::string> warnings;
 };
 
 class JobRenderer {

@@ -5,7 +5,8 @@ namespace lenslab {
 namespace {
 
 const char* kColumns =
-    "id, request, state, created, started, finished, error, interrupted, tiles_done, tiles_total, stats, image_bytes";
+    "id, request, state, created, started, finished, error, interrupted, tiles_done, tiles_total, stats, image_bytes, "
+    "warnings";
 const char* kFinished = "state IN ('done', 'failed', 'cancelled')";
 // Oldest finish first; a job marked interrupted has no finish time and goes first.
 const char* kByFinish = " ORDER BY finished, created";
@@ -24,6 +25,8 @@ JobRecord readJob(const SqlRow& row) {
     j.tilesTotal = static_cast<int>(row.integer(9));
     j.stats = nlohmann::json::parse(row.text(10), nullptr, false);
     j.imageBytes = row.integer(11);
+    const nlohmann::json warnings = nlohmann::json::parse(row.text(12), nullptr, false);
+    if (warnings.is_array()) j.warnings = warnings.get<std::vector<std::string>>();
     return j;
 }
 
@@ -35,6 +38,14 @@ std::vector<std::string> ids(Database& database, const std::string& sql, const s
 
 SqlValue optionalValue(const std::optional<double>& v) { return v ? SqlValue(*v) : SqlValue(nullptr); }
 
+// A column later versions added, to a database an earlier one created.
+void addJobColumnIfMissing(Database& database, const std::string& name, const std::string& declaration) {
+    bool present = false;
+    database.run("SELECT name FROM pragma_table_info('jobs') WHERE name = ?", {name},
+                 [&](const SqlRow&) { present = true; });
+    if (!present) database.run("ALTER TABLE jobs ADD COLUMN " + name + " " + declaration);
+}
+
 }  // namespace
 
 JobStore::JobStore(Database& database) : database_(database) {
@@ -42,28 +53,27 @@ JobStore::JobStore(Database& database) : database_(database) {
         "CREATE TABLE IF NOT EXISTS jobs (id TEXT PRIMARY KEY, request TEXT NOT NULL, state TEXT NOT NULL, "
         "created REAL NOT NULL, started REAL, finished REAL, error TEXT NOT NULL DEFAULT '', "
         "interrupted INTEGER NOT NULL DEFAULT 0, tiles_done INTEGER NOT NULL DEFAULT 0, "
-        "tiles_total INTEGER NOT NULL DEFAULT 0, stats TEXT NOT NULL DEFAULT '{}', image_bytes INTEGER)");
-    bool measured = false;
-    database_.run("SELECT name FROM pragma_table_info('jobs') WHERE name = 'image_bytes'", {},
-                  [&](const SqlRow&) { measured = true; });
-    if (!measured) database_.run("ALTER TABLE jobs ADD COLUMN image_bytes INTEGER");  // NULL: not measured yet
+        "tiles_total INTEGER NOT NULL DEFAULT 0, stats TEXT NOT NULL DEFAULT '{}', image_bytes INTEGER, "
+        "warnings TEXT NOT NULL DEFAULT '[]')");
+    addJobColumnIfMissing(database_, "image_bytes", "INTEGER");  // NULL: not measured yet
+    addJobColumnIfMissing(database_, "warnings", "TEXT NOT NULL DEFAULT '[]'");
     database_.run("CREATE INDEX IF NOT EXISTS jobs_by_finish ON jobs (finished, created)");
 }
 
 void JobStore::insert(const JobRecord& j) {
-    database_.run(std::string("INSERT INTO jobs (") + kColumns + ") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+    database_.run(std::string("INSERT INTO jobs (") + kColumns + ") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                   {j.id, j.request.dump(), std::string(jobStateName(j.state)), j.created, optionalValue(j.started),
                    optionalValue(j.finished), j.error, std::int64_t(j.interrupted), std::int64_t(j.tilesDone),
-                   std::int64_t(j.tilesTotal), j.stats.dump(), j.imageBytes});
+                   std::int64_t(j.tilesTotal), j.stats.dump(), j.imageBytes, nlohmann::json(j.warnings).dump()});
 }
 
 void JobStore::save(const JobRecord& j) {
     database_.run(
         "UPDATE jobs SET state = ?, started = ?, finished = ?, error = ?, interrupted = ?, tiles_done = ?, "
-        "tiles_total = ?, stats = ?, image_bytes = ? WHERE id = ?",
+        "tiles_total = ?, stats = ?, image_bytes = ?, warnings = ? WHERE id = ?",
         {std::string(jobStateName(j.state)), optionalValue(j.started), optionalValue(j.finished), j.error,
          std::int64_t(j.interrupted), std::int64_t(j.tilesDone), std::int64_t(j.tilesTotal), j.stats.dump(),
-         j.imageBytes, j.id});
+         j.imageBytes, nlohmann::json(j.warnings).dump(), j.id});
 }
 
 std::optional<JobRecord> JobStore::find(const std::string& id) const {

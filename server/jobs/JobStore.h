@@ -14,7 +14,7 @@ public:
     explicit JobStore(Database& database);
 
     void insert(const JobRecord& job);
-    void save(const JobRecord& job);  // state, times, error, progress, stats
+    void save(const JobRecord& job);  // state, times, error, progress, stats, warnings
     std::optional<JobRecord> find(const std::string& id) const;
     std::vector<JobRecord> recent(int limit) const;  // newest first
     std::vector<JobRecord> queued() const;           // oldest first

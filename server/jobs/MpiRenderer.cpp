@@ -122,6 +122,7 @@ RenderedImages MpiRenderer::render(const RenderJobInput& job, const TileCallback
                     {"flare_rays", finished.value("flareRays", 0ULL)},
                     {"flare_s", finished.value("flareSeconds", 0.0)},
                     {"mpi_processes", launch_.processes}};
+    images.warnings = finished.value("warnings", std::vector<std::string>{});
     return images;
 }
 

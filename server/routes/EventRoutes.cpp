@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "guards/EventStreamSlots.h"
+#include "guards/GuardedServer.h"
 #include "core/HttpError.h"
 #include "core/Identifiers.h"
 #include "jobs/JobJson.h"
@@ -45,6 +46,7 @@ void streamEvents(httplib::Server& server, EventStreamSlots& slots, const httpli
         throw HttpError(503, "too many event streams are open (at most " + std::to_string(slots.total()) + ", " +
                                  std::to_string(slots.perClient()) + " per client); poll the status instead");
     }
+    GuardedServer::liftAnswerDeadlineOnThisThread();
     res.set_header("Cache-Control", "no-store");
     res.set_header("X-Accel-Buffering", "no");
     res.set_chunked_content_provider(

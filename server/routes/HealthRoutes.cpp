@@ -25,7 +25,7 @@ void addHealthRoutes(httplib::Server& server, ServiceParts& parts) {
                    {"lenses_loading", lenses.waiting},
                    {"scenes", parts.scenes.list().size()},
                    {"renders", {{"queued", q.queued}, {"running", q.running}, {"max_queued", q.maxQueued},
-                                {"concurrent", q.workers}}},
+                                {"concurrent", q.workers}, {"previews_encoded", q.previewsEncoded}}},
                    {"work", {{"threads", w.threads}, {"running", w.running}, {"queued", w.queued},
                              {"admitted", w.admitted}, {"refused", w.refused}}},
                    {"diagram_cache", cacheJson(parts.diagrams.stats())},

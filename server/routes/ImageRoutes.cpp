@@ -73,6 +73,7 @@ void addImageRoutes(httplib::Server& server, ServiceParts& parts) {
         if (!job) throw HttpError(404, "no render with id '" + id + "'");
         if (job->record.state != JobState::Done)
             throw HttpError(409, "render '" + id + "' is " + jobStateName(job->record.state) + ", not done");
+        auto slot = takeDownloadSlot(parts, req);
         std::shared_ptr<ExrRows> image;
         try {
             image = std::make_shared<ExrRows>(parts.jobs.imagePath(id, "exr"));
@@ -88,7 +89,7 @@ void addImageRoutes(httplib::Server& server, ServiceParts& parts) {
         if (fstop > 0) res.set_header("X-Image-Fstop", std::to_string(fstop));
         res.set_header("X-Image-Exposure", std::to_string(fstop > 0 ? 4 * fstop * fstop / M_PI : 1.0));
         res.set_content_provider(image->rowBytes() * image->height(), "application/octet-stream",
-                                 [image](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                 [image, slot](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
                                      try {
                                          return image->send(offset, length, sink);
                                      } catch (const std::exception& e) {  // damaged past its header

@@ -1,19 +1,23 @@
 // The live prescription editor's routes. A prescription is edited as JSON rows (PrescriptionJson.h)
 // and never stored until it is uploaded (POST /api/lenses):
 //   GET  /api/lenses/{id}/prescription                 the stored lens's rows
-//   GET  /api/lenses/{id}/table.dat, .../prescription.zmx   the stored lens written out
+//   GET  /api/lenses/{id}/table.dat, .../prescription.zmx, .seq   the stored lens written out
 //   POST /api/prescriptions/preview                    rows in; lens JSON, diagram PNG, analysis out
-//   POST /api/prescriptions/table.dat, .../prescription.zmx  rows in; the file text out
+//   POST /api/prescriptions/table.dat, .../prescription.zmx, .seq  rows in; the file text out
 // A preview's work is bounded: its body (kMaxPreviewBody), its rows (kMaxLensSurfaces), a fixed
 // analysis (3 fields, F d C; image_plane, reference and max_frequency as the analysis route takes them)
 // and a fixed diagram size; it runs in the heavy-work pool, and its answer is cached by the body. A
 // row's problem is 400 naming the row.
+#include <cstdlib>
+#include <functional>
 #include <future>
 #include <limits>
+#include <sstream>
 
 #include "AnalysisInputsText.h"
 #include "AnalysisJson.h"
 #include "AnalysisViews.h"
+#include "CodeVWriter.h"
 #include "core/Base64.h"
 #include "core/ContentDigest.h"
 #include "core/ContentDisposition.h"
@@ -24,6 +28,8 @@
 #include "LensJson.h"
 #include "LensTableWriter.h"
 #include "PrescriptionJson.h"
+#include "prescription/RowMedium.h"
+#include "prescription/ZemaxFile.h"
 #include "routes/ServiceParts.h"
 #include "ZemaxWriter.h"
 
@@ -170,20 +176,54 @@ void preview(ServiceParts& parts, const httplib::Request& req, httplib::Response
 
 using TableWriter = std::string (*)(const LensTable&);
 
-void replyTableText(httplib::Response& res, const LensTable& table, TableWriter write, const std::string& fileName) {
+// A lens the chosen format cannot hold: 422 naming the row.
+void replyUnwritable(httplib::Response& res, const LensTableError& e) {
+    replyJson(res, 422, {{"error", e.what()}, {"row", e.line()}, {"problem", e.problem()}});
+}
+
+// The row a line of a written .zmx belongs to: its SURF n is row n (SURF 0 the object); 0 for the
+// header and the image surface.
+int zmxRowOfLine(const std::string& text, int line, std::size_t rows) {
+    std::istringstream in(text);
+    int surface = 0;
+    std::string words;
+    for (int at = 1; at <= line && std::getline(in, words); ++at)
+        if (words.rfind("SURF ", 0) == 0) surface = std::atoi(words.c_str() + 5);
+    return surface >= 1 && static_cast<std::size_t>(surface) <= rows ? surface : 0;
+}
+
+// Edited rows as a .zmx that reads back. A glass only the prescription itself defined (a Code V
+// private glass, its rows carry its name alone) is written by name, which no catalog holds: such a
+// lens is refused, naming the row, rather than written into a file that does not open.
+std::string writeZemaxThatReadsBack(const LensTable& table) {
+    std::string text = writeZemaxText(table);
     try {
-        res.set_content(write(withGapAfterRows(table)), "text/plain; charset=utf-8");
-        res.set_header("Content-Disposition", attachmentDisposition(fileName));
+        const LensTable readBack = parseZemax(text, table.name);
+        std::vector<LensWarning> warnings;
+        for (const LensTableRow& row : readBack.rows) rowMedium(readBack, row, warnings);  // its glasses, as a reader finds them
     } catch (const LensTableError& e) {
-        replyJson(res, 422, {{"error", e.what()}, {"row", e.line()}, {"problem", e.problem()}});
+        throw LensTableError(table.name, zmxRowOfLine(text, e.line(), table.rows.size()),
+                             "written to a .zmx, this lens would not read back: " + e.problem());
     }
+    return text;
+}
+
+void replyTableText(httplib::Response& res, std::string text, const std::string& fileName) {
+    res.set_content(std::move(text), "text/plain; charset=utf-8");
+    res.set_header("Content-Disposition", attachmentDisposition(fileName));
 }
 
 void exportEdited(const httplib::Request& req, httplib::Response& res, TableWriter write, const std::string& fileName) {
+    LensTable table;
     try {
-        replyTableText(res, prescriptionFromJson(parseBody(req), kEditedLensName), write, fileName);
+        table = prescriptionFromJson(parseBody(req), kEditedLensName);
     } catch (const LensTableError& e) {
-        replyRowError(res, e);
+        return replyRowError(res, e);
+    }
+    try {
+        replyTableText(res, write(withGapAfterRows(table)), fileName);
+    } catch (const LensTableError& e) {
+        replyUnwritable(res, e);
     }
 }
 
@@ -195,22 +235,51 @@ std::string downloadName(const StoredLens& lens, const char* extension) {
     return name + extension;
 }
 
+// A stored lens written out (its rows as JSON, its .dat, its .zmx), read and written once per state
+// of the lens and the glass catalogs, in the heavy-work pool, and cached: a 1 MB Code V upload read
+// again per request took 611 MB for 32 readers.
+std::shared_ptr<const Bytes> storedLensText(ServiceParts& parts, const httplib::Request& req, const StoredLens& lens,
+                                            const std::string& format, const std::function<std::string(const LensTable&)>& write) {
+    const std::string key = "stored-lens|" + format + "|" + lens.id + "|" + lens.name + "|" +
+                            std::to_string(static_cast<int>(lens.system.layout)) + "|" + lensContentKey(parts, lens);
+    return parts.work.cachedOrComputed(parts.analyses, key, clientOf(req), [&] {
+        const auto catalogsKept = parts.glassCatalogs.holdCatalogs();
+        return textBytes(write(storedTable(lens)));
+    });
+}
+
+void replyStoredTable(ServiceParts& parts, const httplib::Request& req, httplib::Response& res, TableWriter write,
+                      const char* extension) {
+    const auto lens = findLens(parts, req.matches[1]);
+    try {
+        const auto text = storedLensText(parts, req, *lens, extension,
+                                         [write](const LensTable& table) { return write(withGapAfterRows(table)); });
+        replyTableText(res, bytesText(*text), downloadName(*lens, extension));
+    } catch (const LensTableError& e) {
+        replyUnwritable(res, e);
+    }
+}
+
 }  // namespace
 
 void addPrescriptionRoutes(httplib::Server& server, ServiceParts& parts) {
     server.Get(R"(/api/lenses/([^/]+)/prescription)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const auto lens = findLens(parts, req.matches[1]);
-        json body = prescriptionJson(storedTable(*lens));
-        body["id"] = lens->id;
-        replyJson(res, 200, body);
+        const auto text = storedLensText(parts, req, *lens, "rows", [&lens](const LensTable& table) {
+            json body = prescriptionJson(table);
+            body["id"] = lens->id;
+            return jsonText(body);
+        });
+        replyBytes(res, *text, "application/json");
     });
     server.Get(R"(/api/lenses/([^/]+)/table\.dat)", [&parts](const httplib::Request& req, httplib::Response& res) {
-        const auto lens = findLens(parts, req.matches[1]);
-        replyTableText(res, storedTable(*lens), writeLensTableText, downloadName(*lens, ".dat"));
+        replyStoredTable(parts, req, res, writeLensTableText, ".dat");
     });
     server.Get(R"(/api/lenses/([^/]+)/prescription\.zmx)", [&parts](const httplib::Request& req, httplib::Response& res) {
-        const auto lens = findLens(parts, req.matches[1]);
-        replyTableText(res, storedTable(*lens), writeZemaxText, downloadName(*lens, ".zmx"));
+        replyStoredTable(parts, req, res, writeZemaxText, ".zmx");
+    });
+    server.Get(R"(/api/lenses/([^/]+)/prescription\.seq)", [&parts](const httplib::Request& req, httplib::Response& res) {
+        replyStoredTable(parts, req, res, writeCodeVText, ".seq");
     });
     server.Post("/api/prescriptions/preview",
                 [&parts](const httplib::Request& req, httplib::Response& res) { preview(parts, req, res); });
@@ -218,7 +287,10 @@ void addPrescriptionRoutes(httplib::Server& server, ServiceParts& parts) {
         exportEdited(req, res, writeLensTableText, "edited-lens.dat");
     });
     server.Post("/api/prescriptions/prescription.zmx", [](const httplib::Request& req, httplib::Response& res) {
-        exportEdited(req, res, writeZemaxText, "edited-lens.zmx");
+        exportEdited(req, res, writeZemaxThatReadsBack, "edited-lens.zmx");
+    });
+    server.Post("/api/prescriptions/prescription.seq", [](const httplib::Request& req, httplib::Response& res) {
+        exportEdited(req, res, writeCodeVText, "edited-lens.seq");
     });
 }
 

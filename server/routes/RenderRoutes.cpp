@@ -48,12 +48,23 @@ std::string defaultScene(const ServiceParts& parts) {
     return parts.scenes.list().empty() ? "" : parts.scenes.list().front().id;
 }
 
+}  // namespace
+
+std::shared_ptr<void> takeDownloadSlot(ServiceParts& parts, const httplib::Request& req) {
+    if (auto slot = parts.downloads.take(clientOf(req))) return slot;
+    throw HttpError(429, "too many render images are being sent (at most " + std::to_string(parts.downloads.total()) +
+                             " at once, " + std::to_string(parts.downloads.perClient()) +
+                             " to one client); ask again when one has arrived", 2);
+}
+
+namespace {
+
 void sendImage(ServiceParts& parts, const httplib::Request& req, httplib::Response& res, const std::string& format) {
     const JobView job = findJob(parts, jobIdFrom(req));
     if (job.record.state != JobState::Done)
         throw HttpError(409, "render '" + job.record.id + "' is " + jobStateName(job.record.state) + ", not done");
     const std::string type = format == "png" ? "image/png" : "image/x-exr";
-    if (!replyFile(res, parts.jobs.imagePath(job.record.id, format), type))
+    if (!replyFile(res, parts.jobs.imagePath(job.record.id, format), type, takeDownloadSlot(parts, req)))
         throw HttpError(404, "the image of render '" + job.record.id + "' is no longer on disk");
     res.set_header("Content-Disposition", "inline; filename=\"" + job.record.id + "." + format + "\"");
 }
@@ -90,8 +101,8 @@ void addRenderRoutes(httplib::Server& server, ServiceParts& parts) {
 
     server.Get(R"(/api/renders/([^/]+)/preview\.png)", [&parts](const httplib::Request& req, httplib::Response& res) {
         const std::string id = jobIdFrom(req);
-        if (auto png = parts.jobs.preview(id)) {
-            replyBytes(res, *png, "image/png");
+        if (PreviewPng png = parts.jobs.preview(id)) {
+            replySharedBytes(res, std::move(png), "image/png", takeDownloadSlot(parts, req));
             res.set_header("Cache-Control", "no-store");
             return;
         }

@@ -52,8 +52,10 @@ ReportOptions reportOptions(const ServiceParts& parts, const json& body) {
             if (!id.is_string()) throw HttpError(400, "lenses must be an array of lens ids");
             if (!named.insert(id.get<std::string>()).second) continue;  // named twice: built once
             const auto lens = findLens(parts, id.get<std::string>());
-            // Only the lenses named: an uploaded one by its stored file (its id is the file's stem).
+            // Only the lenses named: an uploaded one by its stored file (its id is the file's stem),
+            // headed by the name it was uploaded as.
             o.lenses.push_back(lens->bundled ? lens->id : lens->path);
+            if (!lens->bundled) o.lensNames[lens->path] = lens->name;
         }
     }
     return o;

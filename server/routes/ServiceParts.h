@@ -2,6 +2,7 @@
 // What the route handlers work with; owned by Service, which outlives the HTTP server.
 #include <httplib.h>
 
+#include "guards/EventStreamSlots.h"
 #include "storage/DataFolderQuota.h"
 #include "storage/ResultCache.h"
 #include "jobs/DesignJobs.h"
@@ -23,12 +24,13 @@ struct ServiceParts {
     const SceneCatalog& scenes;
     RenderSettingsChecks& renderChecks;  // render requests against their scene's camera and lens
     ResultCache& diagrams;   // PNGs by lens id and drawing
-    ResultCache& analyses;   // analyses and previews as JSON, by the lens's content and the settings
+    ResultCache& analyses;   // analyses, previews, glass catalogs and stored lenses written out, as text, by all they depend on
     WorkPool& work;          // where heavy work runs (analyses, previews, diagrams, uploads, reports)
     JobQueue& jobs;
     ReportJob& report;
     DesignJobs& designJobs;  // optimisations and tolerance analyses
     DataFolderQuota& quota;  // checked before uploads and render submissions
+    EventStreamSlots& downloads;  // render images being sent: a slow reader holds a worker throughout
     double startedAt;  // seconds since the epoch
 };
 
@@ -47,6 +49,11 @@ std::string lensContentKey(const ServiceParts& parts, const StoredLens& lens);
 
 // Who is asking, for the heavy-work pool's per-client share: the client's address.
 inline const std::string& clientOf(const httplib::Request& req) { return req.remote_addr; }
+
+// A render image's hold on its HTTP worker while it is sent (keep it with the answer's content
+// provider): HttpError 429 with Retry-After when the client holds its share or downloads hold all
+// the workers they may.
+std::shared_ptr<void> takeDownloadSlot(ServiceParts& parts, const httplib::Request& req);
 
 void addHealthRoutes(httplib::Server& server, ServiceParts& parts);
 void addLensRoutes(httplib::Server& server, ServiceParts& parts);

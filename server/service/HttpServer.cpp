@@ -11,6 +11,7 @@
 #include "guards/HostCheck.h"
 #include "core/HttpError.h"
 #include "core/HttpReply.h"
+#include "core/SecurityHeaders.h"
 #include "LensDiagram.h"
 #include "prescription/LensTable.h"
 #include "prescription/OpticsError.h"
@@ -62,6 +63,7 @@ ConnectionLimits connectionLimits(const HttpLimits& http, int threads) {
     limits.stream.headerTimeout = std::chrono::seconds(http.headerTimeoutSeconds);
     limits.stream.readTimeout = std::chrono::seconds(http.readTimeoutSeconds);
     limits.stream.writeTimeout = std::chrono::seconds(http.readTimeoutSeconds);
+    limits.stream.answerTimeout = std::chrono::seconds(http.answerTimeoutSeconds);
     limits.idleTimeout = std::chrono::seconds(http.idleTimeoutSeconds);
     limits.requestsPerConnection = static_cast<std::size_t>(http.requestsPerConnection);
     limits.listenBacklog = http.listenBacklog;
@@ -108,7 +110,9 @@ HttpServer::HttpServer(const ServiceConfig& config, AccessLog& log)
     const AccessPolicy access = config.access;
     const std::string listenHost = config.host;
     server_.set_payload_max_length(http.maxBodyBytes);
-    server_.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Cache-Control", "no-cache"}});
+    httplib::Headers defaultHeaders = {{"Cache-Control", "no-cache"}};
+    for (const auto& [name, value] : securityHeaders()) defaultHeaders.emplace(name, value);
+    server_.set_default_headers(defaultHeaders);
     // The checks on a request's head; true when it is answered already (refused, or a CORS preflight).
     const auto answeredByHead = [&log, http, access, listenHost](const httplib::Request& req, httplib::Response& res) {
         log.requestStarted();

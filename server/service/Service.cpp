@@ -32,6 +32,14 @@ WorkPoolLimits workPoolLimits(const ServiceConfig& config) {
     return limits;
 }
 
+// Render images being sent: a quarter of the HTTP workers at most (as event streams and heavy work),
+// so that a quarter always answers the rest, and a few per client address.
+std::shared_ptr<EventStreamSlots> downloadSlots(const ServiceConfig& config) {
+    const int total = std::max(1, config.httpThreads / 4);
+    return std::make_shared<EventStreamSlots>(static_cast<std::size_t>(total),
+                                              static_cast<std::size_t>(std::clamp(config.http.downloadsPerClient, 1, total)));
+}
+
 // Prepares the data folder before anything opens files in it.
 std::string databasePath(const ServiceConfig& config) {
     fs::create_directories(config.dataDir);
@@ -69,7 +77,9 @@ Service::Service(const ServiceConfig& config, std::unique_ptr<JobRenderer> rende
       report_(work_),
       designJobs_(work_),
       quota_(config_.dataDir, dataQuota(config_), [this] { collectFinishedRenders(); }),
-      parts_{config_, lenses_, glassCatalogs_, scenes_, renderChecks_, diagrams_, analyses_, work_, jobs_, report_, designJobs_, quota_, secondsSinceEpoch()},
+      downloads_(downloadSlots(config_)),
+      parts_{config_, lenses_, glassCatalogs_, scenes_, renderChecks_, diagrams_, analyses_, work_, jobs_, report_, designJobs_,
+             quota_, *downloads_, secondsSinceEpoch()},
       http_(config_, accessLog_) {
     recoverJobs();
     jobs_.setAfterJob([this] { collectFinishedRenders(); });

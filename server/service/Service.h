@@ -55,6 +55,7 @@ private:
     ReportJob report_;
     DesignJobs designJobs_;  // after the pool, which runs them
     DataFolderQuota quota_;
+    std::shared_ptr<EventStreamSlots> downloads_;
     ServiceParts parts_;
     HttpServer http_;
 };

@@ -44,12 +44,17 @@ GlassCatalogStore::GlassCatalogStore(const std::string& folder, Database& databa
     fs::create_directories(folder_);
     database_.run(
         "CREATE TABLE IF NOT EXISTS glass_catalogs (id TEXT PRIMARY KEY, file_name TEXT NOT NULL, created REAL NOT NULL)");
-    std::vector<std::string> known;
+    std::vector<std::string> known, fileless;
     database_.run("SELECT id, file_name, created FROM glass_catalogs ORDER BY created", {}, [&](const SqlRow& row) {
         const std::string id = row.text(0), fileName = row.text(1);
         known.push_back(id + ".agf");
         if (!isSafeIdentifier(id)) return;
         const std::string path = (fs::path(folder_) / (id + ".agf")).string();
+        std::error_code missing;
+        if (!fs::exists(path, missing) && !missing) {
+            fileless.push_back(id);
+            return;
+        }
         try {
             auto catalog = readCatalog(readWholeFile(path), fileName);
             if (isGlassCatalogName(catalog->name))
@@ -63,6 +68,17 @@ GlassCatalogStore::GlassCatalogStore(const std::string& folder, Database& databa
             std::cerr << "lenslab serve: skipping uploaded glass catalog " << id << ": " << e.what() << "\n";
         }
     });
+    // A deletion cut off between its file and its record (kill -9) leaves a record without a file:
+    // it is finished here, once, rather than skipped with a message at every start.
+    for (const std::string& id : fileless) {
+        try {
+            database_.run("DELETE FROM glass_catalogs WHERE id = ?", {id});
+            std::cerr << "lenslab serve: removed the record of glass catalog " << id
+                      << ", whose file is gone (a deletion was cut off)\n";
+        } catch (const std::exception& e) {  // a read-only data folder: still served, records as they are
+            std::cerr << "lenslab serve: glass catalog " << id << " has no file, and its record stays: " << e.what() << "\n";
+        }
+    }
     renewDigest();
     std::error_code ec;
     for (fs::directory_iterator it(folder_, ec), end; !ec && it != end; it.increment(ec))

@@ -7,16 +7,20 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <regex>
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 namespace lenslab::test {
 
-RawConnection::RawConnection(int port) {
+RawConnection::RawConnection(int port, int receiveBuffer) {
     fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd_ >= 0 && receiveBuffer > 0) ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &receiveBuffer, sizeof receiveBuffer);
     sockaddr_in address{};
     address.sin_family = AF_INET;
     address.sin_port = htons(static_cast<uint16_t>(port));
@@ -65,6 +69,21 @@ bool RawConnection::closedByServer() {
     if (entry.revents & (POLLRDHUP | POLLHUP | POLLERR)) return true;
     char byte;
     return ::recv(fd_, &byte, 1, MSG_PEEK | MSG_DONTWAIT) == 0;
+}
+
+std::string RawConnection::readSlowly(std::size_t bytesPerSecond, double seconds) {
+    using Clock = std::chrono::steady_clock;
+    constexpr auto kStep = std::chrono::milliseconds(50);
+    const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
+    std::vector<char> buffer(std::max<std::size_t>(1, bytesPerSecond / 20));
+    std::string read;
+    while (Clock::now() < deadline) {
+        const ssize_t n = ::recv(fd_, buffer.data(), buffer.size(), MSG_DONTWAIT);
+        if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK)) break;
+        if (n > 0) read.append(buffer.data(), static_cast<std::size_t>(n));
+        std::this_thread::sleep_for(kStep);
+    }
+    return read;
 }
 
 int statusOf(const std::string& reply) {

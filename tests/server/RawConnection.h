@@ -8,7 +8,9 @@ namespace lenslab::test {
 
 class RawConnection {
 public:
-    explicit RawConnection(int port);  // connects to 127.0.0.1:port; std::runtime_error if it cannot
+    // Connects to 127.0.0.1:port (std::runtime_error if it cannot); receiveBuffer > 0 sets SO_RCVBUF,
+    // so that a client that reads slowly is not hidden by the kernel taking the answer for it.
+    explicit RawConnection(int port, int receiveBuffer = 0);
     ~RawConnection();
     RawConnection(const RawConnection&) = delete;
     RawConnection& operator=(const RawConnection&) = delete;
@@ -19,6 +21,9 @@ public:
     std::string readReply(double seconds);
     // Whether the server has closed the connection (checked now, without waiting or reading data).
     bool closedByServer();
+    // Reads like a slow client, at most `bytesPerSecond`, until the server closes or `seconds` pass;
+    // what it read.
+    std::string readSlowly(std::size_t bytesPerSecond, double seconds);
 
 private:
     int fd_ = -1;

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -164,6 +165,30 @@ Reply postRaw(httplib::Client& client, const std::string& path, const std::strin
 
 Reply remove(httplib::Client& client, const std::string& path) { return toReply(client.Delete(path)); }
 
+ConcurrentReads readAtOnce(const ServerProcess& server, const std::string& path, int readers) {
+    std::vector<std::pair<int, std::string>> answers(static_cast<std::size_t>(readers), {-1, ""});  // status, body
+    std::atomic<int> ready{0};
+    std::vector<std::thread> threads;
+    for (int i = 0; i < readers; ++i)
+        threads.emplace_back([&, i] {
+            auto client = server.client();
+            ++ready;
+            while (ready < readers) std::this_thread::yield();
+            if (const auto result = client.Get(path)) answers[static_cast<std::size_t>(i)] = {result->status, result->body};
+        });
+    for (std::thread& t : threads) t.join();
+    ConcurrentReads reads;
+    for (const auto& [status, body] : answers) {
+        if (status == 200) {
+            ++reads.answered;
+            reads.bodies.insert(body);
+        } else if (status != 429) {
+            ++reads.unexpected;
+        }
+    }
+    return reads;
+}
+
 bool isPng(const std::string& bytes) { return bytes.size() > 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0; }
 
 bool isExr(const std::string& bytes) { return bytes.size() > 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0; }
@@ -200,14 +225,17 @@ void writeFakeRendererScene(const std::string& folder) {
 
 namespace {
 
-// The server's flags for a scenes folder, once the fake renderer's scene is written there.
-std::vector<std::string> fakeSceneFlags(const TempDir& scenes) {
+// The server's flags for a scenes folder, once the fake renderer's scene is written there, then `extraArgs`.
+std::vector<std::string> fakeSceneFlags(const TempDir& scenes, const std::vector<std::string>& extraArgs) {
     writeFakeRendererScene(scenes.path());
-    return {"--scenes", scenes.path()};
+    std::vector<std::string> flags = {"--scenes", scenes.path()};
+    flags.insert(flags.end(), extraArgs.begin(), extraArgs.end());
+    return flags;
 }
 
 }  // namespace
 
-FakeRenderService::FakeRenderService() : server(fakeServerUnderTest(), data.path() + "/data", fakeSceneFlags(scenes)) {}
+FakeRenderService::FakeRenderService(const std::vector<std::string>& extraArgs)
+    : server(fakeServerUnderTest(), data.path() + "/data", fakeSceneFlags(scenes, extraArgs)) {}
 
 }  // namespace lenslab::test

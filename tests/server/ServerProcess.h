@@ -6,6 +6,7 @@
 #include <sys/types.h>
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,15 @@ Reply postJson(httplib::Client& client, const std::string& path, const nlohmann:
 Reply postRaw(httplib::Client& client, const std::string& path, const std::string& body);
 Reply remove(httplib::Client& client, const std::string& path);
 
+// `readers` GETs of `path` sent together, each on a connection of its own: the distinct bodies of
+// the 200 answers, how many there were, and how many answers were neither 200 nor 429 (the
+// heavy-work pool's refusal of a reader past its share).
+struct ConcurrentReads {
+    std::set<std::string> bodies;
+    int answered = 0, unexpected = 0;
+};
+ConcurrentReads readAtOnce(const ServerProcess& server, const std::string& path, int readers);
+
 bool isPng(const std::string& bytes);
 bool isExr(const std::string& bytes);
 
@@ -76,7 +86,7 @@ void writeFakeRendererScene(const std::string& folder);
 struct FakeRenderService {
     TempDir data, scenes;
     ServerProcess server;
-    FakeRenderService();
+    explicit FakeRenderService(const std::vector<std::string>& extraArgs = {});
 };
 
 // A small valid lens table (a singlet and a stop).

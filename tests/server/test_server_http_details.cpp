@@ -222,3 +222,23 @@ TEST_F(ServerHttpDetails, TheAccessLogCountsFilesSentInPieces) {
     }
     EXPECT_TRUE(found);
 }
+
+// Issue 40, item 9: every answer, the page, the API, a refusal and one written without cpp-httplib,
+// carries a content security policy, refuses to be framed and sends no referrer.
+TEST_F(ServerHttpDetails, EveryAnswerCarriesTheSecurityHeaders) {
+    start();
+    const std::string policy =
+        "Content-Security-Policy: default-src 'self'; script-src 'self'; style-src 'self'; img-src 'self' data: blob:; "
+        "connect-src 'self'; object-src 'none'; base-uri 'none'; form-action 'self'; frame-ancestors 'none'\r\n";
+    const std::vector<std::string> replies = {
+        exchange(get("/")), exchange(get("/app.js")), exchange(get("/api/health")), exchange(get("/api/no-such-thing")),
+        exchange("GET /api/health?x=" + std::string(20000, 'a') + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")};
+    for (const std::string& reply : replies) {
+        const std::string head = reply.substr(0, reply.find("\r\n\r\n") + 2);
+        EXPECT_NE(head.find(policy), std::string::npos) << head;
+        EXPECT_NE(head.find("X-Frame-Options: DENY\r\n"), std::string::npos) << head;
+        EXPECT_NE(head.find("Referrer-Policy: no-referrer\r\n"), std::string::npos) << head;
+        EXPECT_NE(head.find("X-Content-Type-Options: nosniff\r\n"), std::string::npos) << head;
+    }
+    EXPECT_EQ(statusOf(replies[4]), 414);
+}

@@ -72,6 +72,24 @@ TEST_F(ServerJobs, ReportsProgressAndPartialImages) {
     EXPECT_EQ(get(c, "/api/renders/" + id).status, 404);
 }
 
+// Issue 40, finding 4: readers polling the preview of a 1920^2 render at once share one encoding
+// of the partial image (each used to copy its 44 MB and encode it again), byte for byte.
+TEST_F(ServerJobs, ConcurrentPreviewReadersShareOneEncoding) {
+    auto server = start(sceneArgs());
+    auto c = server->client();
+    const Reply submitted = postJson(c, "/api/renders", {{"scene", "any"}, {"spp", 1000}, {"width", 1920}, {"height", 1920}});
+    ASSERT_EQ(submitted.status, 202) << submitted.raw;
+    const std::string id = submitted.body["id"];
+    for (int i = 0; i < 200 && get(c, "/api/renders/" + id).body["progress"]["tiles_done"] == 0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    const ConcurrentReads reads = readAtOnce(*server, "/api/renders/" + id + "/preview.png", 8);
+    EXPECT_EQ(reads.answered, 8);
+    ASSERT_EQ(reads.bodies.size(), 1u);
+    EXPECT_TRUE(isPng(*reads.bodies.begin()));
+    EXPECT_EQ(get(c, "/api/health").body["renders"]["previews_encoded"], 1);
+    EXPECT_EQ(remove(c, "/api/renders/" + id).status, 202);
+}
+
 TEST_F(ServerJobs, CancelsQueuedAndRunningRendersAndRefusesAFullQueue) {
     auto server = start(with(sceneArgs(), {"--max-queue", "2", "--renders", "1"}));
     auto c = server->client();

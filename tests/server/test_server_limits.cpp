@@ -154,6 +154,22 @@ TEST_F(ServerLimits, ASecondServerOnTheSameDataFolderFailsToStart) {
     }
 }
 
+// The whole-answer deadline and the per-client download cap are set like the other limits, and
+// refused out of their range with the range named.
+TEST_F(ServerLimits, AnswerTimeoutAndDownloadsPerClientRefuseValuesOutOfRange) {
+    const std::vector<std::pair<std::vector<std::string>, std::string>> refused = {
+        {{"--answer-timeout", "0"}, "serve: --answer-timeout must lie between 1 and 86400"},
+        {{"--downloads-per-client", "257"}, "serve: --downloads-per-client must lie between 1 and 256"}};
+    for (const auto& [args, message] : refused) {
+        try {
+            ServerProcess server(binaryUnderTest(), data_.path() + "/data", args);
+            ADD_FAILURE() << "the server started with " << args[0] << " " << args[1];
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST_F(ServerLimits, PastTheConnectionLimitTheLongestWaitingAreDropped) {
     start({"--max-connections", "8", "--header-timeout", "30"});
     std::vector<std::unique_ptr<RawConnection>> slow;

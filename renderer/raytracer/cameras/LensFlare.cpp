@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "Render.h"
 #include "analysis/GhostAnalysis.h"
 #include "core/ColourMatching.h"
 #include "trace/ExactTrace.h"
@@ -19,6 +20,12 @@ namespace lenslab {
 namespace {
 
 constexpr double kFirstNm = 395, kStepNm = 30;
+
+bool cancelled(const std::atomic<bool>* cancel) { return cancel && cancel->load(std::memory_order_relaxed); }
+
+void throwIfCancelled(const std::atomic<bool>* cancel) {
+    if (cancelled(cancel)) throw RenderCancelled();
+}
 
 // Reflectance of every surface, from each side, at every flare wavelength, tabulated over the
 // cosine of incidence (linear between entries): the thin-film matrices once per frame instead of
@@ -503,7 +510,9 @@ double flareWavelengthEdgeNm(int k) {
     return kFirstNm + kStepNm * (k - 0.5);
 }
 
-std::vector<GhostPath> selectGhostPaths(const RealisticCamera& camera, const GhostSelection& selection) {
+std::vector<GhostPath> selectGhostPaths(const RealisticCamera& camera, const GhostSelection& selection,
+                                        const std::atomic<bool>* cancel) {
+    throwIfCancelled(cancel);
     if (selection.mode != GhostSelection::Mode::Brightest) return ghostPaths(camera.analysis().lens);
     std::vector<GhostPath> paths;
     for (const GhostImage& g : analyzeGhosts(camera.analysis()).ghosts) {
@@ -515,7 +524,7 @@ std::vector<GhostPath> selectGhostPaths(const RealisticCamera& camera, const Gho
 
 std::vector<float> renderLensFlare(const RealisticCamera& camera, int width, int height,
                                    const std::vector<FlareSource>& sources, const std::vector<GhostPath>& paths,
-                                   GhostModel model, FlareStats& stats) {
+                                   GhostModel model, FlareStats& stats, const std::atomic<bool>* cancel) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<float> layer(std::size_t(width) * height * 3, 0.0f);
     stats = {};
@@ -527,13 +536,17 @@ std::vector<float> renderLensFlare(const RealisticCamera& camera, int width, int
     const FlareFrame frame{camera, width, height, camera.params().filmDiagonalMm / std::hypot(double(width), double(height)),
                            camera.exactWeightScale()};
     std::vector<UnfoldedGhost> ghosts;
-    for (const GhostPath& p : paths) ghosts.push_back(unfoldGhost(lens, p));
+    for (const GhostPath& p : paths) {
+        throwIfCancelled(cancel);
+        ghosts.push_back(unfoldGhost(lens, p));
+    }
 
     const std::size_t jobs = sources.size() * ghosts.size();
     std::vector<std::vector<FlareMesh>> meshes(model == GhostModel::Exact ? jobs : 0);
     std::vector<std::vector<FlarePatch>> patches(model == GhostModel::Paraxial ? jobs : 0);
     std::atomic<std::uint64_t> rays{0};
     tbb::parallel_for(std::size_t(0), jobs, [&](std::size_t job) {
+        if (cancelled(cancel)) return;
         const FlareSource& source = sources[job / ghosts.size()];
         const FlareContext c{camera, responses, ghosts[job % ghosts.size()], camera.filmZ(), lens.frontZ(),
                              lens.frontZ() + lens.surfaces.front().apertureRadius + 1};
@@ -545,6 +558,7 @@ std::vector<float> renderLensFlare(const RealisticCamera& camera, int width, int
         meshes[job] = exactGhost(c, source, traced);
         rays += traced;
     });
+    throwIfCancelled(cancel);
     stats.raysTraced = rays;
 
     // The film in bands of rows, each band drawing every ghost in the same order: the sums come out
@@ -552,6 +566,7 @@ std::vector<float> renderLensFlare(const RealisticCamera& camera, int width, int
     constexpr int kBandRows = 32;
     const int bands = (height + kBandRows - 1) / kBandRows;
     tbb::parallel_for(0, bands, [&](int band) {
+        if (cancelled(cancel)) return;
         const int y0 = band * kBandRows;
         const LayerBand part{layer.data() + std::size_t(y0) * width * 3, y0, std::min(height, y0 + kBandRows), width};
         for (const auto& job : meshes)
@@ -559,6 +574,7 @@ std::vector<float> renderLensFlare(const RealisticCamera& camera, int width, int
         for (const auto& job : patches)
             for (const FlarePatch& p : job) rasterizePatch(p, frame, part);
     });
+    throwIfCancelled(cancel);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return layer;
 }

@@ -7,7 +7,7 @@
 namespace lenslab {
 
 FlareLayer makeFlareLayer(const Camera& camera, const CameraOverrides& overrides, const SceneGeometry& geometry, int width,
-                          int height, const SpectralSensor& sensor, float time) {
+                          int height, const SpectralSensor& sensor, float time, const std::atomic<bool>* cancel) {
     FlareLayer layer;
     const auto* realistic = dynamic_cast<const RealisticCamera*>(&camera);
     if (!realistic) {
@@ -21,8 +21,8 @@ FlareLayer makeFlareLayer(const Camera& camera, const CameraOverrides& overrides
     const bool automatic = selection.mode == GhostSelection::Mode::Auto;
     const std::vector<FlareSource> sources = findFlareSources(geometry, *realistic, width, height, sensor, automatic, time);
     if (sources.empty() && automatic) return layer;
-    layer.rgb = renderLensFlare(*realistic, width, height, sources, selectGhostPaths(*realistic, selection), selection.model,
-                                layer.stats);
+    layer.rgb = renderLensFlare(*realistic, width, height, sources, selectGhostPaths(*realistic, selection, cancel),
+                                selection.model, layer.stats, cancel);
     std::map<std::string, int> kinds;
     for (const FlareSource& s : sources) ++kinds[s.what];
     std::string what;

@@ -2,6 +2,7 @@
 // A frame's lens flare: the ghosts its realistic camera asks for (RealisticParams::ghosts: the
 // scene's camera parameters or the render settings), of the emitters found for them
 // (render/FlareSources.h), as an image layer the frame adds to its pixels.
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,8 @@ struct FlareLayer {
 
 // Empty for any other camera than a still realistic one, and when its selection is off, or auto
 // and no emitter is bright enough. SceneError when the settings ask for ghosts (all, N) of a
-// camera that moves during the exposure.
+// camera that moves during the exposure. RenderCancelled once *cancel is set.
 FlareLayer makeFlareLayer(const Camera& camera, const CameraOverrides& overrides, const SceneGeometry& geometry, int width,
-                          int height, const SpectralSensor& sensor, float time);
+                          int height, const SpectralSensor& sensor, float time, const std::atomic<bool>* cancel);
 
 }  // namespace lenslab

@@ -112,7 +112,8 @@ PreparedFrame::PreparedFrame(const RenderSettings& settings, const std::atomic<b
     integrator_ = makeIntegrator(*geometry_, scene_.integrator, scene_.camera.medium.get());
     spectral_ = settings.camera.spectral.value_or(camera_->spectral());
     arena_.execute([&] {
-        flare_ = makeFlareLayer(*camera_, settings.camera, *geometry_, width_, height_, sensor_, shutter_.moment(0, scene_.transformTimes));
+        flare_ = makeFlareLayer(*camera_, settings.camera, *geometry_, width_, height_, sensor_,
+                                shutter_.moment(0, scene_.transformTimes), cancel);
     });
     const int byFilter = scene_.filter.type == FilterType::Box ? 1 : 3;
     wavelengths_ = spectral_ ? (settings.wavelengthsPerSample > 0 ? settings.wavelengthsPerSample : byFilter) : 0;
