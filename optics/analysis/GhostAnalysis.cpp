@@ -55,7 +55,7 @@ std::vector<GhostStep> directSteps(const LensSystem& lens) {
 
 }  // namespace
 
-GhostAnalysis analyzeGhosts(const LensAnalysis& a) {
+GhostAnalysis analyzeGhosts(const LensAnalysis& a, const std::atomic<bool>* stop) {
     const LensSystem& lens = a.lens;
     GhostAnalysis out;
     out.reflectingSurfaces = int(reflectingSurfaces(lens).size());
@@ -73,6 +73,7 @@ GhostAnalysis analyzeGhosts(const LensAnalysis& a) {
     const double directImageRadius = std::fabs(direct.b) * sourceRadius;  // chief ray: y 0, slope 1 at the pupil
 
     for (const GhostPath& path : ghostPaths(lens)) {
+        if (stop && stop->load(std::memory_order_relaxed)) break;
         const UnfoldedGhost g = unfoldGhost(lens, path);
         const int m = int(g.lens.surfaces.size());
         GhostImage image;

@@ -5,6 +5,7 @@
 // surface.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 
@@ -95,6 +96,16 @@ TEST(GhostPaths, CountIsNChooseTwoForEveryBundledLens) {
         }
         EXPECT_EQ(analyzeGhosts(analyzeLens(lens, std::nullopt, INFINITY)).ghosts.size(), paths.size()) << file;
     }
+}
+
+// A render cancelled while it picks its brightest ghosts: the analysis stops between two ghosts,
+// so a set flag leaves none done; unset, all 45 of dgauss.50mm.
+TEST(GhostAnalysis, AStopFlagEndsTheWorkBetweenTwoGhosts) {
+    const LensAnalysis a = analyzeLens(loadLensSystem(LENSLAB_SOURCE_DIR "/lenses/dgauss.50mm.dat"), std::nullopt, INFINITY);
+    std::atomic<bool> stop{false};
+    EXPECT_EQ(analyzeGhosts(a, &stop).ghosts.size(), 45u);
+    stop = true;
+    EXPECT_TRUE(analyzeGhosts(a, &stop).ghosts.empty());
 }
 
 // Every ghost of every bundled lens (aspheres, the reflex lens's mirrors included): its paraxial

@@ -514,8 +514,10 @@ std::vector<GhostPath> selectGhostPaths(const RealisticCamera& camera, const Gho
                                         const std::atomic<bool>* cancel) {
     throwIfCancelled(cancel);
     if (selection.mode != GhostSelection::Mode::Brightest) return ghostPaths(camera.analysis().lens);
+    const GhostAnalysis analysis = analyzeGhosts(camera.analysis(), cancel);
+    throwIfCancelled(cancel);
     std::vector<GhostPath> paths;
-    for (const GhostImage& g : analyzeGhosts(camera.analysis()).ghosts) {
+    for (const GhostImage& g : analysis.ghosts) {
         if (int(paths.size()) == selection.count) break;
         paths.push_back(g.path);
     }
