@@ -27,7 +27,10 @@ export function startServer(binary, work, extra = []) {
 export async function stopServer(server) {
   const exited = new Promise((resolve) => server.once("exit", resolve));
   server.kill("SIGTERM");
-  await Promise.race([exited, new Promise((resolve) => setTimeout(resolve, 10000))]);
+  // The fallback timer is cleared: a pending one keeps node alive for its whole 10 s after the test.
+  let timer;
+  await Promise.race([exited, new Promise((resolve) => { timer = setTimeout(resolve, 10000); })]);
+  clearTimeout(timer);
 }
 
 // The end of a page test: the browser, the server and the test's scratch folder, all gone.
