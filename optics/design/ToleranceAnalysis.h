@@ -100,7 +100,8 @@ struct SensitivityRow {
     double meritChange = 0;        // the larger |merit - nominal merit| of the two (infinity: one is invalid)
 };
 
-// Every tolerance alone at both limits, ranked by meritChange, largest first.
+// Every tolerance alone at both limits, ranked by meritChange, largest first. Once
+// compensation.cancelled() answers true the rows not yet measured are left unmeasured.
 std::vector<SensitivityRow> toleranceSensitivity(const ToleranceProblem& problem, const OptimiserOptions& compensation = compensatorSearch());
 
 }  // namespace lenslab

@@ -231,6 +231,22 @@ TEST(Sensitivity, EachToleranceAloneAtBothLimitsRankedByItsEffect) {
     EXPECT_GT(std::fabs(rowOf(ToleranceKind::Radius).plus.values[3] - 50.0), 1e-3);
 }
 
+// A cancelled sensitivity run stops between rows: the service's DELETE and SIGTERM waited 20 s for
+// dgauss.50mm's hundred tolerances while every row still evaluated its lens.
+TEST(Sensitivity, ACancelledRunMeasuresNoFurtherRow) {
+    ToleranceProblem p = tripletProblem(MeritImagePlane::Paraxial);
+    p.tolerances = {{ToleranceKind::Radius, 0, 0, 0.001}, {ToleranceKind::Thickness, 1, 0, 0.02},
+                    {ToleranceKind::TiltX, 4, 0, 0.05}, {ToleranceKind::Index, 4, 0, 5e-4}};
+    OptimiserOptions compensation = compensatorSearch();
+    compensation.cancelled = [] { return true; };
+    const std::vector<SensitivityRow> rows = toleranceSensitivity(p, compensation);
+    ASSERT_EQ(rows.size(), 4u);
+    for (const SensitivityRow& row : rows) {
+        EXPECT_FALSE(row.plus.valid) << describeTolerance(row.tolerance);
+        EXPECT_FALSE(row.minus.valid) << describeTolerance(row.tolerance);
+    }
+}
+
 TEST(GlassSnap, AModelGlassBecomesItsNearestCatalogGlass) {
     // Schott's N-BK7 is 1.5168 / 64.17 and F2 1.62004 / 36.37: a model glass a little off each
     // snaps to it (not to P-BK7, 1.5164 / 64.06, nor N-F2, 1.62005 / 36.43, each farther on the
