@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "prescription/Pi.h"
+
 namespace lenslab {
 
 namespace {
@@ -77,7 +79,6 @@ Complex TransferFunction::at(double frequency) const {
 }
 
 double diffractionLimitedMtf(double frequency, double cutoff, double obscuration) {
-    constexpr double kPi = 3.14159265358979323846;
     const double v = frequency / cutoff, e = obscuration;
     if (!(v < 1)) return 0;
     auto lens = [](double s) { return std::acos(s) - s * std::sqrt(1 - s * s); };  // 2 circles' overlap, pi/2 at 0

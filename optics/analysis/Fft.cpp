@@ -4,11 +4,11 @@
 #include <stdexcept>
 #include <utility>
 
+#include "prescription/Pi.h"
+
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // exp(sign 2 pi i k / n) for k < n / 2, computed directly (no recurrence: no drift over long rows).
 std::vector<Complex> twiddles(std::size_t n, int sign) {

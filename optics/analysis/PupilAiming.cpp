@@ -7,12 +7,11 @@
 #include "trace/AxisRay.h"
 #include "trace/ExactTrace.h"
 #include "firstorder/Pupils.h"
+#include "prescription/Pi.h"
 
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Ray rayThrough(const FieldAim& aim, double u, double v) {
     const Vec3 p{u, v, aim.aimZ};

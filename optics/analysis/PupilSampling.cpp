@@ -4,11 +4,11 @@
 #include <stdexcept>
 #include <utility>
 
+#include "prescription/Pi.h"
+
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The Gauss-Legendre nodes and weights of order n on [-1, 1]: the roots of P_n by Newton's method from
 // Tricomi's estimate, weights 2 / ((1 - x^2) P_n'(x)^2).

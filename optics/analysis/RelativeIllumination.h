@@ -34,6 +34,9 @@ std::vector<IlluminationSample> relativeIllumination(const LensSystem& lens, dou
 
 // The largest film radius (up to `limit`) from which some ray still passes the lens: the edge of
 // the image circle. Bisection on the passing test; 0 when nothing passes from the centre.
+// The cosine-fourth law's factor for a ray at cosine c to the axis.
+inline double cos4(double c) { return (c * c) * (c * c); }
+
 double imageCircleRadius(const LensSystem& lens, double filmZ, double limit);
 
 }  // namespace lenslab

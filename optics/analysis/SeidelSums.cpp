@@ -2,11 +2,11 @@
 
 #include <cmath>
 
+#include "prescription/Pi.h"
+
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A paraxial ray in the designer's frame (light along +s = -z): its height and slope in front of
 // each surface, and its slope after it.

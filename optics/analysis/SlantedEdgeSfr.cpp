@@ -6,11 +6,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "prescription/Pi.h"
+
 namespace lenslab {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kBin = 0.25;  // pixels: four bins a pixel
 constexpr double kMinSlantDegrees = 1, kMaxSlantDegrees = 30;
 

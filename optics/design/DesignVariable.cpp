@@ -17,13 +17,6 @@ namespace {
 
 constexpr const char* kKindNames[] = {"curvature", "thickness", "conic", "asphere", "index", "abbe"};
 
-// The gap that separates row `row` from the next surface toward the film (or the film itself).
-double& gapAfter(LensTable& table, int row) {
-    return table.layout == TableLayout::GapAfter ? table.rows[row].gap : table.rows[row + 1].gap;
-}
-
-double gapAfter(const LensTable& table, int row) { return gapAfter(const_cast<LensTable&>(table), row); }
-
 bool isGlassKind(VariableKind kind) { return kind == VariableKind::Index || kind == VariableKind::Abbe; }
 
 }  // namespace

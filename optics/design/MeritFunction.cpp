@@ -21,6 +21,7 @@
 #include "firstorder/Pupils.h"
 #include "prescription/NumberText.h"
 #include "prescription/OpticsError.h"
+#include "prescription/Pi.h"
 #include "trace/AxisRay.h"
 #include "trace/ExactTrace.h"
 
@@ -28,7 +29,6 @@ namespace lenslab {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Why a lens is not one a designer could build; caught by evaluateMerit and reported.

@@ -8,13 +8,13 @@ namespace lenslab {
 
 namespace {
 
-struct KindInfo {
+struct OperandKindInfo {
     OperandKind kind;
     const char* name;
     const char* unit;
 };
 
-constexpr KindInfo kKinds[] = {
+constexpr OperandKindInfo kOperandKinds[] = {
     {OperandKind::EffectiveFocalLength, "efl", "mm"},
     {OperandKind::FNumber, "fnumber", ""},
     {OperandKind::BackFocalDistance, "bfl", "mm"},
@@ -33,10 +33,10 @@ constexpr KindInfo kKinds[] = {
     {OperandKind::LateralColour, "lateral_colour", "mm"},
 };
 
-const KindInfo& info(OperandKind kind) {
-    for (const KindInfo& k : kKinds)
+const OperandKindInfo& info(OperandKind kind) {
+    for (const OperandKindInfo& k : kOperandKinds)
         if (k.kind == kind) return k;
-    return kKinds[0];
+    return kOperandKinds[0];
 }
 
 }  // namespace
@@ -45,7 +45,7 @@ const char* operandKindName(OperandKind kind) { return info(kind).name; }
 const char* operandUnit(OperandKind kind) { return info(kind).unit; }
 
 std::optional<OperandKind> parseOperandKind(const std::string& name) {
-    for (const KindInfo& k : kKinds)
+    for (const OperandKindInfo& k : kOperandKinds)
         if (name == k.name) return k.kind;
     return std::nullopt;
 }

@@ -15,13 +15,13 @@ namespace {
 
 constexpr double kTestWavelengthMm = 632.8e-6;  // fringes are counted in the HeNe light of the test plate
 
-struct KindInfo {
+struct ToleranceKindInfo {
     ToleranceKind kind;
     const char* name;
     const char* unit;
 };
 
-constexpr KindInfo kKinds[] = {
+constexpr ToleranceKindInfo kToleranceKinds[] = {
     {ToleranceKind::Radius, "radius", ""},
     {ToleranceKind::Power, "power", " fringes"},
     {ToleranceKind::Astigmatism, "astigmatism", " fringes"},
@@ -38,10 +38,10 @@ constexpr KindInfo kKinds[] = {
     {ToleranceKind::Abbe, "abbe", ""},
 };
 
-const KindInfo& info(ToleranceKind kind) {
-    for (const KindInfo& k : kKinds)
+const ToleranceKindInfo& info(ToleranceKind kind) {
+    for (const ToleranceKindInfo& k : kToleranceKinds)
         if (k.kind == kind) return k;
-    return kKinds[0];
+    return kToleranceKinds[0];
 }
 
 bool isElementKind(ToleranceKind k) {
@@ -52,10 +52,6 @@ bool isElementKind(ToleranceKind k) {
 bool isGlassKind(ToleranceKind k) { return k == ToleranceKind::Index || k == ToleranceKind::Abbe; }
 
 bool hasGlassAfter(const LensTableRow& r) { return !r.mirror && (!r.glass.empty() || r.index > 1); }
-
-double& gapAfter(LensTable& table, int row) {
-    return table.layout == TableLayout::GapAfter ? table.rows[row].gap : table.rows[row + 1].gap;
-}
 
 // The row's frame change (a decentre and return), created on first use.
 FrameChange& frameOf(LensTableRow& r, FrameMode mode) {
@@ -115,7 +111,7 @@ void insertElementMotion(LensTable& table, int first, int last, std::array<doubl
 const char* toleranceKindName(ToleranceKind kind) { return info(kind).name; }
 
 std::optional<ToleranceKind> parseToleranceKind(const std::string& name) {
-    for (const KindInfo& k : kKinds)
+    for (const ToleranceKindInfo& k : kToleranceKinds)
         if (name == k.name) return k.kind;
     return std::nullopt;
 }

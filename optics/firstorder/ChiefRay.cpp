@@ -8,12 +8,11 @@
 #include "trace/ExactTrace.h"
 #include "trace/NearAxis.h"
 #include "prescription/OpticsError.h"
+#include "prescription/Pi.h"
 
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Rays of one field angle, labelled by the height at which they cross the front vertex plane.
 struct FieldRays {

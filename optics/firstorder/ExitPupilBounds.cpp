@@ -4,13 +4,13 @@
 #include <cmath>
 
 #include "prescription/OpticsError.h"
+#include "prescription/Pi.h"
 #include "trace/RayBatch.h"
 
 namespace lenslab {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxVertices = 256;
 
 // Which aiming-plane points (x, y) pass the lens from the film point (r, 0, filmZ).

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <vector>
 
+#include "prescription/Pi.h"
+
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A paraxial ray as (height, reduced slope omega = N u) in front of each surface, Code V's signs:
 // s = -z along the unfolded axis, index N signed (negated at each mirror).

@@ -32,11 +32,6 @@ struct Command {
     std::vector<Word> words;
 };
 
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
-
 // Lines joined at a trailing '&', comments ('!' outside quotes) dropped, commands split at ';'.
 std::vector<Command> splitCommands(const std::string& text, const std::string& name) {
     std::vector<Command> commands;
@@ -61,7 +56,7 @@ std::vector<Command> splitCommands(const std::string& text, const std::string& n
             if (words.empty()) return;
             Command c;
             c.line = line;
-            c.name = upper(words.front().text);
+            c.name = upperCase(words.front().text);
             c.words.assign(words.begin() + 1, words.end());
             if (words.front().quoted) c.name = "'" + words.front().text + "'";  // a private glass's row
             commands.push_back(c);
@@ -155,7 +150,7 @@ constexpr double kInfiniteObject = 1e10;  // Code V writes 1e10 and more for an 
 constexpr int kMaxWavelengths = 24;
 constexpr int kMaxFields = 100;
 
-struct Reader {
+struct SeqReader {
     std::string name;
     double millimetresPerUnit = 1;
     bool radiusMode = false;  // RDM: radii; without it (as ray-optics reads these files) curvatures
@@ -210,9 +205,9 @@ struct Reader {
 
 // ---- system data -------------------------------------------------------------------------------
 
-void readDim(Reader& r, const Command& c) {
+void readDim(SeqReader& r, const Command& c) {
     if (c.words.empty()) r.fail(c.line, "DIM needs a unit: M, C or I");
-    const std::string unit = upper(c.words[0].text);
+    const std::string unit = upperCase(c.words[0].text);
     static const std::unordered_map<std::string, double> units = {{"M", 1}, {"MM", 1}, {"C", 10}, {"CM", 10},
                                                                   {"I", 25.4}, {"IN", 25.4}};
     const auto it = units.find(unit);
@@ -220,25 +215,25 @@ void readDim(Reader& r, const Command& c) {
     r.millimetresPerUnit = it->second;
 }
 
-void readRdm(Reader& r, const Command& c) {
-    r.radiusMode = c.words.empty() || upper(c.words[0].text)[0] != 'N';
+void readRdm(SeqReader& r, const Command& c) {
+    r.radiusMode = c.words.empty() || upperCase(c.words[0].text)[0] != 'N';
 }
 
-void readTitle(Reader& r, const Command& c) {
+void readTitle(SeqReader& r, const Command& c) {
     std::string title;
     for (const Word& w : c.words) title += (title.empty() ? "" : " ") + w.text;
     if (!title.empty()) r.t.comments.push_back(title);
 }
 
-void readWl(Reader& r, const Command& c) {
+void readWl(SeqReader& r, const Command& c) {
     r.wavelengths = r.numbers(c, kMaxWavelengths);
     for (double nm : r.wavelengths)
         if (const auto problem = wavelengthProblem(nm)) r.fail(c.line, "WL: " + *problem);
 }
 
-void readWtw(Reader& r, const Command& c) { r.weights = r.numbers(c, kMaxWavelengths); }
+void readWtw(SeqReader& r, const Command& c) { r.weights = r.numbers(c, kMaxWavelengths); }
 
-void readRef(Reader& r, const Command& c) {
+void readRef(SeqReader& r, const Command& c) {
     const double v = r.number(c, 0);
     if (v != std::floor(v) || v < 1 || v > kMaxWavelengths)
         r.fail(c.line, "REF names a wavelength by its number (1.." + std::to_string(kMaxWavelengths) + "), found " +
@@ -248,7 +243,7 @@ void readRef(Reader& r, const Command& c) {
 }
 
 // XAN/YAN, XOB/YOB, XIM/YIM, XRI/YRI: one coordinate of every field; the type from the letters.
-void readField(Reader& r, const Command& c) {
+void readField(SeqReader& r, const Command& c) {
     static const std::unordered_map<std::string, FieldType> types = {
         {"AN", FieldType::ObjectAngle}, {"OB", FieldType::ObjectHeight},
         {"IM", FieldType::ParaxialImageHeight}, {"RI", FieldType::RealImageHeight}};
@@ -261,39 +256,39 @@ void readField(Reader& r, const Command& c) {
     r.fieldLine = c.line;
 }
 
-void readWtf(Reader& r, const Command& c) { r.fields.weights = r.numbers(c, kMaxFields); }
+void readWtf(SeqReader& r, const Command& c) { r.fields.weights = r.numbers(c, kMaxFields); }
 
-void readEpd(Reader& r, const Command& c) {
+void readEpd(SeqReader& r, const Command& c) {
     r.epd = r.number(c, 0);
     if (!(*r.epd > 0)) r.fail(c.line, "EPD must be a positive diameter");
 }
-void readFno(Reader& r, const Command& c) {
+void readFno(SeqReader& r, const Command& c) {
     r.fno = r.number(c, 0);
     if (!(*r.fno > 0)) r.fail(c.line, "FNO must be positive");
 }
-void readNao(Reader& r, const Command& c) {
+void readNao(SeqReader& r, const Command& c) {
     r.nao = r.number(c, 0);
     if (!(*r.nao > 0 && *r.nao < 1)) r.fail(c.line, "NAO must lie between 0 and 1");
 }
-void readNa(Reader& r, const Command& c) {
+void readNa(SeqReader& r, const Command& c) {
     r.imageNa = r.number(c, 0);
     if (!(*r.imageNa > 0 && *r.imageNa < 1)) r.fail(c.line, "NA must lie between 0 and 1");
 }
 
 // ---- private catalog: PRV, PWL wavelengths, 'NAME' indices or 'NAME' LAU coefficients, END --------
 
-void readPrv(Reader& r, const Command&) { r.inPrivate = true; }
-void readPwl(Reader& r, const Command& c) { r.privateWavelengths = r.numbers(c, 100); }
-void readEnd(Reader& r, const Command&) { r.inPrivate = false; }
+void readPrv(SeqReader& r, const Command&) { r.inPrivate = true; }
+void readPwl(SeqReader& r, const Command& c) { r.privateWavelengths = r.numbers(c, 100); }
+void readEnd(SeqReader& r, const Command&) { r.inPrivate = false; }
 
-void readPrivateGlass(Reader& r, const Command& c) {
+void readPrivateGlass(SeqReader& r, const Command& c) {
     const std::string glass = c.name.substr(1, c.name.size() - 2);
     if (!r.inPrivate) r.fail(c.line, "'" + glass + "': a quoted glass definition belongs between PRV and END");
     GlassSubstitute s;
     s.name = glass;
     s.source = r.name + ":" + std::to_string(c.line);
     try {
-        if (!c.words.empty() && upper(c.words[0].text) == "LAU") {
+        if (!c.words.empty() && upperCase(c.words[0].text) == "LAU") {
             // Laurent: n^2 = A0 + A1 L^2 + A2 L^-2 + A3 L^-4 + A4 L^-6 + A5 L^-8 (L in micrometres).
             Command values = c;
             values.words.erase(values.words.begin());
@@ -343,10 +338,10 @@ bool isGlassCode(const std::string& text) {
 // the caller's check rather than thrown).
 double decimal(const std::string& digits) { return std::strtod(digits.c_str(), nullptr); }
 
-void readGlass(Reader& r, RawSurface& s, const Command& c, std::size_t from) {
+void readGlass(SeqReader& r, RawSurface& s, const Command& c, std::size_t from) {
     if (from >= c.words.size()) return;
     const Word& w = c.words[from];
-    const std::string u = upper(w.text);
+    const std::string u = upperCase(w.text);
     if (c.words.size() > from + 2) r.fail(c.line, c.name + " has more words than a radius, a thickness and a glass");
     if (!w.quoted && u == "REFL") {
         s.mirror = true;
@@ -396,7 +391,7 @@ void readGlass(Reader& r, RawSurface& s, const Command& c, std::size_t from) {
     }
 }
 
-void startSurface(Reader& r, const Command& c, RawSurface& s) {
+void startSurface(SeqReader& r, const Command& c, RawSurface& s) {
     s = RawSurface{};
     s.line = c.line;
     s.shape = r.number(c, 0);
@@ -405,7 +400,7 @@ void startSurface(Reader& r, const Command& c, RawSurface& s) {
     r.current = &s;
 }
 
-void readSo(Reader& r, const Command& c) {
+void readSo(SeqReader& r, const Command& c) {
     if (r.haveObject) r.fail(c.line, "a second object surface (SO)");
     if (!r.surfaces.empty()) r.fail(c.line, "SO after the first lens surface: the object surface comes first");
     startSurface(r, c, r.object);
@@ -413,7 +408,7 @@ void readSo(Reader& r, const Command& c) {
     if (c.words.size() > 2) r.fail(c.line, "SO takes a radius and a thickness; the object space is air");
 }
 
-void readS(Reader& r, const Command& c) {
+void readS(SeqReader& r, const Command& c) {
     if (r.haveImage) r.fail(c.line, "S after the image surface (SI)");
     if (int(r.surfaces.size()) == kMaxLensSurfaces)
         r.fail(c.line, "too many surfaces: a lens may have at most " + std::to_string(kMaxLensSurfaces) + " surfaces");
@@ -423,7 +418,7 @@ void readS(Reader& r, const Command& c) {
     readGlass(r, r.surfaces.back(), c, 2);
 }
 
-void readSi(Reader& r, const Command& c) {
+void readSi(SeqReader& r, const Command& c) {
     if (r.haveImage) r.fail(c.line, "a second image surface (SI)");
     startSurface(r, c, r.image);
     r.haveImage = true;
@@ -432,18 +427,18 @@ void readSi(Reader& r, const Command& c) {
 
 // STO marks the surface given last as the stop; values after it would be a surface written in a
 // form Code V does not have (they used to be dropped without a word).
-void readSto(Reader& r, const Command& c) {
+void readSto(SeqReader& r, const Command& c) {
     if (!c.words.empty()) r.fail(c.line, "STO takes no values (it marks the surface before it as the stop; give the surface with S)");
     r.lensSurface(c).stop = true;
 }
 
-void readRdy(Reader& r, const Command& c) {
+void readRdy(SeqReader& r, const Command& c) {
     RawSurface& s = r.surface(c);
     s.shape = r.number(c, 0);
     s.curvatureGiven = false;
 }
 
-void readCuy(Reader& r, const Command& c) {
+void readCuy(SeqReader& r, const Command& c) {
     // CUY with qualifiers is a solve; its value is already the surface's.
     if (!c.words.empty() && !std::isdigit(static_cast<unsigned char>(c.words[0].text[0])) && c.words[0].text[0] != '-' &&
         c.words[0].text[0] != '.')
@@ -453,49 +448,49 @@ void readCuy(Reader& r, const Command& c) {
     s.curvatureGiven = true;
 }
 
-void readThi(Reader& r, const Command& c) {
+void readThi(SeqReader& r, const Command& c) {
     if (!c.words.empty() && std::isalpha(static_cast<unsigned char>(c.words[0].text[0]))) return;  // a solve (THI HMY 0)
     r.surface(c).thickness = r.number(c, 0);
 }
 
-void readSph(Reader& r, const Command& c) {
+void readSph(SeqReader& r, const Command& c) {
     RawSurface& s = r.lensSurface(c);
     s.conic = 0;
     s.polynomial = {};
 }
-void readConOrAsp(Reader& r, const Command& c) { r.lensSurface(c); }
-void readK(Reader& r, const Command& c) { r.lensSurface(c).conic = r.number(c, 0); }
+void readConOrAsp(SeqReader& r, const Command& c) { r.lensSurface(c); }
+void readK(SeqReader& r, const Command& c) { r.lensSurface(c).conic = r.number(c, 0); }
 
-void readPolynomial(Reader& r, const Command& c) {
+void readPolynomial(SeqReader& r, const Command& c) {
     static const std::string kLetters = "ABCDEFGHJ";
     r.lensSurface(c).polynomial[kLetters.find(c.name[0])] = r.number(c, 0);
 }
 
-void readSlb(Reader& r, const Command& c) {
+void readSlb(SeqReader& r, const Command& c) {
     if (!c.words.empty()) r.surface(c).name = c.words[0].text;
 }
 
 // ---- decentres and tilts -----------------------------------------------------------------------
 
-FrameChange& frameOf(Reader& r, const Command& c) {
+FrameChange& frameOf(SeqReader& r, const Command& c) {
     RawSurface& s = r.surface(c);
     if (&s == &r.object) r.fail(c.line, c.name + " on the object surface: decentre the first lens surface instead");
     if (!s.frame) s.frame = FrameChange{};
     return *s.frame;
 }
 
-void readDecentre(Reader& r, const Command& c) {
+void readDecentre(SeqReader& r, const Command& c) {
     FrameChange& f = frameOf(r, c);
     const int axis = c.name[0] - 'X';
     f.decentre[axis] = r.number(c, 0);
 }
 
-void readTilt(Reader& r, const Command& c) {
+void readTilt(SeqReader& r, const Command& c) {
     FrameChange& f = frameOf(r, c);
     f.tiltDegrees[c.name[0] - 'A'] = r.number(c, 0);
 }
 
-void readFrameMode(Reader& r, const Command& c) {
+void readFrameMode(SeqReader& r, const Command& c) {
     FrameChange& f = frameOf(r, c);
     f.mode = c.name == "DAR" ? FrameMode::DecentreAndReturn : c.name == "BEN" ? FrameMode::Bend : FrameMode::Reverse;
     if (&r.surface(c) == &r.image && f.mode != FrameMode::Basic)
@@ -506,13 +501,13 @@ void readFrameMode(Reader& r, const Command& c) {
 
 // CIR, REX, REY, ELX, ELY with the qualifiers OBS (an obscuration), HOL (a hole: rays there are
 // lost, as at an obscuration), EDG (the mechanical edge: drawn, not clipped), S and L'..' labels.
-void readAperture(Reader& r, const Command& c) {
+void readAperture(SeqReader& r, const Command& c) {
     RawSurface& s = r.surface(c);
     if (&s == &r.object) r.fail(c.line, c.name + " on the object surface");
     bool obscuration = false, edge = false;
     std::size_t i = 0;
     for (; i < c.words.size(); ++i) {
-        const std::string q = upper(c.words[i].text);
+        const std::string q = upperCase(c.words[i].text);
         if (q == "OBS" || q == "HOL") obscuration = true;
         else if (q == "EDG") edge = true;
         else if (q.rfind("L'", 0) == 0 || q.rfind("L\"", 0) == 0 || q == "ALL") continue;
@@ -535,35 +530,35 @@ void readAperture(Reader& r, const Command& c) {
     s.lastAperture = &*slot;
 }
 
-void readApertureDecentre(Reader& r, const Command& c) {
+void readApertureDecentre(SeqReader& r, const Command& c) {
     RawSurface& s = r.surface(c);
     if (!s.lastAperture) r.fail(c.line, c.name + " before an aperture (CIR, REX/REY, ELX/ELY) on this surface");
     (c.name[2] == 'X' ? s.lastAperture->centreX : s.lastAperture->centreY) = r.number(c, 0);
 }
 
-void readApertureRotation(Reader& r, const Command& c) {
+void readApertureRotation(SeqReader& r, const Command& c) {
     if (r.number(c, 0) != 0) r.fail(c.line, "rotated apertures (ARO) are not supported: apertures keep the surface's x and y");
 }
 
 // ---- commands that change nothing lenslab computes ----------------------------------------------
 
-void ignore(Reader&, const Command&) {}
+void ignore(SeqReader&, const Command&) {}
 
-void readGo(Reader& r, const Command&) { r.closed = true; }
+void readGo(SeqReader& r, const Command&) { r.closed = true; }
 
 // CUF is zero in every file seen; anything else would change the surface.
-void readZeroOnly(Reader& r, const Command& c) {
+void readZeroOnly(SeqReader& r, const Command& c) {
     for (std::size_t i = 0; i < c.words.size(); ++i)
         if (std::isdigit(static_cast<unsigned char>(c.words[i].text[0])) || c.words[i].text[0] == '-' ||
             c.words[i].text[0] == '.')
             if (r.number(c, i) != 0) r.fail(c.line, c.name + " " + c.words[i].text + " is not supported (only 0)");
 }
 
-void refuse(Reader& r, const Command& c, const std::string& what) {
+void refuse(SeqReader& r, const Command& c, const std::string& what) {
     r.fail(c.line, "command " + c.name + " (" + what + ") is not supported");
 }
 
-using Handler = std::function<void(Reader&, const Command&)>;
+using Handler = std::function<void(SeqReader&, const Command&)>;
 
 const std::unordered_map<std::string, Handler>& handlers() {
     static const std::unordered_map<std::string, Handler> table = [] {
@@ -587,15 +582,15 @@ const std::unordered_map<std::string, Handler>& handlers() {
         };
         for (const char* axis : {"XAN", "YAN", "XOB", "YOB", "XIM", "YIM", "XRI", "YRI"}) h[axis] = readField;
         for (const char* letter : {"A", "B", "C", "D", "E", "F", "G", "H", "J"}) h[letter] = readPolynomial;
-        h["DIF"] = [](Reader& r, const Command& c) { refuse(r, c, "diffractive and holographic surfaces"); };
+        h["DIF"] = [](SeqReader& r, const Command& c) { refuse(r, c, "diffractive and holographic surfaces"); };
         for (const char* c : {"HOR", "HWL", "HCT", "HCO", "HCC", "HV1", "HV2", "HX1", "HY1", "HZ1"})
-            h[c] = [](Reader& r, const Command& cmd) { refuse(r, cmd, "diffractive and holographic surfaces"); };
+            h[c] = [](SeqReader& r, const Command& cmd) { refuse(r, cmd, "diffractive and holographic surfaces"); };
         for (const char* c : {"XTO", "YTO", "SPS", "XYP", "ZRN", "ZFR", "QBF", "QCN", "UDS", "SPT"})
-            h[c] = [](Reader& r, const Command& cmd) { refuse(r, cmd, "this surface type"); };
+            h[c] = [](SeqReader& r, const Command& cmd) { refuse(r, cmd, "this surface type"); };
         for (const char* c : {"GRN", "GRD", "GRM"})
-            h[c] = [](Reader& r, const Command& cmd) { refuse(r, cmd, "gradient-index media"); };
+            h[c] = [](SeqReader& r, const Command& cmd) { refuse(r, cmd, "gradient-index media"); };
         for (const char* c : {"ZOO", "POS", "SEL"})
-            h[c] = [](Reader& r, const Command& cmd) { refuse(r, cmd, "zoom positions; lenslab reads one configuration"); };
+            h[c] = [](SeqReader& r, const Command& cmd) { refuse(r, cmd, "zoom positions; lenslab reads one configuration"); };
         return h;
     }();
     return table;
@@ -610,7 +605,7 @@ std::string handlerName(const std::string& name) {
 
 // ---- assembly ----------------------------------------------------------------------------------
 
-LensTableRow lensRow(const Reader& r, const RawSurface& s, int number) {
+LensTableRow lensRow(const SeqReader& r, const RawSurface& s, int number) {
     const double u = r.millimetresPerUnit;
     LensTableRow row;
     row.line = s.line;
@@ -663,7 +658,7 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number) {
     return row;
 }
 
-void setWavelengths(Reader& r) {
+void setWavelengths(SeqReader& r) {
     LensTable& t = r.t;
     t.wavelengths = r.wavelengths;
     if (!r.weights.empty() && r.weights.size() != r.wavelengths.size())
@@ -678,7 +673,7 @@ void setWavelengths(Reader& r) {
     t.primaryWavelength = t.wavelengths[ref - 1];
 }
 
-void setFields(Reader& r) {
+void setFields(SeqReader& r) {
     const FieldLists& f = r.fields;
     if (!f.type) return;
     const std::size_t n = std::max(f.x.size(), f.y.size());
@@ -692,7 +687,7 @@ void setFields(Reader& r) {
                                      f.weights.empty() ? 1 : f.weights[i]});
 }
 
-LensTable assemble(Reader& r, int lastLine) {
+LensTable assemble(SeqReader& r, int lastLine) {
     if (r.surfaces.empty())
         r.fail(std::max(lastLine, 1), "no lens surfaces: a .seq needs S commands between the object (SO) and the image (SI)");
     LensTable& t = r.t;
@@ -745,7 +740,7 @@ std::string firstCommand(const std::string& text) {
         std::istringstream words(line.substr(0, bang));
         std::string first;
         if (!(words >> first)) continue;
-        return upper(first.substr(0, first.find(';')));
+        return upperCase(first.substr(0, first.find(';')));
     }
     return "";
 }
@@ -753,7 +748,7 @@ std::string firstCommand(const std::string& text) {
 }  // namespace
 
 LensTable parseCodeV(const std::string& bytes, const std::string& name) {
-    Reader r;
+    SeqReader r;
     r.name = name;
     const std::string text = toUtf8Text(bytes, name);
     const std::vector<Command> commands = splitCommands(text, name);

@@ -9,8 +9,6 @@ namespace lenslab {
 
 namespace {
 
-std::string mm(double v) { return formatNumber(v) + " mm"; }
-
 // How far surface b lies beyond surface a at height h, along the light (negative: they cross).
 double clearance(const Surface& a, const Surface& b, double h, double way) {
     return way * ((a.z - sag(a, h)) - (b.z - sag(b, h)));
@@ -39,7 +37,7 @@ void clipOverlappingEdges(LensSystem& lens) {
         if (!crosses) continue;
         if (inside == 0 && clearance(a, b, 0, way) < -tolerance)
             throw LensTableError(lens.name, b.line, "surface overlaps the one before it (line " + std::to_string(a.line) +
-                                                        ") on the axis: gap " + mm(way * (a.z - b.z)));
+                                                        ") on the axis: gap " + formatMillimetres(way * (a.z - b.z)));
         double outside = hMax * std::min(1.0, (inside / hMax) + 1.0 / kSamples);
         for (int it = 0; it < 60; ++it) {
             const double mid = 0.5 * (inside + outside);
@@ -49,8 +47,8 @@ void clipOverlappingEdges(LensSystem& lens) {
             const double edge = clearance(a, b, hMax, way);
             lens.warnings.push_back(
                 {b.line, "surfaces on lines " + std::to_string(a.line) + " and " + std::to_string(b.line) +
-                             " cross at height " + mm(inside) + ", inside their clear apertures (edge thickness " +
-                             mm(edge) + " at " + mm(hMax) + "): rays beyond " + mm(inside) + " are clipped there"});
+                             " cross at height " + formatMillimetres(inside) + ", inside their clear apertures (edge thickness " +
+                             formatMillimetres(edge) + " at " + formatMillimetres(hMax) + "): rays beyond " + formatMillimetres(inside) + " are clipped there"});
         }
         a.apertureRadius = std::min(a.apertureRadius, inside);
         b.apertureRadius = std::min(b.apertureRadius, inside);

@@ -2,11 +2,11 @@
 
 #include <cmath>
 
+#include "prescription/Pi.h"
+
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 using Matrix = std::array<double, 9>;
 

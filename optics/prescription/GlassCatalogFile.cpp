@@ -21,18 +21,13 @@ constexpr std::size_t kMaxGlasses = 20000;
 // in every lookup, list and message.
 constexpr std::size_t kMaxNameLength = 64;
 
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
-
 std::string catalogName(const std::string& fileName) {
     std::string base = fileName.substr(fileName.find_last_of("/\\") + 1);
     if (isGlassCatalogFileName(base)) base.resize(base.size() - 4);
-    return upper(base);
+    return upperCase(base);
 }
 
-struct Reader {
+struct AgfReader {
     std::string file;
     [[noreturn]] void fail(int line, const std::string& problem) const { throw LensTableError(file, line, problem); }
 
@@ -94,11 +89,11 @@ std::vector<std::string> fields(const std::string& line) {
 }  // namespace
 
 bool isGlassCatalogFileName(const std::string& name) {
-    return name.size() > 4 && upper(name.substr(name.size() - 4)) == ".AGF";
+    return name.size() > 4 && upperCase(name.substr(name.size() - 4)) == ".AGF";
 }
 
 GlassCatalogFile parseGlassCatalogFile(const std::string& bytes, const std::string& fileName) {
-    Reader r{fileName};
+    AgfReader r{fileName};
     GlassCatalogFile catalog;
     catalog.name = catalogName(fileName);
     if (catalog.name.size() > kMaxNameLength)
@@ -127,7 +122,7 @@ GlassCatalogFile parseGlassCatalogFile(const std::string& bytes, const std::stri
             if (f[1].size() > kMaxNameLength)
                 r.fail(lineNo, "the glass name has " + std::to_string(f[1].size()) + " characters, more than " +
                                    std::to_string(kMaxNameLength));
-            if (const auto [first, added] = nameLines.emplace(upper(f[1]), lineNo); !added)
+            if (const auto [first, added] = nameLines.emplace(upperCase(f[1]), lineNo); !added)
                 r.fail(lineNo, "glass " + f[1] + " is named twice in the catalog: first on line " +
                                    std::to_string(first->second) + "; a lens could find only one of them");
             Medium glass;

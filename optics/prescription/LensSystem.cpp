@@ -9,18 +9,12 @@
 #include "prescription/AutomaticApertures.h"
 #include "prescription/EdgeOverlap.h"
 #include "prescription/FormSag.h"
+#include "prescription/NumberText.h"
 #include "prescription/RowMedium.h"
 
 namespace lenslab {
 
 namespace {
-
-std::string mm(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v << " mm";
-    return s.str();
-}
 
 void checkSagDefined(const LensTable& table, const LensTableRow& r, const Surface& s) {
     const double limit = sagDomainRadius(s);
@@ -28,11 +22,11 @@ void checkSagDefined(const LensTable& table, const LensTableRow& r, const Surfac
     std::ostringstream msg;
     msg.precision(6);
     if (s.conic == 0)
-        msg << "diameter " << mm(2 * s.apertureRadius) << " is larger than the sphere of radius "
-            << mm(std::fabs(s.radius)) << " allows (at most " << mm(2 * limit) << ")";
+        msg << "diameter " << formatMillimetres(2 * s.apertureRadius) << " is larger than the sphere of radius "
+            << formatMillimetres(std::fabs(s.radius)) << " allows (at most " << formatMillimetres(2 * limit) << ")";
     else
-        msg << "clear diameter " << mm(2 * s.apertureRadius) << " reaches past where the conic surface (radius "
-            << mm(s.radius) << ", conic " << s.conic << ") is defined: at most " << mm(2 * limit);
+        msg << "clear diameter " << formatMillimetres(2 * s.apertureRadius) << " reaches past where the conic surface (radius "
+            << formatMillimetres(s.radius) << ", conic " << s.conic << ") is defined: at most " << formatMillimetres(2 * limit);
     throw LensTableError(table.name, r.line, msg.str());
 }
 
@@ -44,7 +38,7 @@ void checkForm(const LensTable& table, const LensTableRow& r) {
     if (q && !(f.normalisationRadius > 0 && std::isfinite(f.normalisationRadius)))
         throw LensTableError(table.name, r.line, std::string(surfaceKindName(f.kind)) +
                                                      " needs a positive normalisation radius, found " +
-                                                     mm(f.normalisationRadius));
+                                                     formatMillimetres(f.normalisationRadius));
     if (f.kind == SurfaceKind::Qbfs && r.conic != 0)
         throw LensTableError(table.name, r.line, "a Qbfs surface departs from a sphere (Forbes 2007): its conic must be 0");
 }
@@ -249,8 +243,8 @@ LensSystem buildLensSystem(const LensTable& table) {
             lens.stopIndex = static_cast<int>(lens.surfaces.size());
         }
         if (!s.automaticAperture && s.obscurationRadius >= s.apertureRadius)
-            throw LensTableError(table.name, r.line, "the central obscuration (" + mm(r.obscurationDiameter) +
-                                                         ") covers the whole clear diameter (" + mm(r.diameter) + ")");
+            throw LensTableError(table.name, r.line, "the central obscuration (" + formatMillimetres(r.obscurationDiameter) +
+                                                         ") covers the whole clear diameter (" + formatMillimetres(r.diameter) + ")");
         if (!s.automaticAperture && !s.clearShape) checkSagDefined(table, r, s);
         lens.surfaces.push_back(s);
         surfaceRows.push_back(&r);

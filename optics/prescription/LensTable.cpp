@@ -15,6 +15,12 @@
 
 namespace lenslab {
 
+double& gapAfter(LensTable& table, int row) {
+    return table.layout == TableLayout::GapAfter ? table.rows[row].gap : table.rows[row + 1].gap;
+}
+
+double gapAfter(const LensTable& table, int row) { return gapAfter(const_cast<LensTable&>(table), row); }
+
 const char* layoutName(TableLayout layout) {
     return layout == TableLayout::GapBefore ? "gap-before" : "gap-after";
 }

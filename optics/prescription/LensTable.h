@@ -125,6 +125,10 @@ private:
     std::string problem_;
 };
 
+// The gap from row `row` to the next surface (or the film), in whichever row the layout keeps it.
+double& gapAfter(LensTable& table, int row);
+double gapAfter(const LensTable& table, int row);
+
 // Parses a lens table from text. `name` is used in messages. Throws LensTableError.
 LensTable parseLensTable(const std::string& text, const std::string& name,
                          std::optional<TableLayout> layout = std::nullopt);

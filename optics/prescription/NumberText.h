@@ -25,6 +25,9 @@ inline std::string formatFixed(double v, int decimals) {
     return s;
 }
 
+// A length in millimetres as messages state it: "12.5 mm".
+inline std::string formatMillimetres(double v) { return formatNumber(v) + " mm"; }
+
 // An f-number as lenses are marked: three significant digits (2.02, 5.6), whole numbers from
 // 1000 on.
 inline std::string formatFNumber(double v) { return std::fabs(v) >= 1000 ? formatFixed(v, 0) : formatNumber(v, 3); }

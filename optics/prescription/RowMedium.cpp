@@ -7,6 +7,7 @@
 
 #include "prescription/GlassCatalog.h"
 #include "prescription/NumberText.h"
+#include "prescription/TextEncoding.h"
 #include "prescription/Wavelength.h"
 
 namespace lenslab {
@@ -19,11 +20,6 @@ std::string joined(const std::vector<std::string>& names) {
     return out;
 }
 
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
-
 // The row's catalog, then the file's (Zemax GCAT), are searched first.
 std::vector<std::string> preferredCatalogs(const LensTable& table, const std::string& rowCatalog) {
     std::vector<std::string> catalogs;
@@ -33,9 +29,9 @@ std::vector<std::string> preferredCatalogs(const LensTable& table, const std::st
 }
 
 const GlassSubstitute* substituteFor(const LensTable& table, const std::string& name) {
-    const std::string key = upper(name);
+    const std::string key = upperCase(name);
     for (const GlassSubstitute& s : table.substitutes)
-        if (upper(s.name) == key) return &s;
+        if (upperCase(s.name) == key) return &s;
     return nullptr;
 }
 
@@ -79,7 +75,7 @@ Medium catalogMedium(const LensTable& table, const LensTableRow& r, std::vector<
 }  // namespace
 
 std::string mouldedBaseName(const std::string& name) {
-    const std::string key = upper(name);
+    const std::string key = upperCase(name);
     for (const char* suffix : {"_MOLD", "-MOLD", " MOLD", "_MOLDED", "-MOLDED"}) {
         const std::string s = suffix;
         if (key.size() > s.size() && key.compare(key.size() - s.size(), s.size(), s) == 0)

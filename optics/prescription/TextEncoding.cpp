@@ -1,5 +1,6 @@
 #include "prescription/TextEncoding.h"
 
+#include <cctype>
 #include <cstdint>
 
 #include "prescription/LensTable.h"
@@ -68,6 +69,11 @@ std::string toUtf8Text(const std::string& bytes, const std::string& name) {
     if (startsWithUtf16ByteOrderMark(bytes)) return utf16ToUtf8(bytes, bytes[0] == '\xff', name);
     if (bytes.rfind(kUtf8Mark, 0) == 0) return bytes.substr(kUtf8Mark.size());
     return bytes;
+}
+
+std::string upperCase(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
 }
 
 }  // namespace lenslab

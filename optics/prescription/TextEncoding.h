@@ -12,4 +12,7 @@ bool startsWithUtf16ByteOrderMark(const std::string& bytes);
 // surrogate pair.
 std::string toUtf8Text(const std::string& bytes, const std::string& name);
 
+// ASCII letters in upper case: glass, catalog and command names compare without case.
+std::string upperCase(std::string s);
+
 }  // namespace lenslab

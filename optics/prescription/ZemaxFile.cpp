@@ -72,7 +72,7 @@ struct Fields {
     std::vector<double> x, y, weights;
 };
 
-struct Reader {
+struct ZmxReader {
     std::string name;
     double millimetresPerUnit = 1;
     std::string title;  // NAME
@@ -120,12 +120,12 @@ struct Reader {
 
 // ---- header lines ------------------------------------------------------------------------------
 
-void readMode(Reader& r, const Line& l) {
+void readMode(ZmxReader& r, const Line& l) {
     if (r.field(l, 0) != "SEQ")
         r.fail(l.number, "MODE " + l.fields[0] + ": only sequential files (MODE SEQ) are read; " + kSupported);
 }
 
-void readUnit(Reader& r, const Line& l) {
+void readUnit(ZmxReader& r, const Line& l) {
     static const std::unordered_map<std::string, double> units = {{"MM", 1}, {"CM", 10}, {"IN", 25.4}, {"M", 1000}};
     const auto it = units.find(r.field(l, 0));
     if (it == units.end()) r.fail(l.number, "UNIT " + l.fields[0] + " is not one of MM, CM, IN, M");
@@ -137,10 +137,10 @@ std::string trimmed(const std::string& s) {
     return b == std::string::npos ? "" : s.substr(b, s.find_last_not_of(" \t") - b + 1);
 }
 
-void readName(Reader& r, const Line& l) { r.title = trimmed(l.rest); }
+void readName(ZmxReader& r, const Line& l) { r.title = trimmed(l.rest); }
 
 // NOTE n text: n is Zemax's note slot, the text a line of the designer's notes.
-void readNote(Reader& r, const Line& l) {
+void readNote(ZmxReader& r, const Line& l) {
     std::istringstream in(l.rest);
     std::string slot;
     in >> slot;
@@ -149,12 +149,12 @@ void readNote(Reader& r, const Line& l) {
     if (!trimmed(text).empty()) r.notes.push_back(trimmed(text));
 }
 
-void readEnpd(Reader& r, const Line& l) { r.enpd = r.number(l, 0); }
-void readFnum(Reader& r, const Line& l) { r.fnum = r.number(l, 0); }
-void readObna(Reader& r, const Line& l) { r.obna = r.number(l, 0); }
+void readEnpd(ZmxReader& r, const Line& l) { r.enpd = r.number(l, 0); }
+void readFnum(ZmxReader& r, const Line& l) { r.fnum = r.number(l, 0); }
+void readObna(ZmxReader& r, const Line& l) { r.obna = r.number(l, 0); }
 
 // FTYP type ? fields wavelengths ...: type 0 angle, 1 object height, 2 paraxial and 3 real image height.
-void readFtyp(Reader& r, const Line& l) {
+void readFtyp(ZmxReader& r, const Line& l) {
     r.fields.type = r.integer(l, 0);
     if (r.fields.type < 0 || r.fields.type > 3)
         r.fail(l.number, "FTYP " + l.fields[0] + ": lenslab reads field types 0 to 3 (angle, object height, paraxial "
@@ -163,17 +163,17 @@ void readFtyp(Reader& r, const Line& l) {
     if (l.fields.size() > 3) r.fields.wavelengths = r.integer(l, 3);
 }
 
-void readFieldValues(Reader& r, const Line& l) {
+void readFieldValues(ZmxReader& r, const Line& l) {
     std::vector<double> v;
     for (std::size_t i = 0; i < l.fields.size(); ++i) v.push_back(r.number(l, i));
     (l.keyword == "XFLN" ? r.fields.x : l.keyword == "YFLN" ? r.fields.y : r.fields.weights) = v;
 }
-void readGcat(Reader& r, const Line& l) { r.catalogs.insert(r.catalogs.end(), l.fields.begin(), l.fields.end()); }
+void readGcat(ZmxReader& r, const Line& l) { r.catalogs.insert(r.catalogs.end(), l.fields.begin(), l.fields.end()); }
 
 // The number a decimal text in micrometres states, in nanometres: the text read with its exponent
 // raised by 3, so "0.5875618" is exactly the double "587.5618" is (a double read in micrometres,
 // times 1000, misses some by an ulp; formats/ZemaxWriter.cpp writes wavelengths this way).
-double nanometres(const Reader& r, const Line& l, std::size_t i) {
+double nanometres(const ZmxReader& r, const Line& l, std::size_t i) {
     const double micrometres = r.number(l, i);  // a finite number
     const std::string& text = l.fields[i];
     const auto e = text.find_first_of("eE");
@@ -186,7 +186,7 @@ double nanometres(const Reader& r, const Line& l, std::size_t i) {
 }
 
 // WAVM slot micrometres weight
-void readWavm(Reader& r, const Line& l) {
+void readWavm(ZmxReader& r, const Line& l) {
     const int slot = r.integer(l, 0);
     if (slot != int(r.wavelengths.size()) + 1)
         r.fail(l.number, "WAVM " + l.fields[0] + " out of order: expected slot " +
@@ -194,12 +194,12 @@ void readWavm(Reader& r, const Line& l) {
     r.wavelengths.push_back({nanometres(r, l, 1), l.fields.size() > 2 ? r.number(l, 2) : 1.0, l.number});
 }
 
-void readPwav(Reader& r, const Line& l) {
+void readPwav(ZmxReader& r, const Line& l) {
     r.primarySlot = r.integer(l, 0);
     r.primaryLine = l.number;
 }
 
-void readSurf(Reader& r, const Line& l) {
+void readSurf(ZmxReader& r, const Line& l) {
     const int n = r.integer(l, 0);
     if (n != int(r.surfaces.size()))
         r.fail(l.number, "SURF " + l.fields[0] + " out of order: expected SURF " + std::to_string(r.surfaces.size()));
@@ -213,7 +213,7 @@ void readSurf(Reader& r, const Line& l) {
 
 // ---- surface lines -----------------------------------------------------------------------------
 
-void readType(Reader& r, const Line& l) {
+void readType(ZmxReader& r, const Line& l) {
     std::string type = r.field(l, 0);
     if (type.rfind("GRIN", 0) == 0)
         r.fail(l.number, "gradient-index surfaces (TYPE " + type + ") are not supported; " + kSupported +
@@ -226,29 +226,29 @@ void readType(Reader& r, const Line& l) {
     r.surface(l).type = type;
 }
 
-void readCurv(Reader& r, const Line& l) {
+void readCurv(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     r.number(l, 0);  // a finite number
     s.curvature = std::strtold(l.fields[0].c_str(), nullptr);
     s.curvatureLine = l.number;
 }
 
-void readDisz(Reader& r, const Line& l) {
+void readDisz(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     s.thickness = r.field(l, 0) == "INFINITY" ? INFINITY : r.number(l, 0);
     s.thicknessLine = l.number;
 }
 
-void readConi(Reader& r, const Line& l) { r.surface(l).conic = r.number(l, 0); }
+void readConi(ZmxReader& r, const Line& l) { r.surface(l).conic = r.number(l, 0); }
 
-void readParm(Reader& r, const Line& l) { r.surface(l).parms.push_back({r.integer(l, 0), r.number(l, 1), l.number}); }
-void readXdat(Reader& r, const Line& l) { r.surface(l).extra.push_back({r.integer(l, 0), r.number(l, 1), l.number}); }
-void readComm(Reader& r, const Line& l) { r.surface(l).comment = trimmed(l.rest); }
+void readParm(ZmxReader& r, const Line& l) { r.surface(l).parms.push_back({r.integer(l, 0), r.number(l, 1), l.number}); }
+void readXdat(ZmxReader& r, const Line& l) { r.surface(l).extra.push_back({r.integer(l, 0), r.number(l, 1), l.number}); }
+void readComm(ZmxReader& r, const Line& l) { r.surface(l).comment = trimmed(l.rest); }
 
 // GLAS name solve pickup nd vd ...: solve 1 makes (nd, vd) a model glass, as does the name ___BLANK
 // (Zemax's model glass, also when picked up, solve 2); otherwise the name is a catalog glass and nd
 // its index at d where the file gives one.
-void readGlas(Reader& r, const Line& l) {
+void readGlas(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     const std::string& name = r.field(l, 0);
     if (name == "MIRROR") {
@@ -267,7 +267,7 @@ void readGlas(Reader& r, const Line& l) {
 // COAT name: lenslab's coating text (prescription/Coating.h), which covers the names of single
 // materials Zemax uses (MGF2). A coating defined only in a COATING.DAT file (a vendor's THORC)
 // leaves the surface with the default coating and a warning: it changes ghosts, not the image.
-void readCoat(Reader& r, const Line& l) {
+void readCoat(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     s.coating = trimmed(l.rest);
     if (s.coating.empty()) return;  // a blank coating column
@@ -280,21 +280,21 @@ void readCoat(Reader& r, const Line& l) {
     }
 }
 
-void readDiam(Reader& r, const Line& l) {
+void readDiam(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     s.semiDiameter = r.number(l, 0);
     s.semiDiameterLine = l.number;
 }
-void readMema(Reader& r, const Line& l) { r.surface(l).mechanicalSemiDiameter = r.number(l, 0); }
+void readMema(ZmxReader& r, const Line& l) { r.surface(l).mechanicalSemiDiameter = r.number(l, 0); }
 
-void readStop(Reader& r, const Line& l) {
+void readStop(ZmxReader& r, const Line& l) {
     r.surface(l);
     if (r.stopLine) r.fail(l.number, "a second STOP; the first is on line " + std::to_string(r.stopLine));
     r.stopLine = r.surfaces.back().stopLine = l.number;
 }
 
 // CLAP/FLAP minRadius maxRadius: a circular aperture; a minimum radius blocks the centre.
-void readCircularAperture(Reader& r, const Line& l) {
+void readCircularAperture(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     s.obscurationRadius = r.number(l, 0);
     s.apertureRadius = r.number(l, 1);
@@ -304,7 +304,7 @@ void readCircularAperture(Reader& r, const Line& l) {
 }
 
 // OBSC minRadius maxRadius: a central obscuration when the minimum is 0.
-void readObsc(Reader& r, const Line& l) {
+void readObsc(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     if (r.number(l, 0) != 0)
         r.fail(l.number,
@@ -314,7 +314,7 @@ void readObsc(Reader& r, const Line& l) {
 }
 
 // The old form of surface tilts (DECX, DECY, TILT): refused unless every value is 0.
-void readDecenterOrTilt(Reader& r, const Line& l) {
+void readDecenterOrTilt(ZmxReader& r, const Line& l) {
     r.surface(l);
     for (std::size_t i = 0; i < l.fields.size(); ++i)
         if (r.number(l, i) != 0)
@@ -324,7 +324,7 @@ void readDecenterOrTilt(Reader& r, const Line& l) {
 
 // SCBD 1 order ? dx dy tiltx tilty tiltz: the surface's own decentre and tilt, before it (the
 // coordinates return after it). Other SCBD lines (the after-surface data) must be all zero.
-void readScbd(Reader& r, const Line& l) {
+void readScbd(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     const int which = r.integer(l, 0);
     std::array<double, 5> v{};
@@ -343,19 +343,19 @@ void readScbd(Reader& r, const Line& l) {
 }
 
 // OBDC x y: the aperture's decentre in the surface's plane.
-void readObdc(Reader& r, const Line& l) {
+void readObdc(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     s.apertureCentreX = r.number(l, 0);
     s.apertureCentreY = l.fields.size() > 1 ? r.number(l, 1) : 0;
 }
 
-void refuseGrin(Reader& r, const Line& l) {
+void refuseGrin(ZmxReader& r, const Line& l) {
     r.fail(l.number,
            "gradient-index media (GRIN) are not supported; " + std::string(kSupported) + " with homogeneous glass");
 }
 
 // SQAP/ELAP xhalf yhalf: a rectangular or elliptical clear aperture; SQOB/ELOB the obscuration.
-void readShapedAperture(Reader& r, const Line& l) {
+void readShapedAperture(ZmxReader& r, const Line& l) {
     RawSurface& s = r.surface(l);
     SurfaceAperture a;
     a.kind = l.keyword[0] == 'S' ? ApertureKind::Rectangular : ApertureKind::Elliptical;
@@ -366,7 +366,7 @@ void readShapedAperture(Reader& r, const Line& l) {
     (l.keyword[2] == 'A' ? s.clearShape : s.obscurationShape) = a;
 }
 
-using Handler = void (*)(Reader&, const Line&);
+using Handler = void (*)(ZmxReader&, const Line&);
 
 // Every keyword that changes what lenslab builds or the file's own analysis (its fields); all others
 // (FIMP, HIDE, MIRR, SLAB, POPS, COFN, display and optimisation settings, pickups whose values Zemax
@@ -403,7 +403,7 @@ Line splitLine(const std::string& text, int number) {
 // ---- assembly ----------------------------------------------------------------------------------
 
 // Even-asphere PARM i is the coefficient of r^(2i): in mm it scales as length^(1-2i).
-AsphericCoefficients asphericTerms(const Reader& r, const RawSurface& s) {
+AsphericCoefficients asphericTerms(const ZmxReader& r, const RawSurface& s) {
     AsphericCoefficients a{};
     if (s.type != "EVENASPH") return a;  // a STANDARD surface has no parameters: Zemax keeps stale ones
     for (const auto& t : s.parms) {
@@ -421,7 +421,7 @@ AsphericCoefficients asphericTerms(const Reader& r, const RawSurface& s) {
 // ODDASPH PARM i multiplies r^i (i = 1..8): in mm it scales as length^(1-i). A Q-type surface's
 // XDAT 1 is its kind (0 Qcon, 1 Qbfs; ASL5040-UV's conic base fixes 0 as Qcon, which Qbfs has not),
 // XDAT 2 the number of terms, XDAT 3 the normalisation radius, XDAT 4.. the terms a_m (lengths).
-SurfaceForm surfaceForm(const Reader& r, const RawSurface& s) {
+SurfaceForm surfaceForm(const ZmxReader& r, const RawSurface& s) {
     const double u = r.millimetresPerUnit;
     SurfaceForm f;
     if (s.type == "ODDASPH") {
@@ -490,7 +490,7 @@ void setMedium(LensTableRow& row, const RawSurface& s, const LensTableRow* befor
 }
 
 // PARM 1, 2 decentre x, y; 3, 4, 5 tilt about x, y, z (degrees); 6 the order (0: decentre first).
-FrameChange coordinateBreak(const Reader& r, const RawSurface& s) {
+FrameChange coordinateBreak(const ZmxReader& r, const RawSurface& s) {
     FrameChange f;
     for (const auto& t : s.parms) {
         if (t.index == 1 || t.index == 2) f.decentre[t.index - 1] = t.value * r.millimetresPerUnit;
@@ -502,14 +502,14 @@ FrameChange coordinateBreak(const Reader& r, const RawSurface& s) {
 }
 
 // A surface's own decentre, in millimetres.
-std::optional<FrameChange> surfaceTilt(const Reader& r, const RawSurface& s) {
+std::optional<FrameChange> surfaceTilt(const ZmxReader& r, const RawSurface& s) {
     if (!s.tilt) return std::nullopt;
     FrameChange f = *s.tilt;
     for (double& d : f.decentre) d *= r.millimetresPerUnit;
     return f;
 }
 
-LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const LensTableRow* before, bool reversed) {
+LensTableRow lensRow(const ZmxReader& r, const RawSurface& s, int number, const LensTableRow* before, bool reversed) {
     const double u = r.millimetresPerUnit;
     LensTableRow row;
     row.line = s.line;
@@ -573,7 +573,7 @@ LensTableRow lensRow(const Reader& r, const RawSurface& s, int number, const Len
 
 // Zemax lists all 24 wavelength slots: FTYP says how many are used; without it, trailing default
 // slots past the primary are taken as unused.
-std::vector<Wavelength> usedWavelengths(const Reader& r) {
+std::vector<Wavelength> usedWavelengths(const ZmxReader& r) {
     std::vector<Wavelength> w = r.wavelengths;
     if (r.fields.wavelengths > 0 && r.fields.wavelengths <= int(w.size())) {
         w.resize(std::max(r.fields.wavelengths, r.primarySlot));
@@ -587,7 +587,7 @@ std::vector<Wavelength> usedWavelengths(const Reader& r) {
 }
 
 // XFLN/YFLN/FWGN list all 12 slots; FTYP says how many are fields.
-void setFields(const Reader& r, LensTable& t) {
+void setFields(const ZmxReader& r, LensTable& t) {
     const Fields& f = r.fields;
     static const FieldType kTypes[] = {FieldType::ObjectAngle, FieldType::ObjectHeight, FieldType::ParaxialImageHeight,
                                        FieldType::RealImageHeight};
@@ -601,7 +601,7 @@ void setFields(const Reader& r, LensTable& t) {
     }
 }
 
-void setHeader(const Reader& r, LensTable& t) {
+void setHeader(const ZmxReader& r, LensTable& t) {
     t.name = r.name;
     t.layout = TableLayout::GapAfter;
     t.format = "zmx";
@@ -629,7 +629,7 @@ void setHeader(const Reader& r, LensTable& t) {
     setFields(r, t);
 }
 
-LensTable assemble(const Reader& r, int lastLine) {
+LensTable assemble(const ZmxReader& r, int lastLine) {
     const int n = int(r.surfaces.size());
     if (n < 3)
         r.fail(std::max(lastLine, 1), "no lens surfaces: a .zmx needs SURF blocks for the object, at least one lens surface and the image");
@@ -671,7 +671,7 @@ std::vector<std::string> splitLines(const std::string& text) {
 }  // namespace
 
 LensTable parseZemax(const std::string& bytes, const std::string& name) {
-    Reader r;
+    ZmxReader r;
     r.name = name;
     const auto lines = splitLines(toUtf8Text(bytes, name));
     bool empty = true;

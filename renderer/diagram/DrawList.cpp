@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "prescription/Pi.h"
+
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Vertex vertex(Point2 p, Rgba colour) { return {static_cast<float>(p.x), static_cast<float>(p.y), colour}; }
 

@@ -8,13 +8,12 @@
 #include "firstorder/FieldOfView.h"
 #include "firstorder/ThickLens.h"
 #include "trace/ExactTrace.h"
+#include "prescription/Pi.h"
 #include "LensLayout.h"
 
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 ZY toZY(const Vec3& p) { return {p.z, p.y}; }
 

@@ -19,7 +19,7 @@ namespace lenslab {
 
 namespace {
 
-constexpr double kFirstNm = 395, kStepNm = 30;
+constexpr double kFlareFirstNm = 395, kFlareStepNm = 30;
 
 bool cancelled(const std::atomic<bool>* cancel) { return cancel && cancel->load(std::memory_order_relaxed); }
 
@@ -502,12 +502,12 @@ void rasterizePatch(const FlarePatch& p, const FlareFrame& f, const LayerBand& l
 
 }  // namespace
 
-double flareWavelengthNm(int k) { return kFirstNm + kStepNm * k; }
+double flareWavelengthNm(int k) { return kFlareFirstNm + kFlareStepNm * k; }
 
 double flareWavelengthEdgeNm(int k) {
     if (k <= 0) return kVisibleFirstNm;
     if (k >= kFlareWavelengths) return kVisibleLastNm;
-    return kFirstNm + kStepNm * (k - 0.5);
+    return kFlareFirstNm + kFlareStepNm * (k - 0.5);
 }
 
 std::vector<GhostPath> selectGhostPaths(const RealisticCamera& camera, const GhostSelection& selection,

@@ -17,7 +17,6 @@ namespace lenslab {
 
 namespace {
 
-double cos4(double c) { return (c * c) * (c * c); }
 
 // The bands a spectral camera's exit-pupil bounds are measured for, over the visible range it
 // traces (that of the spectral film): narrower where glasses disperse most.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/RelativeIllumination.h"
 #include "prescription/OpticsError.h"
 #include "trace/RayBatch.h"
 
@@ -11,7 +12,6 @@ namespace lenslab {
 
 namespace {
 
-double cos4(double c) { return (c * c) * (c * c); }
 
 // Where the ray crosses the plane z = planeZ; false when it runs away from the plane.
 bool crossPlane(const Ray& ray, double planeZ, double& x, double& y) {

@@ -12,14 +12,14 @@ namespace {
 // src/pbrt/util/spectrum.cpp at commit 5f7a6068 (https://github.com/mmp/pbrt-v4), whose tables
 // are the measurements of the PhysLight project contributed by Anders Langlands and Luca Fascione
 // (Copyright (c) 2020 Weta Digital, Ltd., Apache-2.0).
-constexpr int kSamples = 35;
-using Curve = std::array<double, kSamples>;
-struct Measured {
+constexpr int kCurveSamples = 35;
+using Curve = std::array<double, kCurveSamples>;
+struct MeasuredCamera {
     const char* name;
     Curve r, g, b;
 };
 
-const Measured kCameras[] = {
+const MeasuredCamera kCameras[] = {
     {"canon_eos_100d",
      {0.00103453, 0.000993228, 0.00184386, 0.0102805, 0.0188886, 0.00835329, 0.00434884, 0.00423401, 0.00551002, 0.0137914, 0.0239979, 0.0337487,
       0.0471897, 0.059501, 0.100543, 0.0995933, 0.120211, 0.169415, 0.220214, 0.286761, 0.426838, 0.507016, 0.507617, 0.485484,
@@ -197,8 +197,8 @@ const Measured kCameras[] = {
 const CameraSensorCurves* findCameraSensorCurves(const std::string& name) {
     static const auto curves = [] {
         std::vector<CameraSensorCurves> all;
-        for (const Measured& m : kCameras)
-            all.push_back({m.name, {m.r.data(), kSamples, 380, 10}, {m.g.data(), kSamples, 380, 10}, {m.b.data(), kSamples, 380, 10}});
+        for (const MeasuredCamera& m : kCameras)
+            all.push_back({m.name, {m.r.data(), kCurveSamples, 380, 10}, {m.g.data(), kCurveSamples, 380, 10}, {m.b.data(), kCurveSamples, 380, 10}});
         return all;
     }();
     for (const CameraSensorCurves& c : curves)
@@ -208,7 +208,7 @@ const CameraSensorCurves* findCameraSensorCurves(const std::string& name) {
 
 std::string cameraSensorNames() {
     std::string names;
-    for (const Measured& m : kCameras) names += (names.empty() ? "" : ", ") + std::string(m.name);
+    for (const MeasuredCamera& m : kCameras) names += (names.empty() ? "" : ", ") + std::string(m.name);
     return names;
 }
 

@@ -8,8 +8,8 @@ namespace {
 
 // S0, S1, S2 from 300 to 830 nm in 10 nm steps (CIE 15:2004, table T.2; pbrt-v4 tabulates the same
 // values with their 5 nm means between, src/pbrt/util/spectrum.cpp at commit 5f7a6068).
-constexpr int kSamples = 54;
-constexpr double kComponents[3][kSamples] = {
+constexpr int kDaylightSamples = 54;
+constexpr double kComponents[3][kDaylightSamples] = {
     {0.04, 6, 29.6, 55.3, 57.3, 61.8, 61.5, 68.8, 63.4, 65.8, 94.8, 104.8, 105.9, 96.8,
      113.9, 125.6, 125.5, 121.3, 121.3, 113.5, 113.1, 110.8, 106.5, 108.8, 105.3, 104.4, 100, 96,
      95.1, 89.1, 90.5, 90.3, 88.4, 84, 85.1, 81.9, 82.6, 84.9, 81.3, 71.9, 74.3, 76.4,
@@ -37,7 +37,7 @@ double daylightSpectrum(double kelvin, double nm) {
     daylightChromaticity(kelvin, x, y);
     const double m = 0.0241 + 0.2562 * x - 0.7341 * y;
     const double m1 = (-1.3515 - 1.7703 * x + 5.9114 * y) / m, m2 = (0.0300 - 31.4424 * x + 30.0717 * y) / m;
-    const auto s = [&](int i) { return TabulatedSpectrum{kComponents[i], kSamples, 300, 10}(nm); };
+    const auto s = [&](int i) { return TabulatedSpectrum{kComponents[i], kDaylightSamples, 300, 10}(nm); };
     return s(0) + m1 * s(1) + m2 * s(2);
 }
 

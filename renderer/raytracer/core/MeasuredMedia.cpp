@@ -4,12 +4,12 @@ namespace lenslab {
 
 namespace {
 
-struct Entry {
+struct MediumEntry {
     const char* name;
     Vec3f sigmaSPrime, sigmaA;  // the papers' column order
 };
 
-const Entry kMeasured[] = {
+const MediumEntry kMeasured[] = {
     // Jensen et al. 2001
     {"Apple", {2.29f, 2.39f, 1.97f}, {0.0030f, 0.0034f, 0.046f}},
     {"Chicken1", {0.15f, 0.21f, 0.38f}, {0.015f, 0.077f, 0.19f}},
@@ -64,7 +64,7 @@ const Entry kMeasured[] = {
 }  // namespace
 
 std::optional<MeasuredMedium> measuredMedium(const std::string& name) {
-    for (const Entry& e : kMeasured)
+    for (const MediumEntry& e : kMeasured)
         if (name == e.name) return MeasuredMedium{e.sigmaA, e.sigmaSPrime};
     return std::nullopt;
 }

@@ -19,7 +19,7 @@ constexpr double kBases[kSmitsBases][10] = {
     {0.0000, 0.0000, 0.0273, 0.7937, 1.0000, 0.9418, 0.1719, 0.0000, 0.0000, 0.0025},
     {1.0000, 1.0000, 0.8916, 0.3323, 0.0000, 0.0000, 0.0003, 0.0369, 0.0483, 0.0496},
 };
-constexpr double kFirstNm = 380, kLastNm = 720;
+constexpr double kSmitsFirstNm = 380, kSmitsLastNm = 720;
 
 }  // namespace
 
@@ -43,7 +43,7 @@ std::array<float, kSmitsBases> smitsCoefficients(const Vec3f& c) {
 }
 
 double smitsBasis(SmitsBasis basis, double nm) {
-    return TabulatedSpectrum{kBases[int(basis)], 10, kFirstNm, (kLastNm - kFirstNm) / 9}(nm);
+    return TabulatedSpectrum{kBases[int(basis)], 10, kSmitsFirstNm, (kSmitsLastNm - kSmitsFirstNm) / 9}(nm);
 }
 
 }  // namespace lenslab

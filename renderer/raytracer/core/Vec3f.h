@@ -28,6 +28,8 @@ inline Vec3f normalize(Vec3f a) { return a / length(a); }
 inline float maxComponent(Vec3f a) { return std::max(a.x, std::max(a.y, a.z)); }
 inline bool isBlack(Vec3f a) { return a.x == 0 && a.y == 0 && a.z == 0; }
 inline bool allFinite(Vec3f a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
+inline Vec3f grey(float v) { return {v, v, v}; }
+inline Vec3f atLeastZero(Vec3f c) { return {std::max(0.0f, c.x), std::max(0.0f, c.y), std::max(0.0f, c.z)}; }
 inline float luminance(Vec3f c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 // An orthonormal basis around a unit normal (Duff et al. 2017), for local shading coordinates.

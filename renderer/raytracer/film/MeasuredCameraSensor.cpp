@@ -11,7 +11,7 @@ namespace lenslab {
 
 namespace {
 
-constexpr int kFirstNm = 360, kLastNm = 830;
+constexpr int kCurveFirstNm = 360, kCurveLastNm = 830;
 
 // The Smits coefficients of the colour is found by fixed-point steps: a spectrum's CIE colour is
 // within a few percent of its coefficients' (3% in blue for a sky blue), so each step shrinks the
@@ -21,7 +21,7 @@ constexpr int kInversionSteps = 5;
 // The CIE 1931 tristimulus values of a spectrum, summed as sensorRgb sums.
 Triple cieXyz(const std::function<double(double)>& spectrum) {
     Triple xyz{0, 0, 0};
-    for (int nm = kFirstNm; nm <= kLastNm; ++nm) {
+    for (int nm = kCurveFirstNm; nm <= kCurveLastNm; ++nm) {
         const double s = spectrum(nm);
         xyz[0] += cieX(nm) * s;
         xyz[1] += cieY(nm) * s;
@@ -78,7 +78,7 @@ MeasuredCameraSensor::MeasuredCameraSensor(const CameraSensorCurves& curves, dou
 
 Triple MeasuredCameraSensor::sensorRgb(const std::function<double(double)>& spectrum) const {
     Triple rgb{0, 0, 0};
-    for (int nm = kFirstNm; nm <= kLastNm; ++nm) {
+    for (int nm = kCurveFirstNm; nm <= kCurveLastNm; ++nm) {
         const double s = spectrum(nm);
         rgb[0] += curves_.r(nm) * s;
         rgb[1] += curves_.g(nm) * s;

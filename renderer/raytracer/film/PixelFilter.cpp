@@ -7,7 +7,7 @@ namespace lenslab {
 
 namespace {
 
-constexpr int kBins = 512;
+constexpr int kTableBins = 512;
 
 double sinc(double x) {
     const double px = M_PI * x;
@@ -45,10 +45,10 @@ double PixelFilter::profile(const FilterSpec& spec, double width, double x) {
 PixelFilter::Axis PixelFilter::makeAxis(const FilterSpec& spec, double width) {
     // Each bin's value is the mean of the profile over it (Simpson's rule): the negative lobes are
     // narrow enough that the bin midpoint alone would misplace their share.
-    std::vector<float> absolute(kBins), sign(kBins);
+    std::vector<float> absolute(kTableBins), sign(kTableBins);
     double signedSum = 0, absSum = 0;
-    const double h = 2 * width / kBins;
-    for (int i = 0; i < kBins; ++i) {
+    const double h = 2 * width / kTableBins;
+    for (int i = 0; i < kTableBins; ++i) {
         const double a = -width + i * h;
         const double mean = (profile(spec, width, a) + 4 * profile(spec, width, a + h / 2) +
                              profile(spec, width, a + h)) / 6;
@@ -59,8 +59,8 @@ PixelFilter::Axis PixelFilter::makeAxis(const FilterSpec& spec, double width) {
     }
     Axis axis{width, spec.type == FilterType::Box, PiecewiseConstant1D(std::move(absolute)), {}};
     const float norm = signedSum > 0 ? float(absSum / signedSum) : 1.0f;
-    axis.signedWeight.resize(kBins);
-    for (int i = 0; i < kBins; ++i) axis.signedWeight[i] = sign[i] * norm;
+    axis.signedWeight.resize(kTableBins);
+    for (int i = 0; i < kTableBins; ++i) axis.signedWeight[i] = sign[i] * norm;
     return axis;
 }
 

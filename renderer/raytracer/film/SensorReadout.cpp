@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "film/Demosaic.h"
+#include "prescription/NumberText.h"
 #include "sampling/Sampling.h"
 
 namespace lenslab {
@@ -51,12 +52,6 @@ double collectedElectrons(double mean, double fullWell, PcgBits& noise) {
     return std::min(fullWell, double(std::poisson_distribution<long long>(mean)(noise)));
 }
 
-std::string shown(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
 
 }  // namespace
 
@@ -68,9 +63,9 @@ std::optional<double> sensorFilmDiagonalMm(const SensorSpec& spec, std::optional
     if (!spec.pitchMicrometres) return std::nullopt;
     const double diagonal = *spec.pitchMicrometres * 1e-3 * std::hypot(double(width), double(height));
     if (askedMm && std::fabs(*askedMm - diagonal) > 1e-6 * diagonal)
-        throw SceneError("sensor: pitch " + shown(*spec.pitchMicrometres) + " um over " + std::to_string(width) + "x" +
-                              std::to_string(height) + " pixels makes a film diagonal of " + shown(diagonal) + " mm, not the " +
-                              shown(*askedMm) + " mm asked for");
+        throw SceneError("sensor: pitch " + formatNumber(*spec.pitchMicrometres) + " um over " + std::to_string(width) + "x" +
+                              std::to_string(height) + " pixels makes a film diagonal of " + formatNumber(diagonal) + " mm, not the " +
+                              formatNumber(*askedMm) + " mm asked for");
     return diagonal;
 }
 
@@ -80,8 +75,8 @@ SensorCalibration calibrateSensor(const SensorSpec& spec, const SensorExposureIn
     SensorCalibration c;
     c.pitchMicrometres = input.filmPitchMicrometres;
     if (spec.pitchMicrometres && std::fabs(*spec.pitchMicrometres - c.pitchMicrometres) > 1e-6 * c.pitchMicrometres)
-        throw SensorSpecError("sensor: pitch " + shown(*spec.pitchMicrometres) + " um disagrees with the film's " +
-                              shown(c.pitchMicrometres) + " um (its diagonal over the pixel diagonal)");
+        throw SensorSpecError("sensor: pitch " + formatNumber(*spec.pitchMicrometres) + " um disagrees with the film's " +
+                              formatNumber(c.pitchMicrometres) + " um (its diagonal over the pixel diagonal)");
     const double areaM2 = c.pitchMicrometres * c.pitchMicrometres * 1e-12;
     c.fullWellElectrons = spec.fullWellElectrons.value_or(kWellElectronsPerUm2 * c.pitchMicrometres * c.pitchMicrometres);
     c.electronsPerLuxSecond = spec.quantumEfficiency * spec.fillFactor * areaM2 * kPhotonsPerLuxSecondM2;
@@ -168,16 +163,16 @@ SensorReadout readOutSensor(const SensorSpec& spec, const SensorCalibration& c, 
 std::map<std::string, std::string> describeSensor(const SensorSpec& spec, const SensorCalibration& c,
                                                   const SensorReadout& readout) {
     std::ostringstream s;
-    s << "ISO " << shown(spec.iso) << (spec.exposureSeconds ? ", exposure " : ", metered exposure ") << shown(c.exposureSeconds)
-      << " s, pitch " << shown(c.pitchMicrometres) << " um, fill " << shown(spec.fillFactor) << ", QE " << shown(spec.quantumEfficiency)
-      << ", full well " << shown(c.fullWellElectrons) << " e-, gain " << shown(c.gainElectronsPerDn) << " e-/DN, "
-      << spec.adcBits << "-bit ADC, black " << shown(c.blackLevelDn) << " DN, read noise " << shown(spec.readNoiseElectrons)
-      << " e-, dark current " << shown(spec.darkCurrentElectronsPerSecond) << " e-/s (DSNU " << shown(spec.dsnuElectronsPerSecond)
-      << "), PRNU " << shown(spec.prnu) << ", base ISO " << shown(c.baseIso) << ", " << shown(spec.nits)
+    s << "ISO " << formatNumber(spec.iso) << (spec.exposureSeconds ? ", exposure " : ", metered exposure ") << formatNumber(c.exposureSeconds)
+      << " s, pitch " << formatNumber(c.pitchMicrometres) << " um, fill " << formatNumber(spec.fillFactor) << ", QE " << formatNumber(spec.quantumEfficiency)
+      << ", full well " << formatNumber(c.fullWellElectrons) << " e-, gain " << formatNumber(c.gainElectronsPerDn) << " e-/DN, "
+      << spec.adcBits << "-bit ADC, black " << formatNumber(c.blackLevelDn) << " DN, read noise " << formatNumber(spec.readNoiseElectrons)
+      << " e-, dark current " << formatNumber(spec.darkCurrentElectronsPerSecond) << " e-/s (DSNU " << formatNumber(spec.dsnuElectronsPerSecond)
+      << "), PRNU " << formatNumber(spec.prnu) << ", base ISO " << formatNumber(c.baseIso) << ", " << formatNumber(spec.nits)
       << " cd/m^2 per unit radiance; developed by standard output sensitivity (0.18 at 10 / ISO lux s)"
       << (spec.colourFilter ? "; a " + spec.colourFilter->name() + " Bayer mosaic, demosaiced by Malvar-He-Cutler" : "");
     return {{"sensor", s.str()},
-            {"sensorElectronsPerValue", shown(c.luxSecondsPerValue * c.electronsPerLuxSecond)},
+            {"sensorElectronsPerValue", formatNumber(c.luxSecondsPerValue * c.electronsPerLuxSecond)},
             {"sensorClipped", std::to_string(readout.wellClipped) + " photosites at the full well, " +
                                   std::to_string(readout.adcClipped) + " at the ADC's full scale"}};
 }

@@ -5,6 +5,8 @@
 #include <functional>
 #include <sstream>
 
+#include "prescription/NumberText.h"
+
 namespace lenslab {
 
 namespace {
@@ -17,12 +19,7 @@ struct SensorKey {
 };
 
 // Enough digits that a refused value reads as given (bits 16.0000001, not 16).
-std::string shown(double v) {
-    std::ostringstream s;
-    s.precision(12);
-    s << v;
-    return s.str();
-}
+std::string shown(double v) { return formatNumber(v, 12); }
 
 const std::vector<SensorKey>& sensorKeys() {
     static const std::vector<SensorKey> keys = {

@@ -3,6 +3,7 @@
 // within a texel: bright texels such as a sun cost no more noise than their area deserves.
 #include <cmath>
 
+#include "core/Pi.h"
 #include "lights/ImageLights.h"
 #include "sampling/EqualAreaSphere.h"
 #include "sampling/PiecewiseConstant.h"
@@ -11,14 +12,12 @@ namespace lenslab {
 
 namespace {
 
-constexpr float kPi = float(M_PI);
-
 std::vector<float> samplingWeights(const LinearImage& map, SphereLayout layout) {
     std::vector<float> w(map.texels.size());
     for (int y = 0; y < map.height; ++y) {
         // An equirectangular texel's solid angle is proportional to sin(theta) at its row; equal-area
         // texels all cover the same.
-        const float sinTheta = layout == SphereLayout::EqualArea ? 1.0f : std::sin(kPi * (float(y) + 0.5f) / float(map.height));
+        const float sinTheta = layout == SphereLayout::EqualArea ? 1.0f : std::sin(kPif * (float(y) + 0.5f) / float(map.height));
         for (int x = 0; x < map.width; ++x) {
             const std::size_t i = std::size_t(y) * map.width + x;
             w[i] = luminance(map.texels[i]) * sinTheta;
@@ -41,7 +40,7 @@ public:
         if (layout_ == SphereLayout::EqualArea) {
             local = equalAreaSquareToSphere(su, tv);
         } else {
-            const float theta = tv * kPi, phi = su * 2.0f * kPi;
+            const float theta = tv * kPif, phi = su * 2.0f * kPif;
             const float sinTheta = std::sin(theta);
             if (!(sinTheta > 0)) return false;
             local = {sinTheta * std::cos(phi), sinTheta * std::sin(phi), std::cos(theta)};
@@ -60,8 +59,8 @@ public:
         if (at) return 0;
         float s, t, sinTheta;
         mapCoordinates(w, s, t, sinTheta);
-        if (layout_ == SphereLayout::EqualArea) return distribution_.density(s, t) / (4.0f * kPi);
-        return sinTheta > 0 ? distribution_.density(s, t) / (2.0f * kPi * kPi * sinTheta) : 0.0f;
+        if (layout_ == SphereLayout::EqualArea) return distribution_.density(s, t) / (4.0f * kPif);
+        return sinTheta > 0 ? distribution_.density(s, t) / (2.0f * kPif * kPif * sinTheta) : 0.0f;
     }
 
     Vec3f emitted(const SurfaceHit* at, Vec3f w) const override {
@@ -73,7 +72,7 @@ public:
 
     bool isInfinite() const override { return true; }
     // pbrt-v3's: the map's mean radiance through a disc of the scene's bounding radius.
-    Vec3f power() const override { return kPi * radius_ * radius_ * average_; }
+    Vec3f power() const override { return kPif * radius_ * radius_ * average_; }
     void setSceneBounds(Vec3f, float radius) override { radius_ = radius; }
 
 private:
@@ -86,9 +85,9 @@ private:
         }
         const float cosTheta = std::clamp(d.z, -1.0f, 1.0f);
         float phi = std::atan2(d.y, d.x);
-        if (phi < 0) phi += 2.0f * kPi;
-        s = phi / (2.0f * kPi);
-        t = std::acos(cosTheta) / kPi;
+        if (phi < 0) phi += 2.0f * kPif;
+        s = phi / (2.0f * kPif);
+        t = std::acos(cosTheta) / kPif;
         sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
     }
 

@@ -12,7 +12,7 @@ namespace lenslab {
 
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kInfiniteDistance = std::numeric_limits<float>::infinity();
 
 // A spot: full intensity inside coneangle - conedeltaangle, falling to zero at coneangle, as
 // pbrt-v3 does (the fourth power of the cosines' fraction) or pbrt-v4 (its smoothstep).
@@ -48,7 +48,7 @@ public:
     DistantLight(Vec3f towardLight, Vec3f radiance) : toward_(towardLight), radiance_(radiance) {}
     bool sample(Vec3f, float, float, LightSample& s) const override {
         s.wi = toward_;
-        s.distance = kInf;
+        s.distance = kInfiniteDistance;
         s.radiance = radiance_;
         s.pdf = 1;
         s.delta = true;
@@ -71,7 +71,7 @@ public:
     explicit InfiniteLight(Vec3f radiance) : radiance_(radiance) {}
     bool sample(Vec3f, float u1, float u2, LightSample& s) const override {
         s.wi = uniformSphere(u1, u2);
-        s.distance = kInf;
+        s.distance = kInfiniteDistance;
         s.radiance = radiance_;
         s.pdf = 1.0f / (4.0f * float(M_PI));
         s.delta = false;

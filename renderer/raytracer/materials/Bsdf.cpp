@@ -2,13 +2,12 @@
 
 #include <cmath>
 
+#include "core/Pi.h"
 #include "sampling/Sampling.h"
 
 namespace lenslab {
 
 namespace {
-
-constexpr float kInvPi = 0.318309886f;
 
 // pbrt-v3's shading frame: the shading normal with dp/du made orthogonal to it; any frame around
 // the normal when the shape gives no usable dp/du (only anisotropic lobes can tell the difference).
@@ -25,7 +24,7 @@ Frame shadingFrame(const SurfaceHit& h) {
 
 }  // namespace
 
-float Lobe::pdf(Vec3f wo, Vec3f wi) const { return sameHemisphere(wo, wi) ? std::fabs(wi.z) * kInvPi : 0.0f; }
+float Lobe::pdf(Vec3f wo, Vec3f wi) const { return sameHemisphere(wo, wi) ? std::fabs(wi.z) * kInvPif : 0.0f; }
 
 bool Lobe::sample(Vec3f wo, float, float u1, float u2, LobeSample& s) const {
     s.wi = cosineHemisphere(u1, u2);

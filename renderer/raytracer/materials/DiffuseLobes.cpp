@@ -1,5 +1,6 @@
 #include "materials/DiffuseLobes.h"
 
+#include "core/Pi.h"
 #include "materials/Fresnel.h"
 
 #include <cmath>
@@ -10,16 +11,14 @@ namespace lenslab {
 
 namespace {
 
-constexpr float kInvPi = 0.318309886f;
-
 }  // namespace
 
-Vec3f LambertianReflection::f(Vec3f, Vec3f) const { return {kInvPi, kInvPi, kInvPi}; }
+Vec3f LambertianReflection::f(Vec3f, Vec3f) const { return {kInvPif, kInvPif, kInvPif}; }
 
-Vec3f LambertianTransmission::f(Vec3f, Vec3f) const { return {kInvPi, kInvPi, kInvPi}; }
+Vec3f LambertianTransmission::f(Vec3f, Vec3f) const { return {kInvPif, kInvPif, kInvPif}; }
 
 float LambertianTransmission::pdf(Vec3f wo, Vec3f wi) const {
-    return sameHemisphere(wo, wi) ? 0.0f : std::fabs(wi.z) * kInvPi;
+    return sameHemisphere(wo, wi) ? 0.0f : std::fabs(wi.z) * kInvPif;
 }
 
 bool LambertianTransmission::sample(Vec3f wo, float, float u1, float u2, LobeSample& s) const {
@@ -47,7 +46,7 @@ Vec3f OrenNayar::f(Vec3f wo, Vec3f wi) const {
     const bool iSteeper = std::fabs(wi.z) > std::fabs(wo.z);
     const float sinAlpha = iSteeper ? sinO : sinI;
     const float tanBeta = iSteeper ? sinI / std::fabs(wi.z) : sinO / std::fabs(wo.z);
-    const float v = kInvPi * (a_ + b_ * cosDeltaPhi * sinAlpha * tanBeta);
+    const float v = kInvPif * (a_ + b_ * cosDeltaPhi * sinAlpha * tanBeta);
     return {v, v, v};
 }
 

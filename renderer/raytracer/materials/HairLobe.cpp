@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Pi.h"
 #include "materials/Fresnel.h"
 
 namespace lenslab {
 
 namespace {
-
-constexpr float kPi = 3.14159265f;
 
 float sq(float x) { return x * x; }
 float safeSqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
@@ -28,7 +27,7 @@ float besselI0(float x) {
 }
 
 // log I0 beyond 12, by its asymptotic expansion (I0 itself overflows a float from about 90).
-float logBesselI0(float x) { return x + 0.5f * (-std::log(2 * kPi) + std::log(1 / x) + 1 / (8 * x)); }
+float logBesselI0(float x) { return x + 0.5f * (-std::log(2 * kPif) + std::log(1 / x) + 1 / (8 * x)); }
 
 // d'Eon 2011's longitudinal lobe, csch(1/v) / (2v) exp(-sin_i sin_o / v) I0(cos_i cos_o / v), with
 // the normalisation in logarithms (csch(1/v) underflows for narrow lobes); logNorm: log(csch(1/v) /
@@ -51,17 +50,17 @@ float logisticCdf(float x, float s) { return 1 / (1 + std::exp(-x / s)); }
 
 // Chiang 2016's azimuthal lobe: a logistic around the path's exit azimuth, trimmed to [-pi, pi]
 // (the logistic's mass inside, 1 - 2 cdf(-pi), is divided out).
-float trimmedMass(float s) { return logisticCdf(kPi, s) - logisticCdf(-kPi, s); }
+float trimmedMass(float s) { return logisticCdf(kPif, s) - logisticCdf(-kPif, s); }
 float sampleTrimmedLogistic(float u, float s) {
-    const float x = -s * std::log(1 / (u * trimmedMass(s) + logisticCdf(-kPi, s)) - 1);
-    return std::clamp(x, -kPi, kPi);
+    const float x = -s * std::log(1 / (u * trimmedMass(s) + logisticCdf(-kPif, s)) - 1);
+    return std::clamp(x, -kPif, kPif);
 }
 
 // The azimuth at which path p leaves, relative to the incoming one (d'Eon 2011).
-float exitAzimuth(int p, float gammaO, float gammaT) { return 2 * float(p) * gammaT - 2 * gammaO + float(p) * kPi; }
+float exitAzimuth(int p, float gammaO, float gammaT) { return 2 * float(p) * gammaT - 2 * gammaO + float(p) * kPif; }
 
 float azimuthal(float phi, int p, float s, float gammaO, float gammaT) {
-    const float d = std::remainder(phi - exitAzimuth(p, gammaO, gammaT), 2 * kPi);  // into [-pi, pi]
+    const float d = std::remainder(phi - exitAzimuth(p, gammaO, gammaT), 2 * kPif);  // into [-pi, pi]
     return logistic(d, s);  // untrimmed: the callers divide by the trimmed mass
 }
 
@@ -86,11 +85,11 @@ HairLobe::HairLobe(const HairParams& q) : h_(q.h), eta_(q.eta), gammaO_(safeAsin
     v_[1] = 0.25f * v_[0];
     v_[2] = 4 * v_[0];
     v_[3] = v_[2];
-    s_ = std::sqrt(kPi / 8) * (0.265f * bn + 1.194f * sq(bn) + 5.372f * std::pow(bn, 22.0f));
+    s_ = std::sqrt(kPif / 8) * (0.265f * bn + 1.194f * sq(bn) + 5.372f * std::pow(bn, 22.0f));
     for (int p = 0; p <= kPaths; ++p) logNorm_[p] = longitudinalLogNorm(v_[p]);
     invTrimmedMass_ = 1 / trimmedMass(s_);
     // sin and cos of 2^k alpha by doubling.
-    sin2kAlpha_[0] = std::sin(q.alphaDeg * kPi / 180);
+    sin2kAlpha_[0] = std::sin(q.alphaDeg * kPif / 180);
     cos2kAlpha_[0] = safeSqrt(1 - sq(sin2kAlpha_[0]));
     for (int k = 1; k < kPaths; ++k) {
         sin2kAlpha_[k] = 2 * cos2kAlpha_[k - 1] * sin2kAlpha_[k - 1];
@@ -143,7 +142,7 @@ void HairLobe::pathLobes(const Outgoing& o, Vec3f wi, float (&mn)[kPaths + 1]) c
                 (azimuthal(phi, p, s_, o.gammaO, o.gammaT) * invTrimmedMass_);
     mn[kPaths] =
         longitudinal(cosThetaI, o.cosThetaP[kPaths], sinThetaI, o.sinThetaP[kPaths], v_[kPaths], logNorm_[kPaths]) /
-        (2 * kPi);
+        (2 * kPif);
 }
 
 // The lobes are already a density per solid angle (Mp is normalised against cos theta_i dtheta_i,
@@ -198,9 +197,9 @@ bool HairLobe::sample(Vec3f wo, float uc, float u1, float u2, LobeSample& out) c
     const float v = v_[p];
     const float cosT = 1 + v * std::log(std::max(u1, 1e-5f) + (1 - u1) * std::exp(-2 / v));
     const float sinT = safeSqrt(1 - sq(cosT));
-    const float sinThetaI = -cosT * o.sinThetaP[p] + sinT * std::cos(2 * kPi * u2) * o.cosThetaP[p];
+    const float sinThetaI = -cosT * o.sinThetaP[p] + sinT * std::cos(2 * kPif * u2) * o.cosThetaP[p];
     const float cosThetaI = safeSqrt(1 - sq(sinThetaI));
-    const float dphi = p < kPaths ? exitAzimuth(p, o.gammaO, o.gammaT) + sampleTrimmedLogistic(uc, s_) : 2 * kPi * uc;
+    const float dphi = p < kPaths ? exitAzimuth(p, o.gammaO, o.gammaT) + sampleTrimmedLogistic(uc, s_) : 2 * kPif * uc;
     const float phiI = o.phi + dphi;
     out.wi = {sinThetaI, cosThetaI * std::cos(phiI), cosThetaI * std::sin(phiI)};
     float mn[kPaths + 1];

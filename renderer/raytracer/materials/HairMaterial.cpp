@@ -11,7 +11,6 @@ namespace lenslab {
 
 namespace {
 
-using TexturePtr = std::shared_ptr<const Texture>;
 
 // Where the absorption comes from: pbrt-v4 takes the first given of these, in this order.
 enum class AbsorptionFrom { SigmaA, Reflectance, Melanin };

@@ -14,11 +14,6 @@ namespace lenslab {
 
 namespace {
 
-using TexturePtr = std::shared_ptr<const Texture>;
-
-Vec3f atLeastZero(Vec3f c) { return {std::max(0.0f, c.x), std::max(0.0f, c.y), std::max(0.0f, c.z)}; }
-Vec3f grey(float v) { return {v, v, v}; }
-
 // A float parameter that may name a float texture; its value is the texture's first channel.
 float floatAt(const TexturePtr& t, const SurfaceHit& h) { return t->evaluate(h).x; }
 
@@ -29,7 +24,7 @@ float indexAt(const TexturePtr& t, const SurfaceHit& h) {
 }
 
 // Microfacet widths from pbrt-v3's roughness parameters (per hit, as they may be textures).
-struct Roughness {
+struct Pbrt3Roughness {
     TexturePtr u, v;
     bool remap = true;
     MicrofacetKind kind = MicrofacetKind::TrowbridgeReitz;
@@ -67,7 +62,7 @@ private:
 // reflects totally on surfaces whose normals face the viewer.
 class Plastic final : public Material {
 public:
-    Plastic(TexturePtr kd, TexturePtr ks, Roughness r) : kd_(std::move(kd)), ks_(std::move(ks)), rough_(std::move(r)) {}
+    Plastic(TexturePtr kd, TexturePtr ks, Pbrt3Roughness r) : kd_(std::move(kd)), ks_(std::move(ks)), rough_(std::move(r)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
         b.add<LambertianReflection>(scale * atLeastZero(kd_->evaluate(h)));
         const Vec3f ks = scale * atLeastZero(ks_->evaluate(h));
@@ -77,12 +72,12 @@ public:
 
 private:
     TexturePtr kd_, ks_;
-    Roughness rough_;
+    Pbrt3Roughness rough_;
 };
 
 class Metal final : public Material {
 public:
-    Metal(TexturePtr eta, TexturePtr k, Roughness r) : eta_(std::move(eta)), k_(std::move(k)), rough_(std::move(r)) {}
+    Metal(TexturePtr eta, TexturePtr k, Pbrt3Roughness r) : eta_(std::move(eta)), k_(std::move(k)), rough_(std::move(r)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
         b.add<MicrofacetReflection>(scale, rough_.at(h), Fresnel::conductor(eta_->evaluate(h), k_->evaluate(h)));
     }
@@ -90,7 +85,7 @@ public:
 
 private:
     TexturePtr eta_, k_;
-    Roughness rough_;
+    Pbrt3Roughness rough_;
 };
 
 class Mirror final : public Material {
@@ -110,7 +105,7 @@ private:
 // reflection or refraction by Fresnel) or rough (microfacet reflection and transmission).
 class Glass final : public Material {
 public:
-    Glass(TexturePtr kr, TexturePtr kt, TexturePtr eta, Roughness r, bool alwaysSmooth)
+    Glass(TexturePtr kr, TexturePtr kt, TexturePtr eta, Pbrt3Roughness r, bool alwaysSmooth)
         : kr_(std::move(kr)), kt_(std::move(kt)), eta_(std::move(eta)), rough_(std::move(r)), alwaysSmooth_(alwaysSmooth) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
         const Vec3f r = atLeastZero(kr_->evaluate(h)), t = atLeastZero(kt_->evaluate(h));
@@ -129,13 +124,13 @@ public:
 
 private:
     TexturePtr kr_, kt_, eta_;
-    Roughness rough_;
+    Pbrt3Roughness rough_;
     bool alwaysSmooth_;
 };
 
 class Substrate final : public Material {
 public:
-    Substrate(TexturePtr kd, TexturePtr ks, Roughness r) : kd_(std::move(kd)), ks_(std::move(ks)), rough_(std::move(r)) {}
+    Substrate(TexturePtr kd, TexturePtr ks, Pbrt3Roughness r) : kd_(std::move(kd)), ks_(std::move(ks)), rough_(std::move(r)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
         const Vec3f kd = atLeastZero(kd_->evaluate(h)), ks = atLeastZero(ks_->evaluate(h));
         if (isBlack(kd) && isBlack(ks)) return;
@@ -145,7 +140,7 @@ public:
 
 private:
     TexturePtr kd_, ks_;
-    Roughness rough_;
+    Pbrt3Roughness rough_;
 };
 
 // pbrt-v3's catch-all: diffuse, glossy coat, mirror reflection and refraction (no bending at the
@@ -154,7 +149,7 @@ class Uber final : public Material {
 public:
     struct Inputs {
         TexturePtr kd, ks, kr, kt, opacity, eta;
-        Roughness rough;
+        Pbrt3Roughness rough;
     };
     explicit Uber(Inputs in) : in_(std::move(in)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
@@ -180,7 +175,7 @@ class Translucent final : public Material {
 public:
     struct Inputs {
         TexturePtr kd, ks, reflect, transmit;
-        Roughness rough;
+        Pbrt3Roughness rough;
     };
     explicit Translucent(Inputs in) : in_(std::move(in)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
@@ -242,9 +237,9 @@ public:
 
 // --- reading the parameters ----------------------------------------------------------------------
 
-class Reader {
+class Pbrt3Reader {
 public:
-    Reader(const ParamSet& p, const MaterialContext& c) : p_(p), c_(c) {}
+    Pbrt3Reader(const ParamSet& p, const MaterialContext& c) : p_(p), c_(c) {}
 
     TexturePtr color(const std::string& name, Vec3f fallback) const { return textureParam(p_, name, fallback, c_.textures); }
     TexturePtr number(const std::string& name, float fallback) const { return floatTextureParam(p_, name, fallback, c_.textures); }
@@ -267,15 +262,15 @@ public:
         return number(name, 1.5f);
     }
     // pbrt-v3's "remaproughness" and lenslab's "distribution" (trowbridgereitz or beckmann).
-    Roughness roughness(TexturePtr u, TexturePtr v) const {
-        Roughness r{std::move(u), std::move(v), p_.getBool("remaproughness", true), MicrofacetKind::TrowbridgeReitz};
+    Pbrt3Roughness roughness(TexturePtr u, TexturePtr v) const {
+        Pbrt3Roughness r{std::move(u), std::move(v), p_.getBool("remaproughness", true), MicrofacetKind::TrowbridgeReitz};
         const std::string kind = p_.getString("distribution", "trowbridgereitz");
         if (kind == "beckmann") r.kind = MicrofacetKind::Beckmann;
         else if (kind != "trowbridgereitz" && kind != "ggx")
             p_.fail("\"distribution\" must be trowbridgereitz (ggx) or beckmann, not \"" + kind + "\"");
         return r;
     }
-    Roughness isotropicRoughness(float fallback) const {
+    Pbrt3Roughness isotropicRoughness(float fallback) const {
         const TexturePtr r = number("roughness", fallback);
         return roughness(r, r);
     }
@@ -292,7 +287,7 @@ private:
     const MaterialContext& c_;
 };
 
-std::shared_ptr<Material> makeMetal(const Reader& r) {
+std::shared_ptr<Material> makeMetal(const Pbrt3Reader& r) {
     // pbrt-v3's default is copper.
     static const Vec3f copperEta = namedSpectrumRgb("metal-Cu-eta").value(), copperK = namedSpectrumRgb("metal-Cu-k").value();
     const TexturePtr rough = r.number("roughness", 0.01f);
@@ -300,13 +295,13 @@ std::shared_ptr<Material> makeMetal(const Reader& r) {
     return std::make_shared<Metal>(r.color("eta", copperEta), r.color("k", copperK), r.roughness(u, v));
 }
 
-std::shared_ptr<Material> makeGlass(const Reader& r) {
+std::shared_ptr<Material> makeGlass(const Pbrt3Reader& r) {
     const bool smooth = r.isConstant("uroughness", 0, 0) && r.isConstant("vroughness", 0, 0);
     return std::make_shared<Glass>(r.color("Kr", {1, 1, 1}), r.color("Kt", {1, 1, 1}), r.refractiveIndex(),
                                    r.roughness(r.number("uroughness", 0), r.number("vroughness", 0)), smooth);
 }
 
-std::shared_ptr<Material> makeUber(const Reader& r) {
+std::shared_ptr<Material> makeUber(const Pbrt3Reader& r) {
     const TexturePtr u = r.numberOr("uroughness", r.number("roughness", 0.1f));
     const TexturePtr v = r.numberOr("vroughness", u);  // pbrt-v3: v follows u, not "roughness"
     return std::make_shared<Uber>(Uber::Inputs{r.color("Kd", grey(0.25f)), r.color("Ks", grey(0.25f)),
@@ -316,7 +311,7 @@ std::shared_ptr<Material> makeUber(const Reader& r) {
                                                r.roughness(u, v)});
 }
 
-std::shared_ptr<Material> makeMix(const Reader& r, const ParamSet& p, const MaterialContext& c) {
+std::shared_ptr<Material> makeMix(const Pbrt3Reader& r, const ParamSet& p, const MaterialContext& c) {
     // pbrt-v4 names both in "materials" and picks the second with probability "amount": the
     // average is pbrt-v3's mix with the two swapped.
     const bool v4 = p.has("materials");
@@ -357,7 +352,7 @@ std::shared_ptr<const Material> makeDefaultMaterial() {
 }
 
 std::shared_ptr<const Material> makeMaterial(const std::string& type, const ParamSet& p, const MaterialContext& c) {
-    const Reader r(p, c);
+    const Pbrt3Reader r(p, c);
     std::shared_ptr<Material> m;
     if (type == "matte") {
         m = std::make_shared<Matte>(r.color("Kd", grey(0.5f)), r.number("sigma", 0));

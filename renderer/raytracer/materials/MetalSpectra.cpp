@@ -165,18 +165,18 @@ const double kTiO2K[] = {
     719.97699, 0,  740.179016, 0,  760.147034, 0,  779.747986, 0,  799.871033, 0,  819.97406, 0,
     839.973083, 0,  859.778015, 0,  879.915039, 0,  899.709961, 0};
 
-struct Entry {
+struct MetalEntry {
     const double* pairs;
     std::size_t count;  // numbers, two per sample
 };
 
 template <std::size_t N>
-Entry entry(const double (&pairs)[N]) {
+MetalEntry entry(const double (&pairs)[N]) {
     static_assert(N % 2 == 0, "spectra are (wavelength, value) pairs");
     return {pairs, N};
 }
 
-Vec3f toRgb(const Entry& e) {
+Vec3f toRgb(const MetalEntry& e) {
     std::vector<double> lambda, value;
     for (std::size_t i = 0; i < e.count; i += 2) {
         lambda.push_back(e.pairs[i]);
@@ -189,7 +189,7 @@ Vec3f toRgb(const Entry& e) {
 
 std::optional<Vec3f> namedSpectrumRgb(const std::string& name) {
     static const std::map<std::string, Vec3f> kRgb = [] {
-        const std::map<std::string, Entry> tables = {
+        const std::map<std::string, MetalEntry> tables = {
             {"metal-Ag-eta", entry(kAgEta)},     {"metal-Ag-k", entry(kAgK)},
             {"metal-Al-eta", entry(kAlEta)},     {"metal-Al-k", entry(kAlK)},
             {"metal-Au-eta", entry(kAuEta)},     {"metal-Au-k", entry(kAuK)},

@@ -2,11 +2,11 @@
 
 #include <cmath>
 
+#include "core/Pi.h"
+
 namespace lenslab {
 
 namespace {
-
-constexpr float kPi = 3.14159265f;
 
 // Trowbridge-Reitz visible normals for wo in the upper hemisphere (Heitz, "Sampling the GGX
 // Distribution of Visible Normals", JCGT 7(4), 2018): stretch wo to the unit-roughness
@@ -16,7 +16,7 @@ Vec3f sampleVisibleTrowbridgeReitz(Vec3f wo, float ax, float ay, float u1, float
     const float len2 = vh.x * vh.x + vh.y * vh.y;
     const Vec3f t1 = len2 > 0 ? Vec3f{-vh.y, vh.x, 0} / std::sqrt(len2) : Vec3f{1, 0, 0};
     const Vec3f t2 = cross(vh, t1);
-    const float r = std::sqrt(u1), phi = 2.0f * kPi * u2;
+    const float r = std::sqrt(u1), phi = 2.0f * kPif * u2;
     const float p1 = r * std::cos(phi);
     const float s = 0.5f * (1.0f + vh.z);
     const float p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * r * std::sin(phi);
@@ -27,7 +27,7 @@ Vec3f sampleVisibleTrowbridgeReitz(Vec3f wo, float ax, float ay, float u1, float
 // Beckmann normals with density D(wh) cos(theta_h): the slopes are Gaussian with standard
 // deviation alpha / sqrt(2) per axis (Box-Muller).
 Vec3f sampleBeckmann(float ax, float ay, float u1, float u2) {
-    const float r = std::sqrt(-std::log(std::max(1.0f - u1, 1e-12f))), phi = 2.0f * kPi * u2;
+    const float r = std::sqrt(-std::log(std::max(1.0f - u1, 1e-12f))), phi = 2.0f * kPif * u2;
     return normalize(Vec3f{-ax * r * std::cos(phi), -ay * r * std::sin(phi), 1.0f});
 }
 
@@ -46,7 +46,7 @@ float MicrofacetDistribution::D(Vec3f wh) const {
     if (z2 == 0) return 0;
     // e = tan^2(theta) (cos^2(phi) / ax^2 + sin^2(phi) / ay^2), written with the components.
     const float e = (wh.x * wh.x / (alphaX_ * alphaX_) + wh.y * wh.y / (alphaY_ * alphaY_)) / z2;
-    const float norm = kPi * alphaX_ * alphaY_ * z2 * z2;
+    const float norm = kPif * alphaX_ * alphaY_ * z2 * z2;
     if (kind_ == MicrofacetKind::Beckmann) return std::exp(-e) / norm;
     return 1.0f / (norm * (1.0f + e) * (1.0f + e));
 }
@@ -59,7 +59,7 @@ float MicrofacetDistribution::lambda(Vec3f w) const {
     if (kind_ == MicrofacetKind::TrowbridgeReitz) return 0.5f * (-1.0f + std::sqrt(1.0f + a2t2));
     if (a2t2 == 0) return 0;
     const float a = 1.0f / std::sqrt(a2t2);
-    return 0.5f * (std::erf(a) - 1.0f) + std::exp(-a * a) / (2.0f * a * std::sqrt(kPi));
+    return 0.5f * (std::erf(a) - 1.0f) + std::exp(-a * a) / (2.0f * a * std::sqrt(kPif));
 }
 
 Vec3f MicrofacetDistribution::sampleWh(Vec3f wo, float u1, float u2) const {

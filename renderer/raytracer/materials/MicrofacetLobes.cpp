@@ -2,13 +2,12 @@
 
 #include <cmath>
 
+#include "core/Pi.h"
 #include "sampling/Sampling.h"
 
 namespace lenslab {
 
 namespace {
-
-constexpr float kInvPi = 0.318309886f;
 
 // Density of wi = reflect(wo, wh) given the density of wh: dwh/dwi = 1 / (4 |wo . wh|).
 float reflectedPdf(const MicrofacetDistribution& d, Vec3f wo, Vec3f wh) {
@@ -99,7 +98,7 @@ bool MicrofacetTransmission::sample(Vec3f wo, float, float u1, float u2, LobeSam
 Vec3f FresnelBlend::f(Vec3f wo, Vec3f wi) const {
     const auto pow5 = [](float x) { return (x * x) * (x * x) * x; };
     const float cosI = std::fabs(wi.z), cosO = std::fabs(wo.z);
-    const float shape = 28.0f / 23.0f * kInvPi * (1.0f - pow5(1.0f - 0.5f * cosI)) * (1.0f - pow5(1.0f - 0.5f * cosO));
+    const float shape = 28.0f / 23.0f * kInvPif * (1.0f - pow5(1.0f - 0.5f * cosI)) * (1.0f - pow5(1.0f - 0.5f * cosO));
     const Vec3f diffuse = shape * rd_ * (Vec3f{1, 1, 1} - rs_);
     const Vec3f h = wo + wi;
     if (h.x == 0 && h.y == 0 && h.z == 0) return {};
@@ -111,7 +110,7 @@ Vec3f FresnelBlend::f(Vec3f wo, Vec3f wi) const {
 
 float FresnelBlend::pdf(Vec3f wo, Vec3f wi) const {
     if (!sameHemisphere(wo, wi)) return 0;
-    return 0.5f * (std::fabs(wi.z) * kInvPi + reflectedPdf(d_, wo, normalize(wo + wi)));
+    return 0.5f * (std::fabs(wi.z) * kInvPif + reflectedPdf(d_, wo, normalize(wo + wi)));
 }
 
 // Half the samples cosine-weighted for the diffuse base, half from the coat's facets.

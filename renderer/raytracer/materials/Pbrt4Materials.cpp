@@ -18,14 +18,9 @@ namespace lenslab {
 
 namespace {
 
-using TexturePtr = std::shared_ptr<const Texture>;
-
-Vec3f grey(float v) { return {v, v, v}; }
-Vec3f atLeastZero(Vec3f c) { return {std::max(0.0f, c.x), std::max(0.0f, c.y), std::max(0.0f, c.z)}; }
-
 // pbrt-v4's microfacet roughness: "roughness", or "uroughness"/"vroughness", remapped (by default)
 // as alpha = sqrt(roughness); below alpha 1e-3 the surface is perfectly smooth.
-struct Roughness {
+struct Pbrt4Roughness {
     TexturePtr u, v;
     bool remap = true;
 
@@ -44,13 +39,13 @@ struct Roughness {
     }
 };
 
-class Reader {
+class Pbrt4Reader {
 public:
-    Reader(const ParamSet& p, const MaterialContext& c) : p_(p), c_(c) {}
+    Pbrt4Reader(const ParamSet& p, const MaterialContext& c) : p_(p), c_(c) {}
     TexturePtr color(const std::string& name, Vec3f fallback) const { return textureParam(p_, name, fallback, c_.textures); }
     TexturePtr number(const std::string& name, float fallback) const { return floatTextureParam(p_, name, fallback, c_.textures); }
     // prefix: "" or coatedconductor's "interface." / "conductor.".
-    Roughness roughness(const std::string& prefix = "") const {
+    Pbrt4Roughness roughness(const std::string& prefix = "") const {
         const TexturePtr r = number(prefix + "roughness", 0);
         const TexturePtr u = p_.has(prefix + "uroughness") ? number(prefix + "uroughness", 0) : r;
         const TexturePtr v = p_.has(prefix + "vroughness") ? number(prefix + "vroughness", 0) : r;
@@ -86,7 +81,7 @@ private:
 };
 
 // The Fresnel factor of a conductor at a hit, seen from a medium of index outside.
-Fresnel conductorFresnel(const Reader::Conductor& c, const SurfaceHit& h, float outside) {
+Fresnel conductorFresnel(const Pbrt4Reader::Conductor& c, const SurfaceHit& h, float outside) {
     Vec3f eta, k;
     if (c.reflectance) {
         const Vec3f r = atLeastZero(c.reflectance->evaluate(h));
@@ -104,7 +99,7 @@ Fresnel conductorFresnel(const Reader::Conductor& c, const SurfaceHit& h, float 
 }
 
 // Mirror-like or glossy reflection with a Fresnel factor, as the roughness at the hit says.
-void addReflection(Bsdf& b, Vec3f weight, const Roughness& r, const SurfaceHit& h, Fresnel fresnel) {
+void addReflection(Bsdf& b, Vec3f weight, const Pbrt4Roughness& r, const SurfaceHit& h, Fresnel fresnel) {
     if (r.smoothAt(h)) b.add<SpecularReflection>(weight, fresnel);
     else b.add<MicrofacetReflection>(weight, r.at(h), fresnel);
 }
@@ -123,20 +118,20 @@ private:
 
 class Conductor final : public Material {
 public:
-    Conductor(Reader::Conductor c, Roughness r) : c_(std::move(c)), r_(std::move(r)) {}
+    Conductor(Pbrt4Reader::Conductor c, Pbrt4Roughness r) : c_(std::move(c)), r_(std::move(r)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
         addReflection(b, scale, r_, h, conductorFresnel(c_, h, 1.0f));
     }
     int maxLobes() const override { return 1; }
 
 private:
-    Reader::Conductor c_;
-    Roughness r_;
+    Pbrt4Reader::Conductor c_;
+    Pbrt4Roughness r_;
 };
 
 class Dielectric final : public Material {
 public:
-    Dielectric(float eta, Roughness r) : eta_(eta), r_(std::move(r)) {}
+    Dielectric(float eta, Pbrt4Roughness r) : eta_(eta), r_(std::move(r)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
         if (r_.smoothAt(h)) {
             b.add<FresnelSpecular>(scale, Vec3f{1, 1, 1}, Vec3f{1, 1, 1}, 1.0f, eta_);
@@ -150,7 +145,7 @@ public:
 
 private:
     float eta_;
-    Roughness r_;
+    Pbrt4Roughness r_;
 };
 
 // pbrt-v4's subsurface: a dielectric boundary over a homogeneous scattering volume, rendered by
@@ -164,7 +159,7 @@ public:
         std::shared_ptr<const SubsurfaceAlbedoTable> table;
         float scale = 1, g = 0;
     };
-    Subsurface(float eta, Roughness r, Interior interior) : boundary_(eta, std::move(r)), interior_(std::move(interior)) {}
+    Subsurface(float eta, Pbrt4Roughness r, Interior interior) : boundary_(eta, std::move(r)), interior_(std::move(interior)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override { boundary_.addLobes(h, scale, b); }
     int maxLobes() const override { return boundary_.maxLobes(); }
     bool hasInterior() const override { return true; }
@@ -216,7 +211,7 @@ private:
 // A dielectric coat (index eta, its own roughness) over a diffuse base (DiffuseLobes.h).
 class CoatedDiffuseMaterial final : public Material {
 public:
-    CoatedDiffuseMaterial(TexturePtr reflectance, Roughness coat, float eta, float thickness)
+    CoatedDiffuseMaterial(TexturePtr reflectance, Pbrt4Roughness coat, float eta, float thickness)
         : reflectance_(std::move(reflectance)), coat_(std::move(coat)), eta_(eta), thickness_(thickness),
           internal_(coatInternalReflectance(eta)) {}
     void addLobes(const SurfaceHit& h, Vec3f scale, Bsdf& b) const override {
@@ -228,7 +223,7 @@ public:
 
 private:
     TexturePtr reflectance_;
-    Roughness coat_;
+    Pbrt4Roughness coat_;
     float eta_, thickness_, internal_;
 };
 
@@ -237,7 +232,7 @@ private:
 // the bending of the directions inside or the layer's inter-reflections (docs/pbrt-v4.md).
 class CoatedConductorMaterial final : public Material {
 public:
-    CoatedConductorMaterial(Roughness coat, float eta, float thickness, Reader::Conductor conductor, Roughness metal)
+    CoatedConductorMaterial(Pbrt4Roughness coat, float eta, float thickness, Pbrt4Reader::Conductor conductor, Pbrt4Roughness metal)
         : coat_(std::move(coat)), eta_(eta), conductor_(std::move(conductor)), metal_(std::move(metal)) {
         const float f0 = fresnelDielectric(1.0f, 1.0f, eta);
         through_ = (1 - f0) * (1 - f0) * std::exp(-2 * thickness);
@@ -249,16 +244,16 @@ public:
     int maxLobes() const override { return 2; }
 
 private:
-    Roughness coat_;
+    Pbrt4Roughness coat_;
     float eta_;
-    Reader::Conductor conductor_;
-    Roughness metal_;
+    Pbrt4Reader::Conductor conductor_;
+    Pbrt4Roughness metal_;
     float through_ = 1;
 };
 
 // The layer of coateddiffuse and coatedconductor: its thickness; pbrt-v4's random-walk settings
 // (maxdepth, nsamples) have no meaning for a closed-form model, and its scattering is not simulated.
-float layerThickness(const Reader& r) {
+float layerThickness(const Pbrt4Reader& r) {
     const ParamSet& p = r.params();
     if (p.has("albedo") || p.has("g")) {
         r.warn("the coat's scattering (albedo, g) is not simulated; its absorption over the thickness is");
@@ -284,7 +279,7 @@ std::shared_ptr<const SubsurfaceAlbedoTable> albedoTable(float eta) {
 
 // pbrt-v4's four exclusive forms, in its order: "name", "sigma_a" with "sigma_s", "reflectance"
 // (with "mfp", default 1), or pbrt's default coefficients (those of whole milk, per mm).
-std::shared_ptr<Material> makeSubsurface(const Reader& r) {
+std::shared_ptr<Material> makeSubsurface(const Pbrt4Reader& r) {
     const ParamSet& p = r.params();
     Subsurface::Interior in;
     in.g = float(p.getFloat("g", 0));
@@ -328,7 +323,7 @@ bool isPbrt4MaterialName(const std::string& type) {
 }
 
 std::shared_ptr<Material> makePbrt4Material(const std::string& type, const ParamSet& p, const MaterialContext& c) {
-    const Reader r(p, c);
+    const Pbrt4Reader r(p, c);
     if (type == "diffuse") return std::make_shared<Diffuse>(r.color("reflectance", grey(0.5f)));
     if (type == "conductor") return std::make_shared<Conductor>(r.conductor(""), r.roughness());
     if (type == "dielectric") return std::make_shared<Dielectric>(r.eta("eta"), r.roughness());

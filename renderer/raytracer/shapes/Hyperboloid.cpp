@@ -11,7 +11,7 @@ namespace lenslab {
 
 namespace {
 
-constexpr int kBins = 64;  // the area-sampling histogram over z
+constexpr int kAreaBins = 64;  // the area-sampling histogram over z
 
 class Hyperboloid : public Quadric {
 public:
@@ -19,15 +19,15 @@ public:
         : Quadric(toGroup, ro, phiMax), p1_(p1), p2_(p2), ah_(ah), ch_(ch), zMin_(std::min(p1.z, p2.z)),
           zMax_(std::max(p1.z, p2.z)), rMax_(std::max(std::hypot(p1.x, p1.y), std::hypot(p2.x, p2.y))) {
         // Simpson's rule on each bin: the bins' areas (per radian) and their running sums.
-        const double dz = (zMax_ - zMin_) / kBins;
-        for (int i = 0; i < kBins; ++i) {
+        const double dz = (zMax_ - zMin_) / kAreaBins;
+        for (int i = 0; i < kAreaBins; ++i) {
             const double z0 = zMin_ + i * dz;
             const double w = dz / 6 * (areaDensity(z0) + 4 * areaDensity(z0 + dz / 2) + areaDensity(z0 + dz));
             cdf_[i + 1] = cdf_[i] + w;
         }
     }
 
-    double objectArea() const override { return phiMax_ * cdf_[kBins]; }
+    double objectArea() const override { return phiMax_ * cdf_[kAreaBins]; }
     void uv(Vec3d p, double& u, double& v) const override {
         v = (p.z - p1_.z) / (p2_.z - p1_.z);
         u = relativePhi(p, v) / phiMax_;
@@ -71,18 +71,18 @@ protected:
     }
     // z from the histogram of area over height (uniform inside a bin), phi uniform.
     Vec3d sample(double u1, double u2) const override {
-        const double target = u1 * cdf_[kBins];
-        const int i = std::clamp(int(std::upper_bound(cdf_.begin(), cdf_.end(), target) - cdf_.begin()) - 1, 0, kBins - 1);
+        const double target = u1 * cdf_[kAreaBins];
+        const int i = std::clamp(int(std::upper_bound(cdf_.begin(), cdf_.end(), target) - cdf_.begin()) - 1, 0, kAreaBins - 1);
         const double f = cdf_[i + 1] > cdf_[i] ? (target - cdf_[i]) / (cdf_[i + 1] - cdf_[i]) : 0.5;
-        const double z = zMin_ + (i + std::clamp(f, 0.0, 1.0)) * (zMax_ - zMin_) / kBins;
+        const double z = zMin_ + (i + std::clamp(f, 0.0, 1.0)) * (zMax_ - zMin_) / kAreaBins;
         const Vec3d pr = ruling((z - p1_.z) / (p2_.z - p1_.z));
         const double phi = azimuth(pr.x, pr.y) + u2 * phiMax_, rho = std::sqrt(std::max(0.0, radius2(z)));
         return {rho * std::cos(phi), rho * std::sin(phi), z};
     }
     double objectPdf(Vec3d p) const override {
-        const double dz = (zMax_ - zMin_) / kBins;
-        const int i = std::clamp(int((p.z - zMin_) / dz), 0, kBins - 1);
-        const double pz = (cdf_[i + 1] - cdf_[i]) / (cdf_[kBins] * dz);
+        const double dz = (zMax_ - zMin_) / kAreaBins;
+        const int i = std::clamp(int((p.z - zMin_) / dz), 0, kAreaBins - 1);
+        const double pz = (cdf_[i + 1] - cdf_[i]) / (cdf_[kAreaBins] * dz);
         return pz / (phiMax_ * areaDensity(p.z));
     }
 
@@ -101,7 +101,7 @@ private:
 
     Vec3d p1_, p2_;
     double ah_, ch_, zMin_, zMax_, rMax_;
-    std::array<double, kBins + 1> cdf_{};
+    std::array<double, kAreaBins + 1> cdf_{};
 };
 
 }  // namespace

@@ -29,6 +29,8 @@ struct TextureMap {
     std::map<std::string, std::shared_ptr<const Texture>> floats, spectra;
 };
 
+using TexturePtr = std::shared_ptr<const Texture>;
+
 std::shared_ptr<const Texture> makeConstantTexture(Vec3f value);
 
 // Texture "name" "float"|"spectrum" "CLASS" params. `textureToWorld` is the current transform at

@@ -2,13 +2,12 @@
 
 #include <cmath>
 
+#include "core/Pi.h"
 #include "materials/Material.h"
 
 namespace lenslab {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 // The unit direction from the texture space's origin to the hit; the origin itself (where pbrt
 // would divide by zero) maps to +z.
@@ -21,7 +20,7 @@ Vec3f directionInTextureSpace(const Transform& worldToTexture, Vec3f p) {
 // atan2 in [0, 2 pi).
 float azimuth(Vec3f d) {
     const float phi = std::atan2(d.y, d.x);
-    return phi < 0 ? phi + 2 * kPi : phi;
+    return phi < 0 ? phi + 2 * kPif : phi;
 }
 
 }  // namespace
@@ -55,11 +54,11 @@ TexCoord TextureMapping2D::map(const SurfaceHit& hit) const {
             return {uscale_ * hit.u + udelta_, vscale_ * hit.v + vdelta_};
         case Kind::Spherical: {  // s: polar angle from +z, t: azimuth, both as fractions
             const Vec3f d = directionInTextureSpace(worldToTexture_, hit.p);
-            return {std::acos(std::fmax(-1.0f, std::fmin(1.0f, d.z))) / kPi, azimuth(d) / (2 * kPi)};
+            return {std::acos(std::fmax(-1.0f, std::fmin(1.0f, d.z))) / kPif, azimuth(d) / (2 * kPif)};
         }
         case Kind::Cylindrical: {  // s: azimuth measured from -x; t: the unit direction's z, as pbrt-v3
             const Vec3f d = directionInTextureSpace(worldToTexture_, hit.p);
-            return {(kPi + std::atan2(d.y, d.x)) / (2 * kPi), d.z};
+            return {(kPif + std::atan2(d.y, d.x)) / (2 * kPif), d.z};
         }
         case Kind::Planar:  // pbrt-v3 projects the world-space point, whatever the transform
             return {udelta_ + dot(hit.p, v1_), vdelta_ + dot(hit.p, v2_)};
