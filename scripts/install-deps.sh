@@ -5,7 +5,7 @@ SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 export DEBIAN_FRONTEND=noninteractive
 packages=(
-  cmake g++ make pkg-config
+  cmake g++ make ninja-build pkg-config
   libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm-dev
   libembree-dev libopenexr-dev libimath-dev libpng-dev libtbb-dev
   libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev
