@@ -18,13 +18,13 @@
 #include "prescription/Medium.h"
 #include "settings/LensAnalysis.h"
 #include "PrescriptionRows.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
 using namespace lenslab::test;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kDegree = 3.14159265358979323846 / 180;
 
 // A ray in the meridional plane: height y, axis position z (lens convention: light runs toward -z).

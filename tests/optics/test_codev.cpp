@@ -13,8 +13,10 @@
 #include "prescription/CodeVFile.h"
 #include "prescription/GlassCatalog.h"
 #include "prescription/LensSystem.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
@@ -42,16 +44,8 @@ std::string achromat(const std::string& extraSurfaceLine = "", const std::string
            "GO\n";                                          // 20
 }
 
-void expectError(const std::string& text, int line, const std::string& problemPart) {
-    try {
-        parseCodeV(text, "bad.seq");
-        FAIL() << "no error for:\n" << text;
-    } catch (const LensTableError& e) {
-        EXPECT_EQ(e.file(), "bad.seq");
-        EXPECT_EQ(e.line(), line) << e.what();
-        EXPECT_NE(e.problem().find(problemPart), std::string::npos) << e.what();
-        EXPECT_EQ(std::string(e.what()).rfind("bad.seq:" + std::to_string(line) + ": ", 0), 0u) << e.what();
-    }
+void expectCodeVError(const std::string& text, int line, const std::string& part) {
+    expectReadError([&] { parseCodeV(text, "bad.seq"); }, text, "bad.seq", line, part);
 }
 
 double catalogIndex(const std::string& glass, double nm) { return refractiveIndex(*findGlass(glass).glass, nm); }
@@ -312,27 +306,27 @@ TEST(CodeV, AFileCutShortIsReadWithAWarningNamingItsLastLine) {
 }
 
 TEST(CodeVErrors, EveryRefusalNamesTheLineAndCommand) {
-    expectError(achromat("  FOO 1"), 16, "command FOO is not read");
-    expectError(achromat("  DIF DOE"), 16, "DIF");
-    expectError(achromat("  ASP; H 1e-9"), 15, "aspheric term H");
-    expectError(achromat("  STO"), 15, "a second stop");
-    expectError("so 0 1e10\nsto 50 5 n-bk7_schott\ns -50 45\nsi 0 0\n", 2, "STO takes no values");
-    expectError(achromat("  ARO 10"), 16, "rotated apertures");
-    expectError(achromat("  CIR -1"), 16, "positive semi-aperture");
-    expectError(achromat("  K"), 16, "K needs at least 1 value");
-    expectError(achromat("  K 1e999"), 16, "not a finite number");
-    expectError(achromat("  S 1"), 16, "S needs a radius");
-    expectError(achromat("REF 4"), 16, "REF 4 names no WL wavelength");
-    expectError("so 0 1e10\ns 50 5 58961!\nsto\ns -50 45\nsi 0 0\n", 2, "glass code 58961 is not nd and Vd");
-    expectError("so 0 1e10\ns 50 5 " + std::string(1000, '9') + "\nsto\ns -50 45\nsi 0 0\n", 2, "glass code");
-    expectError(achromat("REF 1e11"), 16, "REF names a wavelength by its number (1..24), found 1e11");
-    expectError(achromat("WL 587.56 3390"), 16, "WL: wavelength 3390 nm lies outside 180-2500 nm");
-    expectError(achromat("", "DIM Q"), 1, "DIM Q is not one of");
-    expectError(achromat("", "STO"), 1, "STO before the first surface");
-    expectError("so 0 1\nsi 0 0\n", 2, "no lens surfaces");
-    expectError("so 0 1e10\ns 0 1\nsi 20 0\n", 3, "curved image surface");
-    expectError("so 0 1e10\ns 0 1\n'G' 1.5 1.6\n", 3, "between PRV and END");
-    expectError("PRV\nPWL 500 600\n'G' 1.5\nEND\n", 3, "lists 1 indices for the 2 wavelengths");
-    expectError("title 'x\n", 1, "quoted string is not closed");
-    expectError("", 1, "empty file");
+    expectCodeVError(achromat("  FOO 1"), 16, "command FOO is not read");
+    expectCodeVError(achromat("  DIF DOE"), 16, "DIF");
+    expectCodeVError(achromat("  ASP; H 1e-9"), 15, "aspheric term H");
+    expectCodeVError(achromat("  STO"), 15, "a second stop");
+    expectCodeVError("so 0 1e10\nsto 50 5 n-bk7_schott\ns -50 45\nsi 0 0\n", 2, "STO takes no values");
+    expectCodeVError(achromat("  ARO 10"), 16, "rotated apertures");
+    expectCodeVError(achromat("  CIR -1"), 16, "positive semi-aperture");
+    expectCodeVError(achromat("  K"), 16, "K needs at least 1 value");
+    expectCodeVError(achromat("  K 1e999"), 16, "not a finite number");
+    expectCodeVError(achromat("  S 1"), 16, "S needs a radius");
+    expectCodeVError(achromat("REF 4"), 16, "REF 4 names no WL wavelength");
+    expectCodeVError("so 0 1e10\ns 50 5 58961!\nsto\ns -50 45\nsi 0 0\n", 2, "glass code 58961 is not nd and Vd");
+    expectCodeVError("so 0 1e10\ns 50 5 " + std::string(1000, '9') + "\nsto\ns -50 45\nsi 0 0\n", 2, "glass code");
+    expectCodeVError(achromat("REF 1e11"), 16, "REF names a wavelength by its number (1..24), found 1e11");
+    expectCodeVError(achromat("WL 587.56 3390"), 16, "WL: wavelength 3390 nm lies outside 180-2500 nm");
+    expectCodeVError(achromat("", "DIM Q"), 1, "DIM Q is not one of");
+    expectCodeVError(achromat("", "STO"), 1, "STO before the first surface");
+    expectCodeVError("so 0 1\nsi 0 0\n", 2, "no lens surfaces");
+    expectCodeVError("so 0 1e10\ns 0 1\nsi 20 0\n", 3, "curved image surface");
+    expectCodeVError("so 0 1e10\ns 0 1\n'G' 1.5 1.6\n", 3, "between PRV and END");
+    expectCodeVError("PRV\nPWL 500 600\n'G' 1.5\nEND\n", 3, "lists 1 indices for the 2 wavelengths");
+    expectCodeVError("title 'x\n", 1, "quoted string is not closed");
+    expectCodeVError("", 1, "empty file");
 }

@@ -14,13 +14,13 @@
 #include "prescription/Medium.h"
 #include "prescription/OpticsError.h"
 #include "PrescriptionRows.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
 using namespace lenslab::test;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 DesignAnalysisInputs onAxisAt(double fstop, double wavelength) {
     DesignAnalysisInputs in;

@@ -22,7 +22,7 @@ namespace {
 constexpr double kN = 1.5;
 
 // A singlet behind a stop of diameter epd (object at infinity): stop, r1, glass t, r2, image gap.
-LensTable singlet(double c1, double c2, double t, double epd, double n = kN) {
+LensTable singletTable(double c1, double c2, double t, double epd, double n = kN) {
     return tableOfRows({stopRow(0.5, epd), openRow(c1 == 0 ? 0 : 1 / c1, t, n), openRow(c2 == 0 ? 0 : 1 / c2, 95, 0)});
 }
 
@@ -65,7 +65,7 @@ TEST(DampedLeastSquares, BendsASingletToTheSeidelMinimumOfSphericalAberration) {
     constexpr double f = 100, t = 2, epd = 5;
     // The test's own optimum: |S_I| least over the bending at fixed power (golden section in c1).
     const auto si2 = [&](double c1) {
-        const double s = seidelSphericalSum(singlet(c1, rearCurvatureFor(c1, f, t), t, epd), epd / 2);
+        const double s = seidelSphericalSum(singletTable(c1, rearCurvatureFor(c1, f, t), t, epd), epd / 2);
         return s * s;
     };
     double lo = 0.0, hi = 0.04;
@@ -79,7 +79,7 @@ TEST(DampedLeastSquares, BendsASingletToTheSeidelMinimumOfSphericalAberration) {
     EXPECT_NEAR((c1Seidel + c2Seidel) / (c1Seidel - c2Seidel), 2 * (kN * kN - 1) / (kN + 2), 0.02);
 
     DesignProblem p;
-    p.start = singlet(0.01, -0.01, t, epd);  // equiconvex: far from the best form
+    p.start = singletTable(0.01, -0.01, t, epd);  // equiconvex: far from the best form
     p.start.wavelengths = {kWavelengthD};
     p.variables = {{VariableKind::Curvature, 1}, {VariableKind::Curvature, 2}};
     p.rules.marginalRayImageSolve = true;
@@ -188,7 +188,7 @@ TEST(DampedLeastSquares, KeepsEveryStepValidAtTheLimits) {
     // no thickness: steps into total internal reflection of the marginal ray or into crossing
     // surfaces are refused; the lens at the end is valid and finite.
     DesignProblem p;
-    p.start = singlet(1 / 80.0, 0, 25, 100, 1.8);
+    p.start = singletTable(1 / 80.0, 0, 25, 100, 1.8);
     p.start.wavelengths = {kWavelengthD};
     p.variables = {{VariableKind::Curvature, 1}, {VariableKind::Curvature, 2}, {VariableKind::Thickness, 1}};
     p.merit.wavelengths = {kWavelengthD};
@@ -213,7 +213,7 @@ TEST(DampedLeastSquares, KeepsEveryStepValidAtTheLimits) {
         << crossed.problem;
     // A curvature driven through flat: a concave front (f 133 mm) must turn convex for f 80 mm.
     DesignProblem flat;
-    flat.start = singlet(-0.005, -0.02, 3, 10);
+    flat.start = singletTable(-0.005, -0.02, 3, 10);
     flat.start.wavelengths = {kWavelengthD};
     flat.variables = {{VariableKind::Curvature, 1}};
     flat.merit.wavelengths = {kWavelengthD};
@@ -229,7 +229,7 @@ TEST(DampedLeastSquares, KeepsEveryStepValidAtTheLimits) {
 TEST(DampedLeastSquares, SaysWhenTheMeritCannotImprove) {
     // The image distance changes no focal length: the Jacobian is zero and no step lowers the merit.
     DesignProblem p;
-    p.start = singlet(0.02, -0.02, 3, 10);
+    p.start = singletTable(0.02, -0.02, 3, 10);
     p.variables = {{VariableKind::Thickness, 2}};
     p.merit.operands = {operand(OperandKind::EffectiveFocalLength, 10)};
     const OptimiserResult r = optimiseDampedLeastSquares(p);
@@ -248,7 +248,7 @@ TEST(DampedLeastSquares, SaysWhenTheMeritCannotImprove) {
 
 TEST(GlobalSearch, IsReproducibleFromItsSeedAndNeverWorseThanOneDescent) {
     DesignProblem p;
-    p.start = singlet(0.01, -0.01, 2, 5);
+    p.start = singletTable(0.01, -0.01, 2, 5);
     p.start.wavelengths = {kWavelengthD};
     p.variables = {{VariableKind::Curvature, 1}, {VariableKind::Curvature, 2}};
     p.rules.marginalRayImageSolve = true;

@@ -12,13 +12,13 @@
 #include "design/GlassSnap.h"
 #include "design/ToleranceAnalysis.h"
 #include "firstorder/FirstOrder.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
 using namespace lenslab::test;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The effective focal length by the test's own y-nu trace: a ray parallel to the axis at height 1
 // leaves with slope u; f = -1 / u.

@@ -10,8 +10,10 @@
 #include "firstorder/FirstOrder.h"
 #include "prescription/LensSystem.h"
 #include "trace/NearAxis.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
@@ -27,7 +29,7 @@ Surface sphere(double z, double radius, double indexAfter, double apertureRadius
 
 // An equiconvex singlet (f about 50 mm), its stop at `stopGap` in front of the first vertex (0: at
 // the middle of the glass).
-LensSystem singlet(double stopGap) {
+LensSystem stoppedSinglet(double stopGap) {
     Surface stop = sphere(0, 0, 1, 2);
     stop.isStop = true;
     LensSystem lens;
@@ -49,7 +51,6 @@ double distortionAt(const LensSystem& lens, double degrees) {
     return curve.back().distortionPercent;
 }
 
-LensSystem bundled(const char* name) { return loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name); }
 
 }  // namespace
 
@@ -69,8 +70,8 @@ TEST(Distortion, ChiefRayCrossesTheStopOnTheAxis) {
 }
 
 TEST(Distortion, SingleLensStopInFrontIsBarrelStopAtTheLensIsNearlyFree) {
-    const double inFront = distortionAt(singlet(20), 15);
-    const double atLens = distortionAt(singlet(0), 15);
+    const double inFront = distortionAt(stoppedSinglet(20), 15);
+    const double atLens = distortionAt(stoppedSinglet(0), 15);
     EXPECT_LT(inFront, -0.3);
     EXPECT_LT(std::fabs(atLens), 0.1 * std::fabs(inFront));
 }

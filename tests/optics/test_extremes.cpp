@@ -13,15 +13,16 @@
 #include "settings/LensAnalysis.h"
 #include "prescription/OpticsError.h"
 #include "trace/RayBatch.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-LensSystem table(const std::string& text) { return buildLensSystem(parseLensTable(text, "x.dat")); }
+LensSystem builtTable(const std::string& text) { return buildLensSystem(parseLensTable(text, "x.dat")); }
 
 LensSystem dgauss() { return loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss.50mm.dat"); }
 
@@ -103,7 +104,7 @@ TEST(Extremes, AxialRayStaysExactlyOnTheAxisBothWaysAndInTheBatch) {
 
 TEST(Extremes, RimRaysPassAndTheNextDoubleOutIsBlockedWithItsReason) {
     // Flat surfaces, so the hit height is exactly the ray height: window of 20 mm, stop of 10 mm.
-    const LensSystem lens = table("0 0 1.5 20\n0 5 1 20\n0 5 0 10\n");
+    const LensSystem lens = builtTable("0 0 1.5 20\n0 5 1 20\n0 5 0 10\n");
     auto trace = [&](double y) { return traceRay(lens, {{0, y, 1}, {0, 0, -1}}, TraceDirection::SceneToFilm); };
     EXPECT_TRUE(trace(5).ok());
     const TraceResult stop = trace(std::nextafter(5.0, 6.0));
@@ -179,7 +180,7 @@ TEST(Extremes, TotalInternalReflectionIsReportedAndLeavesTheRayUntouched) {
 
     // In a lens: a flat front, then R = 4 (glass to air). A parallel ray at 3.9 mm meets the back at
     // asin(3.9 / 4) = 77 degrees.
-    const LensSystem lens = table("0 0 1.5 8\n4 5 1 8\n0 1 0 4\n");
+    const LensSystem lens = builtTable("0 0 1.5 8\n4 5 1 8\n0 1 0 4\n");
     const TraceResult r = traceRay(lens, {{0, 3.9, 1}, {0, 0, -1}}, TraceDirection::SceneToFilm);
     EXPECT_EQ(r.blocked, BlockReason::TotalInternalReflection);
     EXPECT_EQ(r.surface, 1);
@@ -191,7 +192,7 @@ TEST(Extremes, TotalInternalReflectionIsReportedAndLeavesTheRayUntouched) {
 
 TEST(Extremes, MicrometreRadiusRefusesADiameterLargerThanItsSphere) {
     try {
-        table("0 0 0 0.001\n0.001 0.0005 1.5 0.003\n-0.001 0.002 0 0.002\n");
+        builtTable("0 0 0 0.001\n0.001 0.0005 1.5 0.003\n-0.001 0.002 0 0.002\n");
         FAIL() << "a 3 um diameter on a 1 um radius was accepted";
     } catch (const LensTableError& e) {
         EXPECT_EQ(e.line(), 2);
@@ -201,7 +202,7 @@ TEST(Extremes, MicrometreRadiusRefusesADiameterLargerThanItsSphere) {
 
 TEST(Extremes, MicrometreBallLensWithTheStopFirstIsAnalysed) {
     // A ball lens of radius 1e-3 mm (full hemispheres, touching at the rim) behind a 1 um stop.
-    const LensSystem lens = table("0 0 0 0.001\n0.001 0.0005 1.5 0.002\n-0.001 0.002 0 0.002\n");
+    const LensSystem lens = builtTable("0 0 0 0.001\n0.001 0.0005 1.5 0.002\n-0.001 0.002 0 0.002\n");
     const LensAnalysis a = analyzeLens(lens, std::nullopt, kInf);
     expectAllFinite(a);
     const double n = 1.5, d = 0.002;
@@ -217,7 +218,7 @@ TEST(Extremes, MicrometreBallLensWithTheStopFirstIsAnalysed) {
 
 TEST(Extremes, GigametreRadiiGiveAFiniteWeakLens) {
     // Biconvex with R = 1e9 mm: f ~ R / (2 (n - 1)) = 1e9 mm, still exactly computed.
-    const LensSystem lens = table("1e9 0 1.5 20\n-1e9 5 1 20\n0 5 0 10\n");
+    const LensSystem lens = builtTable("1e9 0 1.5 20\n-1e9 5 1 20\n0 5 0 10\n");
     const FirstOrder fo = computeFirstOrder(lens);
     const double n = 1.5, R = 1e9, t = 5;
     const double power = (n - 1) * (2 / R) - (n - 1) * (n - 1) * t / (n * R * R);
@@ -230,10 +231,10 @@ TEST(Extremes, GigametreRadiiGiveAFiniteWeakLens) {
 
 TEST(Extremes, FlatSurfacesRefractAndAWindowIsAfocal) {
     // Plano-convex, flat side first: f = R / (n - 1) whatever the thickness.
-    const FirstOrder fo = computeFirstOrder(table("0 0 1.5 20\n-50 5 1 20\n0 2 0 10\n"));
+    const FirstOrder fo = computeFirstOrder(builtTable("0 0 1.5 20\n-50 5 1 20\n0 2 0 10\n"));
     EXPECT_NEAR(fo.efl, 100, 1e-9);
     EXPECT_NEAR(fo.zPPrime, -5, 1e-9);  // on the curved vertex
-    expectOpticsError([] { computeFirstOrder(table("0 0 1.5 20\n0 5 1 20\n0 2 0 10\n")); }, "afocal");
+    expectOpticsError([] { computeFirstOrder(builtTable("0 0 1.5 20\n0 5 1 20\n0 2 0 10\n")); }, "afocal");
 }
 
 // ---- stops and f-numbers ----------------------------------------------------------------------
@@ -258,8 +259,8 @@ TEST(Extremes, FullyOpenStopIsLimitedByTheElements) {
     EXPECT_NEAR(open.stopDiameter, asTable.stopDiameter, 1e-9);
     EXPECT_LT(open.stopDiameter, 17.1);
     // A singlet with the stop behind it: opened from 10 mm to 1 m, the 20 mm lens is the limit.
-    const LensAnalysis small = analyzeLens(table("50 0 1.5 20\n-50 5 1 20\n0 5 0 10\n"), std::nullopt, kInf);
-    const LensAnalysis wide = analyzeLens(table("50 0 1.5 20\n-50 5 1 20\n0 5 0 1000\n"), std::nullopt, kInf);
+    const LensAnalysis small = analyzeLens(builtTable("50 0 1.5 20\n-50 5 1 20\n0 5 0 10\n"), std::nullopt, kInf);
+    const LensAnalysis wide = analyzeLens(builtTable("50 0 1.5 20\n-50 5 1 20\n0 5 0 1000\n"), std::nullopt, kInf);
     expectAllFinite(wide);
     EXPECT_NEAR(small.stopDiameter, 10, 1e-6);
     EXPECT_LT(wide.fstop, small.fstop);
@@ -320,12 +321,12 @@ TEST(Extremes, FocusFromInfinityToTheClosestAndJustInside) {
 // ---- stop position ----------------------------------------------------------------------------
 
 TEST(Extremes, StopFirstOrLastMakesThatPupilTheStopItself) {
-    const LensAnalysis first = analyzeLens(table("0 0 0 10\n50 5 1.5 20\n-50 5 0 20\n"), std::nullopt, 1000);
+    const LensAnalysis first = analyzeLens(builtTable("0 0 0 10\n50 5 1.5 20\n-50 5 0 20\n"), std::nullopt, 1000);
     expectAllFinite(first);
     EXPECT_NEAR(first.pupils.entrance.z, 0, 1e-12);
     EXPECT_NEAR(first.pupils.entrance.diameter, first.stopDiameter, 1e-12);
 
-    const LensAnalysis last = analyzeLens(table("50 0 1.5 20\n-50 5 1 20\n0 5 0 10\n"), std::nullopt, 1000);
+    const LensAnalysis last = analyzeLens(builtTable("50 0 1.5 20\n-50 5 1 20\n0 5 0 10\n"), std::nullopt, 1000);
     expectAllFinite(last);
     EXPECT_NEAR(last.pupils.exit.z, -10, 1e-12);
     EXPECT_NEAR(last.pupils.exit.diameter, last.stopDiameter, 1e-12);

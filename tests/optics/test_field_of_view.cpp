@@ -8,13 +8,13 @@
 #include "firstorder/FieldOfView.h"
 #include "settings/LensAnalysis.h"
 #include "PrescriptionRows.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
 using namespace lenslab::test;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 }  // namespace
 

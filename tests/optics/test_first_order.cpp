@@ -14,13 +14,13 @@
 #include "ParaxialYNu.h"
 #include "firstorder/Pupils.h"
 #include "firstorder/ThickLens.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
 using namespace lenslab::test;
 
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
 
 std::vector<std::string> publishedTables() {
     std::vector<std::string> paths;

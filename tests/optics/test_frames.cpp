@@ -20,12 +20,11 @@
 #include "trace/ExactTrace.h"
 #include "trace/RayBatch.h"
 #include "PrescriptionRows.h"
+#include "prescription/Pi.h"
 
 using namespace lenslab;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 LensTableRow row(double radius, double gap, double index, double diameter, int line) {
     LensTableRow r = test::row(radius, gap, index, diameter);
@@ -42,7 +41,7 @@ LensTableRow coordinateBreak(std::array<double, 3> decentre, std::array<double, 
 }
 
 // A gap-after singlet focusing at about 50 mm, the stop on its front.
-LensTable singlet() {
+LensTable gapAfterSinglet() {
     LensTable t;
     t.name = "singlet";
     t.layout = TableLayout::GapAfter;
@@ -84,7 +83,7 @@ TEST(Frames, DecentredThenRecentredCoordinateBreaksAreTheIdentity) {
     for (int i = 0; i < 9; ++i) EXPECT_NEAR(both.rotation[i], i % 4 == 0 ? 1 : 0, 1e-15);
     for (double s : both.shift) EXPECT_NEAR(s, 0, 1e-14);
 
-    const LensTable plain = singlet();
+    const LensTable plain = gapAfterSinglet();
     LensTable broken = plain;
     broken.rows.insert(broken.rows.begin() + 1, {coordinateBreak(there.decentre, there.tiltDegrees, there.order, 10),
                                                  coordinateBreak(back.decentre, back.tiltDegrees, back.order, 11)});

@@ -11,8 +11,10 @@
 #include "prescription/GlassCatalogFile.h"
 #include "prescription/LensSystem.h"
 #include "prescription/RowMedium.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
@@ -52,15 +54,8 @@ std::string agfLine(const Medium& g, const FormulaLayout& f) {
     return s.str();
 }
 
-void expectError(const std::string& text, int line, const std::string& part) {
-    try {
-        parseGlassCatalogFile(text, "bad.agf");
-        FAIL() << "no error for:\n" << text;
-    } catch (const LensTableError& e) {
-        EXPECT_EQ(e.line(), line) << e.what();
-        EXPECT_NE(e.problem().find(part), std::string::npos) << e.what();
-        EXPECT_EQ(std::string(e.what()).rfind("bad.agf:" + std::to_string(line) + ": ", 0), 0u) << e.what();
-    }
+void expectAgfError(const std::string& text, int line, const std::string& part) {
+    expectReadError([&] { parseGlassCatalogFile(text, "bad.agf"); }, text, "bad.agf", line, part);
 }
 
 }  // namespace
@@ -214,14 +209,14 @@ TEST(GlassCatalogFile, MouldedVariantFallsBackToItsBaseGlassWithAWarning) {
 }
 
 TEST(GlassCatalogFile, RefusalsNameTheLine) {
-    expectError("CC x\nCD 1 2 3\n", 2, "CD before the first NM");
-    expectError("NM G 14 0 1.5 60 0 1\nCD 1\n", 1, "formula number 14");
-    expectError("NM G 2 0 1.5 60 0 1\nLD 0.3 2.5\nNM H 2 0 1.5 60 0 1\nCD 1 0.01 0 0 0 0\n", 1, "has no CD line");
-    expectError("NM G 2 0 0.5 60 0 1\n", 1, "nd 0.5");
-    expectError("NM G 2 0 1.5\n", 1, "NM needs");
-    expectError("NM G 2 0 1.5 60 0 1\nCD 1 x\n", 2, "not a finite number");
-    expectError("NM G 2 0 1.5 60 0 1\nCD 1 0.01\nLD 2.5 0.3\n", 3, "not a wavelength range");
-    expectError("CC nothing here\n", 1, "no glasses");
+    expectAgfError("CC x\nCD 1 2 3\n", 2, "CD before the first NM");
+    expectAgfError("NM G 14 0 1.5 60 0 1\nCD 1\n", 1, "formula number 14");
+    expectAgfError("NM G 2 0 1.5 60 0 1\nLD 0.3 2.5\nNM H 2 0 1.5 60 0 1\nCD 1 0.01 0 0 0 0\n", 1, "has no CD line");
+    expectAgfError("NM G 2 0 0.5 60 0 1\n", 1, "nd 0.5");
+    expectAgfError("NM G 2 0 1.5\n", 1, "NM needs");
+    expectAgfError("NM G 2 0 1.5 60 0 1\nCD 1 x\n", 2, "not a finite number");
+    expectAgfError("NM G 2 0 1.5 60 0 1\nCD 1 0.01\nLD 2.5 0.3\n", 3, "not a wavelength range");
+    expectAgfError("CC nothing here\n", 1, "no glasses");
     EXPECT_TRUE(isGlassCatalogFileName("a/SCHOTT.AGF"));
     EXPECT_TRUE(isGlassCatalogFileName("hoya.agf"));
     EXPECT_FALSE(isGlassCatalogFileName("agf"));

@@ -12,23 +12,17 @@
 #include "prescription/LensSystem.h"
 #include "prescription/LensTable.h"
 #include "trace/ExactTrace.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
 // Expects parsing + building to fail with a message naming file, line and problem.
-void expectError(const std::string& text, int line, const std::string& problemPart,
-                 std::optional<TableLayout> layout = std::nullopt) {
-    try {
-        buildLensSystem(parseLensTable(text, "bad.dat", layout));
-        FAIL() << "no error for:\n" << text;
-    } catch (const LensTableError& e) {
-        EXPECT_EQ(e.file(), "bad.dat");
-        EXPECT_EQ(e.line(), line) << e.what();
-        EXPECT_NE(std::string(e.what()).find(problemPart), std::string::npos) << e.what();
-        EXPECT_EQ(std::string(e.what()).rfind("bad.dat:" + std::to_string(line) + ": ", 0), 0u) << e.what();
-    }
+void expectTableError(const std::string& text, int line, const std::string& part,
+                      std::optional<TableLayout> layout = std::nullopt) {
+    expectReadError([&] { buildLensSystem(parseLensTable(text, "bad.dat", layout)); }, text, "bad.dat", line, part);
 }
 
 const char* kGapBefore =
@@ -77,11 +71,11 @@ TEST(LensTable, CopesWithCrlfTabsCommentsAndNoFinalNewline) {
 TEST(LensTable, ExplicitLayoutOverridesDetection) {
     // First and last gap both 0: ambiguous unless told.
     const char* both = "50 0 1.5 20\n-50 5 1 20\n0 5 0 10\n40 5 1.6 18\n-80 0 1 18\n";
-    expectError(both, 1, "ambiguous layout");
+    expectTableError(both, 1, "ambiguous layout");
     const LensTable t = parseLensTable(both, "both.dat", TableLayout::GapAfter);
     EXPECT_EQ(t.layout, TableLayout::GapAfter);
     EXPECT_FALSE(t.layoutDetected);
-    expectError("50 3 1.5 20\n-50 5 1 20\n0 5 0 10\n40 5 1.6 18\n-80 2 1 18\n", 1, "gap-before layout needs",
+    expectTableError("50 3 1.5 20\n-50 5 1 20\n0 5 0 10\n40 5 1.6 18\n-80 2 1 18\n", 1, "gap-before layout needs",
                 TableLayout::GapBefore);
 }
 
@@ -93,9 +87,9 @@ TEST(LensTable, FlatRefractingSurfaceIsNotAStop) {
 }
 
 TEST(LensTableErrors, WrongColumnCount) {
-    expectError("50 0 1.5\n", 1, "expected 4 or 5 columns (radius, gap, N, diameter, optional glass or Vd), found 3");
+    expectTableError("50 0 1.5\n", 1, "expected 4 or 5 columns (radius, gap, N, diameter, optional glass or Vd), found 3");
 }
-TEST(LensTableErrors, TooManyColumns) { expectError("50 0 1.5 20\n-50 5 1.6 20 7 8\n", 2, "found 6"); }
+TEST(LensTableErrors, TooManyColumns) { expectTableError("50 0 1.5 20\n-50 5 1.6 20 7 8\n", 2, "found 6"); }
 
 // The optional fifth column: a number is the glass's Abbe number Vd, anything else its catalog name.
 TEST(LensTable, FifthColumnNamesTheGlass) {
@@ -111,25 +105,25 @@ TEST(LensTable, FifthColumnNamesTheGlass) {
     EXPECT_EQ(buildLensSystem(t).surfaces.size(), 4u);
 }
 TEST(LensTableErrors, AbbeNumberNotPositive) {
-    expectError("50 0 1.5 20 0\n", 1, "Abbe number Vd must be positive, found 0");
-    expectError("50 0 1.5 20 -30\n", 1, "Abbe number Vd must be positive, found -30");
+    expectTableError("50 0 1.5 20 0\n", 1, "Abbe number Vd must be positive, found 0");
+    expectTableError("50 0 1.5 20 -30\n", 1, "Abbe number Vd must be positive, found -30");
 }
-TEST(LensTableErrors, AbbeNumberNotFinite) { expectError("50 0 1.5 20 inf\n", 1, "column 5 (glass or Vd) is not a finite number"); }
-TEST(LensTableErrors, FifthColumnOnAir) { expectError("50 0 1.5 20\n-50 5 1 20 60\n", 2, "on an air or stop row"); }
-TEST(LensTableErrors, FifthColumnOnStop) { expectError("50 0 1.5 20\n0 5 0 10 N-BK7\n", 2, "on an air or stop row"); }
-TEST(LensTableErrors, NotANumber) { expectError("50 0 1.5 20\n-50 five 1 20\n", 2, "column 2 (gap) is not a finite number: 'five'"); }
-TEST(LensTableErrors, NotFinite) { expectError("50 0 1.5 20\n-50 5 1 nan\n", 2, "column 4 (diameter) is not a finite number"); }
-TEST(LensTableErrors, NegativeDiameter) { expectError("50 0 1.5 -20\n", 1, "diameter must be positive"); }
-TEST(LensTableErrors, ZeroDiameter) { expectError("50 0 1.5 20\n0 5 0 0\n", 2, "diameter must be positive"); }
-TEST(LensTableErrors, NegativeGap) { expectError("50 0 1.5 20\n-50 -5 1 20\n", 2, "negative gap"); }
-TEST(LensTableErrors, IndexBelowOne) { expectError("50 0 0.8 20\n", 1, "is below 1"); }
-TEST(LensTableErrors, Empty) { expectError("# only a comment\n\n", 2, "no surfaces"); }
-TEST(LensTableErrors, NoStop) { expectError("50 0 1.5 20\n-50 5 1 20\n", 1, "no aperture stop"); }
+TEST(LensTableErrors, AbbeNumberNotFinite) { expectTableError("50 0 1.5 20 inf\n", 1, "column 5 (glass or Vd) is not a finite number"); }
+TEST(LensTableErrors, FifthColumnOnAir) { expectTableError("50 0 1.5 20\n-50 5 1 20 60\n", 2, "on an air or stop row"); }
+TEST(LensTableErrors, FifthColumnOnStop) { expectTableError("50 0 1.5 20\n0 5 0 10 N-BK7\n", 2, "on an air or stop row"); }
+TEST(LensTableErrors, NotANumber) { expectTableError("50 0 1.5 20\n-50 five 1 20\n", 2, "column 2 (gap) is not a finite number: 'five'"); }
+TEST(LensTableErrors, NotFinite) { expectTableError("50 0 1.5 20\n-50 5 1 nan\n", 2, "column 4 (diameter) is not a finite number"); }
+TEST(LensTableErrors, NegativeDiameter) { expectTableError("50 0 1.5 -20\n", 1, "diameter must be positive"); }
+TEST(LensTableErrors, ZeroDiameter) { expectTableError("50 0 1.5 20\n0 5 0 0\n", 2, "diameter must be positive"); }
+TEST(LensTableErrors, NegativeGap) { expectTableError("50 0 1.5 20\n-50 -5 1 20\n", 2, "negative gap"); }
+TEST(LensTableErrors, IndexBelowOne) { expectTableError("50 0 0.8 20\n", 1, "is below 1"); }
+TEST(LensTableErrors, Empty) { expectTableError("# only a comment\n\n", 2, "no surfaces"); }
+TEST(LensTableErrors, NoStop) { expectTableError("50 0 1.5 20\n-50 5 1 20\n", 1, "no aperture stop"); }
 TEST(LensTableErrors, TwoStops) {
-    expectError("50 0 1.5 20\n-50 5 1 20\n0 5 0 10\n0 5 0 10\n-80 4 1 18\n", 4, "a second aperture stop");
+    expectTableError("50 0 1.5 20\n-50 5 1 20\n0 5 0 10\n0 5 0 10\n-80 4 1 18\n", 4, "a second aperture stop");
 }
 TEST(LensTableErrors, DiameterLargerThanSphere) {
-    expectError("8 0 1.5 20\n-50 5 1 20\n0 5 0 10\n", 1, "larger than the sphere of radius 8 mm allows");
+    expectTableError("8 0 1.5 20\n-50 5 1 20\n0 5 0 10\n", 1, "larger than the sphere of radius 8 mm allows");
 }
 // Two strongly convex-toward-each-other surfaces 1 mm apart at the axis cross near the rim: the
 // lens reads, with a warning naming both lines and the height, and both apertures end there.
@@ -156,9 +150,9 @@ TEST(LensTable, OverlappingEdgesWarnAndClip) {
               BlockReason::OutsideAperture);
 }
 TEST(LensTableErrors, AmbiguousLayoutWithoutZeroGaps) {
-    expectError("50 2 1.5 20\n-50 5 1 20\n0 5 0 10\n", 1, "cannot tell the layout");
+    expectTableError("50 2 1.5 20\n-50 5 1 20\n0 5 0 10\n", 1, "cannot tell the layout");
 }
-TEST(LensTableErrors, LastSurfaceInGlass) { expectError("50 0 1.5 20\n0 5 0 10\n-50 5 1.5 20\n", 3, "must leave the ray in air"); }
+TEST(LensTableErrors, LastSurfaceInGlass) { expectTableError("50 0 1.5 20\n0 5 0 10\n-50 5 1.5 20\n", 3, "must leave the ray in air"); }
 TEST(LensTableErrors, UnreadableFile) {
     try {
         readLensTable("/nonexistent/lens.dat");
@@ -212,5 +206,5 @@ std::string manySurfaces(int n) {
 TEST(LensTable, RefusesTablesBeyondTheSurfaceLimitAtTheFirstRowTooMany) {
     EXPECT_EQ(parseLensTable(manySurfaces(kMaxLensSurfaces), "big.dat").rows.size(), std::size_t(kMaxLensSurfaces));
     // Row 257 is the first one refused: the message names its line and the limit.
-    expectError(manySurfaces(10000), kMaxLensSurfaces + 1, "too many surfaces: a lens table may have at most 256 rows");
+    expectTableError(manySurfaces(10000), kMaxLensSurfaces + 1, "too many surfaces: a lens table may have at most 256 rows");
 }

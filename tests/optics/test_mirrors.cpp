@@ -9,8 +9,10 @@
 #include "firstorder/Aperture.h"
 #include "firstorder/FirstOrder.h"
 #include "settings/LensAnalysis.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
@@ -20,7 +22,6 @@ namespace {
 // equation: 1/s' - 1/s = -2/R2 gives |R2| = 2 s s' / (s' - s) = 50 (convex); the secondary conic for
 // a perfect axial image is -((m + 1)/(m - 1))^2 = -2.25; system focal length m f1 = 500.
 constexpr double kF1 = 100, kGap = 80, kM = 5;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 LensTable cassegrainTable(double secondaryConic, double obscuration) {
     LensTable t;

@@ -13,12 +13,13 @@
 #include "firstorder/PbrtPupilBox.h"
 #include "trace/ExactTrace.h"
 #include "trace/RayBatch.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
-LensSystem bundled(const char* name) { return loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name); }
 
 constexpr int kGrid = 512;
 constexpr int kBisections = 30;

@@ -9,17 +9,18 @@
 #include "firstorder/FirstOrder.h"
 #include "settings/LensAnalysis.h"
 #include "prescription/Medium.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
-const std::string kLenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
 
 }  // namespace
 
 TEST(RealLenses, CourseTableWrittenAsZemaxHasTheSameFirstOrderData) {
-    const LensSystem table = loadLensSystem(kLenses + "dgauss.50mm.dat");
+    const LensSystem table = loadLensSystem(kLensesDir + "dgauss.50mm.dat");
     const LensSystem zmx = loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/tests/optics/data/dgauss.50mm.zmx");
     ASSERT_EQ(zmx.format, "zmx");
     const LensAnalysis a = analyzeLens(table, 4.0, 2000);
@@ -44,7 +45,7 @@ TEST(RealLenses, CementedAchromatBringsFAndCTogether) {
     // Thorlabs AC254-100-A, N-BK7 / SF5 from the catalog. A singlet of the same focal length in
     // N-BK7 alone spreads F and C by about f / Vd = 100 / 64.17 = 1.56 mm; the achromat leaves a
     // residual of a tenth of that (what its glass pair and bending allow; here 0.13 mm).
-    const LensSystem doublet = loadLensSystem(kLenses + "ac254-100-a.dat");
+    const LensSystem doublet = loadLensSystem(kLensesDir + "ac254-100-a.dat");
     const double fF = computeFirstOrder(atWavelength(doublet, kWavelengthF)).efl;
     const double fC = computeFirstOrder(atWavelength(doublet, kWavelengthC)).efl;
     const double fd = computeFirstOrder(doublet).efl;
@@ -94,7 +95,7 @@ TEST(RealLenses, WavelengthBeyondGlassDataIsRefusedNamingItsSource) {
     LensSettings s;
     s.wavelength = Setting{3390, "--wavelength"};
     try {
-        analyzeLens(loadLensSystem(kLenses + "ac254-100-a.dat"), s);
+        analyzeLens(loadLensSystem(kLensesDir + "ac254-100-a.dat"), s);
         FAIL();
     } catch (const std::exception& e) {
         EXPECT_STREQ(e.what(), "--wavelength: wavelength 3390 nm lies outside 180-2500 nm");

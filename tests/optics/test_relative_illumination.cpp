@@ -7,8 +7,10 @@
 #include "prescription/LensSystem.h"
 #include "prescription/OpticsError.h"
 #include "analysis/RelativeIllumination.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
@@ -23,7 +25,6 @@ LensSystem bareStop(double radius) {
     return lens;
 }
 
-LensSystem bundled(const char* name) { return loadLensSystem(std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name); }
 
 }  // namespace
 

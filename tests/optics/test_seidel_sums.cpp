@@ -11,13 +11,13 @@
 #include "analysis/SeidelSums.h"
 #include "firstorder/FirstOrder.h"
 #include "trace/ExactTrace.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
 using namespace lenslab::test;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The test's own sums for a lens of spheres at infinity: marginal ray at the stop's rim, chief ray
 // through its centre at slope tan(field), both by the textbook recurrences.

@@ -8,11 +8,10 @@
 #include <stdexcept>
 
 #include "analysis/SlantedEdgeSfr.h"
+#include "prescription/Pi.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double sinc(double x) { return x == 0 ? 1.0 : std::sin(kPi * x) / (kPi * x); }
 

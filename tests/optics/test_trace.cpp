@@ -11,7 +11,7 @@ using namespace lenslab;
 
 namespace {
 
-LensSystem table(const std::string& text) { return buildLensSystem(parseLensTable(text, "t.dat")); }
+LensSystem builtTable(const std::string& text) { return buildLensSystem(parseLensTable(text, "t.dat")); }
 
 const std::string kDgauss = std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss.50mm.dat";
 
@@ -29,7 +29,7 @@ TEST(Trace, AxialRayStaysOnTheAxis) {
 
 TEST(Trace, SingleSurfaceObeysSnellsLaw) {
     // A convex glass surface (R = 30) then the stop: check n1 sin(i) = n2 sin(r) about the normal.
-    const LensSystem lens = table("30 0 1.7 40\n0 10 0 30\n");
+    const LensSystem lens = builtTable("30 0 1.7 40\n0 10 0 30\n");
     const Ray in{{0, 0, 20}, normalize({0.05, -0.4, -1})};
     std::vector<Vec3> path;
     TraceOptions o;
@@ -59,7 +59,7 @@ TEST(Trace, ASteepRayMeetsAConcaveSurfaceWhereItCrossesIntoTheGlass) {
     // vertex: the ray's line also crosses the sphere 2.2 mm in front of the vertex, 4.14 mm off the
     // axis, going the other way (out of the glass side). Started in front of that point or behind
     // it, the ray meets the surface at the vertex.
-    const LensSystem lens = table("-5 0 1.5 8\n0 10 0 30\n");
+    const LensSystem lens = builtTable("-5 0 1.5 8\n0 10 0 30\n");
     const double a = 62 * M_PI / 180;
     const Vec3 d{0, -std::sin(a), -std::cos(a)};
     for (double startZ : {1.0, 3.0, 4.5}) {
@@ -77,7 +77,7 @@ TEST(Trace, ASteepRayMeetsAConcaveSurfaceWhereItCrossesIntoTheGlass) {
 
 TEST(Trace, TotalInternalReflectionIsReported) {
     // Leaving glass (n 1.8) through a flat face at 40 degrees: sin > 1/1.8, no refracted ray.
-    const LensSystem lens = table("0 0 1.8 40\n0 5 1 40\n0 5 0 30\n");
+    const LensSystem lens = builtTable("0 0 1.8 40\n0 5 1 40\n0 5 0 30\n");
     const double a = 40 * M_PI / 180;
     const Ray in{{0, 0, -1}, {0, std::sin(a), -std::cos(a)}};
     TraceOptions o;
@@ -101,7 +101,7 @@ TEST(Trace, ClippedRaysNameTheSurfaceAndReason) {
     EXPECT_EQ(r.blocked, BlockReason::ClippedByStop);
     EXPECT_EQ(r.surface, lens.stopIndex);
     // A ray that misses a strongly curved cap altogether.
-    r = traceRay(table("10 0 1.5 19\n0 5 0 10\n"), {{0, 30, 5}, {0, -0.01, -1}}, TraceDirection::SceneToFilm);
+    r = traceRay(builtTable("10 0 1.5 19\n0 5 0 10\n"), {{0, 30, 5}, {0, -0.01, -1}}, TraceDirection::SceneToFilm);
     EXPECT_NE(r.blocked, BlockReason::None);
 }
 

@@ -9,17 +9,18 @@
 #include "firstorder/Focus.h"
 #include "trace/RayBatch.h"
 #include "trace/WavelengthEtas.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 
 namespace {
 
-const std::string kLenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
 
 }  // namespace
 
 TEST(WavelengthEtas, BandsMatchTheLensAtTheirWavelength) {
-    const LensSystem lens = loadLensSystem(kLenses + "dgauss-glass.dat");
+    const LensSystem lens = loadLensSystem(kLensesDir + "dgauss-glass.dat");
     const WavelengthEtas etas = tabulateEtas(lens, TraceDirection::FilmToScene);
     EXPECT_EQ(etas.bands, 471);
     EXPECT_EQ(etas.band(359), 0);
@@ -34,7 +35,7 @@ TEST(WavelengthEtas, BandsMatchTheLensAtTheirWavelength) {
 // for a spherical and an aspheric lens.
 TEST(WavelengthEtas, SpectralBatchEqualsScalarAtEachWavelengthBitForBit) {
     for (const char* name : {"dgauss-glass.dat", "us2015-0092100-ex1-55mm.zmx"}) {
-        const LensSystem lens = loadLensSystem(kLenses + name);
+        const LensSystem lens = loadLensSystem(kLensesDir + name);
         const WavelengthEtas etas = tabulateEtas(lens, TraceDirection::FilmToScene);
         const double filmZ = lens.rearZ() - 40;
         std::mt19937_64 rng(11);
@@ -73,7 +74,7 @@ TEST(WavelengthEtas, SpectralBatchEqualsScalarAtEachWavelengthBitForBit) {
 // and the ends of the range; and how much tighter the bands are than the lens's own bounds widened
 // to hold every wavelength.
 TEST(WavelengthEtas, BandBoundsHoldEveryWavelengthsPassingRays) {
-    const LensSystem lens = withStopDiameter(loadLensSystem(kLenses + "dgauss-glass.dat"), 30);
+    const LensSystem lens = withStopDiameter(loadLensSystem(kLensesDir + "dgauss-glass.dat"), 30);
     const double filmZ = lens.rearZ() - 60, maxRadius = 21, step = maxRadius / 63;
     const std::vector<double> edges = {360, 410, 460, 520, 590, 680, 830};
     const SpectralExitPupilBounds bands = computeSpectralExitPupilBounds(lens, filmZ, step, 0, 63, edges);

@@ -13,8 +13,10 @@
 #include "prescription/ZemaxFile.h"
 #include "settings/LensAnalysis.h"
 #include "Utf16.h"
+#include "OpticsTestHelpers.h"
 
 using namespace lenslab;
+using namespace lenslab::test;
 using lenslab::test::toUtf16;
 
 namespace {
@@ -44,7 +46,7 @@ void expectSameRows(const LensTable& a, const LensTable& b, double tolerance) {
 }
 
 // A singlet with one line of the header (line 2) and one line of SURF 1 (line 13) to vary.
-std::string singlet(const std::string& surfaceLine = "  CONI 0", const std::string& headerLine = "MODE SEQ") {
+std::string zmxSinglet(const std::string& surfaceLine = "  CONI 0", const std::string& headerLine = "MODE SEQ") {
     return "VERS 140124\n" + headerLine + "\nUNIT MM\n"  // 1-3
            "SURF 0\n  CURV 0\n  DISZ INFINITY\n"         // 4-6
            "SURF 1\n  STOP\n  CURV 0.02\n  DISZ 5\n  GLAS N-BK7 0 0 1.5168 64.17\n  DIAM 10\n" +  // 7-12
@@ -59,16 +61,8 @@ std::string replaced(std::string text, const std::string& from, const std::strin
     return text.replace(at, from.size(), to);
 }
 
-void expectError(const std::string& bytes, int line, const std::string& problemPart) {
-    try {
-        parseZemax(bytes, "bad.zmx");
-        FAIL() << "no error for:\n" << bytes;
-    } catch (const LensTableError& e) {
-        EXPECT_EQ(e.file(), "bad.zmx");
-        EXPECT_EQ(e.line(), line) << e.what();
-        EXPECT_NE(e.problem().find(problemPart), std::string::npos) << e.what();
-        EXPECT_EQ(std::string(e.what()).rfind("bad.zmx:" + std::to_string(line) + ": ", 0), 0u) << e.what();
-    }
+void expectZemaxError(const std::string& bytes, int line, const std::string& part) {
+    expectReadError([&] { parseZemax(bytes, "bad.zmx"); }, bytes, "bad.zmx", line, part);
 }
 
 }  // namespace
@@ -209,7 +203,7 @@ TEST(Zemax, MirrorsAndObscuration) {
 }
 
 TEST(Zemax, ManginMirrorKeepsTheGlassItReflectsIn) {
-    const std::string text = replaced(singlet(), "SURF 2\n  CURV -0.02\n  DISZ 40\n",
+    const std::string text = replaced(zmxSinglet(), "SURF 2\n  CURV -0.02\n  DISZ 40\n",
                                       "SURF 2\n  CURV -0.02\n  DISZ -5\n  GLAS MIRROR 0 0 1.5 40\n");
     const LensTable t = parseZemax(replaced(text, "SURF 3\n  CURV 0\n  DISZ 0\n",
                                             "SURF 3\n  CURV 0.02\n  DISZ -30\n  DIAM 10\nSURF 4\n  CURV 0\n  DISZ 0\n"),
@@ -224,17 +218,17 @@ TEST(Zemax, ManginMirrorKeepsTheGlassItReflectsIn) {
 
 // COAT: a material's name as Zemax spells it, a stack in lenslab's text; a blank one says nothing.
 TEST(Zemax, CoatingsAreReadFromCoat) {
-    const LensTable t = parseZemax(replaced(singlet("  COAT MGF2"), "  DISZ 40\n", "  DISZ 40\n  COAT MgF2+ZrO2:2q@500\n"),
+    const LensTable t = parseZemax(replaced(zmxSinglet("  COAT MGF2"), "  DISZ 40\n", "  DISZ 40\n  COAT MgF2+ZrO2:2q@500\n"),
                                    "coated.zmx");
     EXPECT_EQ(t.rows[0].coating, "MGF2");
     EXPECT_EQ(t.rows[1].coating, "MgF2+ZrO2:2q@500");
-    EXPECT_EQ(parseZemax(singlet("  COAT"), "blank.zmx").rows[0].coating, "");
+    EXPECT_EQ(parseZemax(zmxSinglet("  COAT"), "blank.zmx").rows[0].coating, "");
 }
 
 // A vendor's coating defined only in a COATING.DAT file (Thorlabs' THORC): the lens reads, the
 // surface keeps the default coating, and a warning names the line and the coating.
 TEST(Zemax, CoatingDefinedOnlyInACoatingFileIsWarnedAbout) {
-    const LensTable t = parseZemax(singlet("  COAT THORC"), "thorlabs.zmx");
+    const LensTable t = parseZemax(zmxSinglet("  COAT THORC"), "thorlabs.zmx");
     EXPECT_EQ(t.rows[0].coating, "");
     ASSERT_EQ(t.warnings.size(), 1u);
     EXPECT_EQ(t.warnings[0].line, 13);
@@ -243,7 +237,7 @@ TEST(Zemax, CoatingDefinedOnlyInACoatingFileIsWarnedAbout) {
 }
 
 TEST(ZemaxErrors, CoatingOnAMirror) {
-    const std::string text = replaced(singlet(), "SURF 2\n  CURV -0.02\n  DISZ 40\n",
+    const std::string text = replaced(zmxSinglet(), "SURF 2\n  CURV -0.02\n  DISZ 40\n",
                                       "SURF 2\n  CURV -0.02\n  DISZ -5\n  GLAS MIRROR 0 0 1.5 40\n  COAT MGF2\n");
     const std::string lens = replaced(text, "SURF 3\n  CURV 0\n  DISZ 0\n",
                                       "SURF 3\n  CURV 0.02\n  DISZ -30\n  DIAM 10\nSURF 4\n  CURV 0\n  DISZ 0\n");
@@ -257,7 +251,7 @@ TEST(ZemaxErrors, CoatingOnAMirror) {
 }
 
 TEST(Zemax, AsphericTermsScaleAsLengthToOneMinusTwoI) {
-    std::string text = replaced(singlet("  PARM 1 2\n  PARM 2 3\n  PARM 8 5"), "UNIT MM", "UNIT IN");
+    std::string text = replaced(zmxSinglet("  PARM 1 2\n  PARM 2 3\n  PARM 8 5"), "UNIT MM", "UNIT IN");
     text = replaced(text, "  STOP\n", "  STOP\n  TYPE EVENASPH\n");
     const LensTable t = parseZemax(text, "in.zmx");
     const double in = 25.4;
@@ -267,14 +261,14 @@ TEST(Zemax, AsphericTermsScaleAsLengthToOneMinusTwoI) {
     EXPECT_DOUBLE_EQ(t.rows[0].radius, 50 * in);
     EXPECT_DOUBLE_EQ(t.rows[0].gap, 5 * in);
     EXPECT_DOUBLE_EQ(t.rows[0].diameter, 20 * in);
-    const LensTable m = parseZemax(replaced(singlet(), "UNIT MM", "UNIT M X W"), "m.zmx");
+    const LensTable m = parseZemax(replaced(zmxSinglet(), "UNIT MM", "UNIT M X W"), "m.zmx");
     EXPECT_DOUBLE_EQ(m.rows[1].gap, 40000);
     // A STANDARD surface has no parameters: stale PARM lines do not make it aspheric.
-    EXPECT_EQ(parseZemax(singlet("  PARM 2 3"), "std.zmx").rows[0].aspheric, AsphericCoefficients{});
+    EXPECT_EQ(parseZemax(zmxSinglet("  PARM 2 3"), "std.zmx").rows[0].aspheric, AsphericCoefficients{});
 }
 
 TEST(Zemax, SurfaceWithoutTypeIsStandardAndIgnoredLinesAreIgnored) {
-    const LensTable t = parseZemax(singlet("  FIMP \n  HIDE 0 0 0\n  MIRR 2 0\n  SLAB 3\n  POPS 0 0 1\n  COMM x\n  DECX 0\n  TILT 0"
+    const LensTable t = parseZemax(zmxSinglet("  FIMP \n  HIDE 0 0 0\n  MIRR 2 0\n  SLAB 3\n  POPS 0 0 1\n  COMM x\n  DECX 0\n  TILT 0"
                                            "\n  SCBD 1 0 0 0 0 0\n  OBDC 0 0"),
                                    "ok.zmx");
     ASSERT_EQ(t.rows.size(), 2u);
@@ -354,18 +348,18 @@ TEST(Zemax, CoordinateBreaksFormsAperturesAndFields) {
 
 TEST(ZemaxErrors, GapBeforeLayoutDoesNotApply) {
     try {
-        parseLensTable(singlet(), "x.zmx", TableLayout::GapBefore);
+        parseLensTable(zmxSinglet(), "x.zmx", TableLayout::GapBefore);
         FAIL();
     } catch (const LensTableError& e) {
         EXPECT_NE(e.problem().find("gap-before layout does not apply"), std::string::npos) << e.what();
     }
 }
 
-TEST(ZemaxErrors, CoordinateBreakAsTheStop) { expectError(singlet("  TYPE COORDBRK"), 8, "a coordinate break cannot be the stop"); }
+TEST(ZemaxErrors, CoordinateBreakAsTheStop) { expectZemaxError(zmxSinglet("  TYPE COORDBRK"), 8, "a coordinate break cannot be the stop"); }
 // DIAM 0 leaves the clear aperture to the program (Zemax's automatic solve), as a Code V surface
 // without CIR; no DIAM at all is still an error (NoSemiDiameter).
 TEST(Zemax, DiamZeroIsAnAutomaticClearAperture) {
-    const LensTable t = parseZemax(replaced(singlet(), "  DIAM 10\nSURF 3", "  DIAM 0\nSURF 3"), "auto.zmx");
+    const LensTable t = parseZemax(replaced(zmxSinglet(), "  DIAM 10\nSURF 3", "  DIAM 0\nSURF 3"), "auto.zmx");
     EXPECT_TRUE(t.rows[1].automaticDiameter);
     EXPECT_EQ(t.rows[1].diameter, 0);
     EXPECT_FALSE(t.rows[0].automaticDiameter);
@@ -375,76 +369,76 @@ TEST(Zemax, DiamZeroIsAnAutomaticClearAperture) {
 // 400.12 nm, which 0.40012 * 1000 in doubles is not.
 TEST(Zemax, WavelengthsInMicrometresAreExactNanometres) {
     ASSERT_NE(0.40012 * 1000, 400.12);
-    const LensTable t = parseZemax(singlet("  CONI 0", "MODE SEQ\nWAVM 1 0.40012 1\nWAVM 2 5.875618E-1 1"), "w.zmx");
+    const LensTable t = parseZemax(zmxSinglet("  CONI 0", "MODE SEQ\nWAVM 1 0.40012 1\nWAVM 2 5.875618E-1 1"), "w.zmx");
     ASSERT_EQ(t.wavelengths.size(), 2u);
     EXPECT_EQ(t.wavelengths[0], 400.12);
     EXPECT_EQ(t.wavelengths[1], 587.5618);
 }
 
-TEST(ZemaxErrors, OldFormDecenter) { expectError(singlet("  DECY 0.5"), 13, "tilts and decenters in the old form (DECY)"); }
-TEST(ZemaxErrors, OldFormTilt) { expectError(singlet("  TILT 3"), 13, "tilts and decenters in the old form (TILT)"); }
+TEST(ZemaxErrors, OldFormDecenter) { expectZemaxError(zmxSinglet("  DECY 0.5"), 13, "tilts and decenters in the old form (DECY)"); }
+TEST(ZemaxErrors, OldFormTilt) { expectZemaxError(zmxSinglet("  TILT 3"), 13, "tilts and decenters in the old form (TILT)"); }
 TEST(ZemaxErrors, SurfaceTiltAfterTheSurface) {
-    expectError(singlet("  SCBD 2 0 0 0 0 90 0 0"), 13, "only the before-surface tilt and decentre (SCBD 1)");
+    expectZemaxError(zmxSinglet("  SCBD 2 0 0 0 0 90 0 0"), 13, "only the before-surface tilt and decentre (SCBD 1)");
 }
-TEST(ZemaxErrors, GradientIndexType) { expectError(singlet("  TYPE GRINSUR1"), 13, "gradient-index surfaces (TYPE GRINSUR1)"); }
-TEST(ZemaxErrors, GradientIndexLine) { expectError(singlet("  GRIN 1 2 3"), 13, "gradient-index media (GRIN)"); }
+TEST(ZemaxErrors, GradientIndexType) { expectZemaxError(zmxSinglet("  TYPE GRINSUR1"), 13, "gradient-index surfaces (TYPE GRINSUR1)"); }
+TEST(ZemaxErrors, GradientIndexLine) { expectZemaxError(zmxSinglet("  GRIN 1 2 3"), 13, "gradient-index media (GRIN)"); }
 TEST(ZemaxErrors, OtherTypeIsNamedWithWhatIsSupported) {
-    expectError(singlet("  TYPE SZERNSAG"), 13, "surface type SZERNSAG is not supported; lenslab reads sequential "
+    expectZemaxError(zmxSinglet("  TYPE SZERNSAG"), 13, "surface type SZERNSAG is not supported; lenslab reads sequential "
                                                 "systems of STANDARD, EVENASPH, ODDASPH, QTYPE/QED_TYPE, TOROIDAL and "
                                                 "COORDBRK surfaces");
 }
-TEST(ZemaxErrors, QTypeKind) { expectError(singlet("  TYPE QED_TYPE\n  XDAT 1 2"), 7, "XDAT 1 must be 0 (Qcon) or 1 (Qbfs)"); }
+TEST(ZemaxErrors, QTypeKind) { expectZemaxError(zmxSinglet("  TYPE QED_TYPE\n  XDAT 1 2"), 7, "XDAT 1 must be 0 (Qcon) or 1 (Qbfs)"); }
 TEST(ZemaxErrors, QTypeTermCount) {
-    expectError(singlet("  TYPE QED_TYPE\n  XDAT 2 1e12"), 7, "XDAT 2 counts its terms: a whole number up to");
-    expectError(singlet("  TYPE QED_TYPE\n  XDAT 2 -1"), 7, "XDAT 2 counts its terms");
+    expectZemaxError(zmxSinglet("  TYPE QED_TYPE\n  XDAT 2 1e12"), 7, "XDAT 2 counts its terms: a whole number up to");
+    expectZemaxError(zmxSinglet("  TYPE QED_TYPE\n  XDAT 2 -1"), 7, "XDAT 2 counts its terms");
 }
 TEST(ZemaxErrors, ToroidExtraTerms) {
-    expectError(singlet("  TYPE TOROIDAL\n  XDAT 1 3e12"), 14, "extra polynomial terms (XDAT 1 3e+12)");
+    expectZemaxError(zmxSinglet("  TYPE TOROIDAL\n  XDAT 1 3e12"), 14, "extra polynomial terms (XDAT 1 3e+12)");
 }
-TEST(ZemaxErrors, RectangularApertureSizes) { expectError(singlet("  SQAP 4 0 0"), 13, "SQAP needs two positive half widths"); }
-TEST(ZemaxErrors, AnnularObscuration) { expectError(singlet("  OBSC 1 2 0"), 13, "annular obscurations"); }
-TEST(ZemaxErrors, ObscurationCoveringTheAperture) { expectError(singlet("  OBSC 0 10 0"), 7, "covers the whole clear aperture"); }
-TEST(ZemaxErrors, NonSequential) { expectError(singlet("  CONI 0", "MODE NSC"), 2, "only sequential files (MODE SEQ)"); }
-TEST(ZemaxErrors, UnknownUnit) { expectError(replaced(singlet(), "UNIT MM", "UNIT FT"), 3, "UNIT FT is not one of MM, CM, IN, M"); }
-TEST(ZemaxErrors, SurfaceWithoutCurv) { expectError(replaced(singlet(), "  CURV -0.02\n", ""), 14, "SURF 2 has no CURV"); }
-TEST(ZemaxErrors, NotANumber) { expectError(singlet("  CONI abc"), 13, "CONI value 1 is not a finite number: 'abc'"); }
+TEST(ZemaxErrors, RectangularApertureSizes) { expectZemaxError(zmxSinglet("  SQAP 4 0 0"), 13, "SQAP needs two positive half widths"); }
+TEST(ZemaxErrors, AnnularObscuration) { expectZemaxError(zmxSinglet("  OBSC 1 2 0"), 13, "annular obscurations"); }
+TEST(ZemaxErrors, ObscurationCoveringTheAperture) { expectZemaxError(zmxSinglet("  OBSC 0 10 0"), 7, "covers the whole clear aperture"); }
+TEST(ZemaxErrors, NonSequential) { expectZemaxError(zmxSinglet("  CONI 0", "MODE NSC"), 2, "only sequential files (MODE SEQ)"); }
+TEST(ZemaxErrors, UnknownUnit) { expectZemaxError(replaced(zmxSinglet(), "UNIT MM", "UNIT FT"), 3, "UNIT FT is not one of MM, CM, IN, M"); }
+TEST(ZemaxErrors, SurfaceWithoutCurv) { expectZemaxError(replaced(zmxSinglet(), "  CURV -0.02\n", ""), 14, "SURF 2 has no CURV"); }
+TEST(ZemaxErrors, NotANumber) { expectZemaxError(zmxSinglet("  CONI abc"), 13, "CONI value 1 is not a finite number: 'abc'"); }
 TEST(ZemaxErrors, NotFinite) {
-    expectError(singlet("  CONI nan"), 13, "not a finite number");
-    expectError(singlet("  CONI 1e999"), 13, "not a finite number");
-    expectError(replaced(singlet(), "DISZ 40", "DISZ INFINITY"), 16, "INFINITY only on the object surface");
-    expectError(replaced(singlet(), "SURF 2\n  CURV -0.02\n  DISZ 40", "SURF 2\n  TYPE COORDBRK\n  CURV 0\n  DISZ INFINITY"), 17,
+    expectZemaxError(zmxSinglet("  CONI nan"), 13, "not a finite number");
+    expectZemaxError(zmxSinglet("  CONI 1e999"), 13, "not a finite number");
+    expectZemaxError(replaced(zmxSinglet(), "DISZ 40", "DISZ INFINITY"), 16, "INFINITY only on the object surface");
+    expectZemaxError(replaced(zmxSinglet(), "SURF 2\n  CURV -0.02\n  DISZ 40", "SURF 2\n  TYPE COORDBRK\n  CURV 0\n  DISZ INFINITY"), 17,
                 "INFINITY only on the object surface");  // a coordinate break's thickness too
-    expectError(replaced(singlet(), "CURV 0.02", "CURV 1e-320"), 9, "the radius is not a finite number");
-    expectError(replaced(replaced(singlet(), "UNIT MM", "UNIT M"), "DISZ 40", "DISZ 1e306"), 16,
+    expectZemaxError(replaced(zmxSinglet(), "CURV 0.02", "CURV 1e-320"), 9, "the radius is not a finite number");
+    expectZemaxError(replaced(replaced(zmxSinglet(), "UNIT MM", "UNIT M"), "DISZ 40", "DISZ 1e306"), 16,
                 "DISZ must be a finite thickness");  // finite in metres, not in millimetres
 }
 TEST(ZemaxErrors, Empty) {
-    expectError("", 1, "empty file");
-    expectError("\r\n  \r\n", 1, "empty file");
+    expectZemaxError("", 1, "empty file");
+    expectZemaxError("\r\n  \r\n", 1, "empty file");
 }
-TEST(ZemaxErrors, NoLensSurfaces) { expectError("VERS 1\nSURF 0\n  CURV 0\nSURF 1\n  CURV 0\n", 5, "no lens surfaces"); }
-TEST(ZemaxErrors, TwoStops) { expectError(singlet("  STOP"), 13, "a second STOP; the first is on line 8"); }
-TEST(ZemaxErrors, NoStop) { expectError(replaced(singlet(), "  STOP\n", ""), 4, "no STOP"); }
+TEST(ZemaxErrors, NoLensSurfaces) { expectZemaxError("VERS 1\nSURF 0\n  CURV 0\nSURF 1\n  CURV 0\n", 5, "no lens surfaces"); }
+TEST(ZemaxErrors, TwoStops) { expectZemaxError(zmxSinglet("  STOP"), 13, "a second STOP; the first is on line 8"); }
+TEST(ZemaxErrors, NoStop) { expectZemaxError(replaced(zmxSinglet(), "  STOP\n", ""), 4, "no STOP"); }
 TEST(ZemaxErrors, StopOnTheObject) {
-    expectError(replaced(replaced(singlet(), "  STOP\n", ""), "SURF 0\n", "SURF 0\n  STOP\n"), 5,
+    expectZemaxError(replaced(replaced(zmxSinglet(), "  STOP\n", ""), "SURF 0\n", "SURF 0\n  STOP\n"), 5,
                 "the object surface (SURF 0) cannot be the stop");
 }
-TEST(ZemaxErrors, SurfacesOutOfOrder) { expectError(replaced(singlet(), "SURF 2", "SURF 5"), 14, "SURF 5 out of order: expected SURF 2"); }
-TEST(ZemaxErrors, NegativeThicknessWithoutMirror) { expectError(replaced(singlet(), "DISZ 40", "DISZ -40"), 16, "allowed only after a mirror"); }
-TEST(ZemaxErrors, NoSemiDiameter) { expectError(replaced(singlet(), "  DIAM 10\nSURF 3", "SURF 3"), 14, "SURF 2 has no positive semi-diameter"); }
-TEST(ZemaxErrors, ModelGlassWithoutAbbeNumber) { expectError(singlet("  GLAS ___BLANK 1 0 1.5"), 13, "a model glass needs nd >= 1 and Vd >= 0"); }
-TEST(ZemaxErrors, IndexBelowOne) { expectError(singlet("  GLAS F2 0 0 0.5 30"), 13, "nd 0.5 is below 1"); }
-TEST(ZemaxErrors, PrimaryWavelengthMissing) { expectError(singlet("  CONI 0", "WAVM 1 0.55 1\nPWAV 3"), 3, "PWAV 3 names no WAVM wavelength (1..1)"); }
+TEST(ZemaxErrors, SurfacesOutOfOrder) { expectZemaxError(replaced(zmxSinglet(), "SURF 2", "SURF 5"), 14, "SURF 5 out of order: expected SURF 2"); }
+TEST(ZemaxErrors, NegativeThicknessWithoutMirror) { expectZemaxError(replaced(zmxSinglet(), "DISZ 40", "DISZ -40"), 16, "allowed only after a mirror"); }
+TEST(ZemaxErrors, NoSemiDiameter) { expectZemaxError(replaced(zmxSinglet(), "  DIAM 10\nSURF 3", "SURF 3"), 14, "SURF 2 has no positive semi-diameter"); }
+TEST(ZemaxErrors, ModelGlassWithoutAbbeNumber) { expectZemaxError(zmxSinglet("  GLAS ___BLANK 1 0 1.5"), 13, "a model glass needs nd >= 1 and Vd >= 0"); }
+TEST(ZemaxErrors, IndexBelowOne) { expectZemaxError(zmxSinglet("  GLAS F2 0 0 0.5 30"), 13, "nd 0.5 is below 1"); }
+TEST(ZemaxErrors, PrimaryWavelengthMissing) { expectZemaxError(zmxSinglet("  CONI 0", "WAVM 1 0.55 1\nPWAV 3"), 3, "PWAV 3 names no WAVM wavelength (1..1)"); }
 // The wavelengths a file lists are ones lenslab traces (180-2500 nm, where glass data reach), the
 // primary above all: WAVM 1 0.1 used to give a lens at 100 nm (EFL 6.28 mm), and 1e300 um a
 // wavelength_nm of 1e+303.
 TEST(ZemaxErrors, WavelengthsOutsideTheTracedRange) {
-    expectError(singlet("  CONI 0", "WAVM 1 0.1 1"), 2, "WAVM: wavelength 100 nm lies outside 180-2500 nm");
-    expectError(singlet("  CONI 0", "WAVM 1 1e300 1"), 2, "wavelength 1e+303 nm lies outside");
-    expectError(singlet("  CONI 0", "WAVM 1 5e-99999999999999999999 1"), 2, "wavelength 0 nm lies outside");
-    expectError(singlet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 -0.5 1\nPWAV 1"), 3, "wavelength -500 nm");
-    expectError(singlet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 10.6 1\nPWAV 1"), 3, "wavelength 10600 nm");
-    EXPECT_NEAR(parseZemax(singlet("  CONI 0", "WAVM 1 0.18 1\nWAVM 2 2.5 1\nPWAV 2"), "ends.zmx").primaryWavelength, 2500, 1e-9);
+    expectZemaxError(zmxSinglet("  CONI 0", "WAVM 1 0.1 1"), 2, "WAVM: wavelength 100 nm lies outside 180-2500 nm");
+    expectZemaxError(zmxSinglet("  CONI 0", "WAVM 1 1e300 1"), 2, "wavelength 1e+303 nm lies outside");
+    expectZemaxError(zmxSinglet("  CONI 0", "WAVM 1 5e-99999999999999999999 1"), 2, "wavelength 0 nm lies outside");
+    expectZemaxError(zmxSinglet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 -0.5 1\nPWAV 1"), 3, "wavelength -500 nm");
+    expectZemaxError(zmxSinglet("  CONI 0", "WAVM 1 0.5876 1\nWAVM 2 10.6 1\nPWAV 1"), 3, "wavelength 10600 nm");
+    EXPECT_NEAR(parseZemax(zmxSinglet("  CONI 0", "WAVM 1 0.18 1\nWAVM 2 2.5 1\nPWAV 2"), "ends.zmx").primaryWavelength, 2500, 1e-9);
 }
 // A telecom lens at 1550 nm and a lithography lens at 248 nm read: N-BK7 at 1550 nm is Schott's
 // Sellmeier formula there (written out below, independent of the catalog), and the singlet's EFL is
@@ -455,7 +449,7 @@ TEST(ZemaxWavelengths, InfraredAndUltravioletLensesReadWarningWhereGlassDataEnd)
     const double l2 = 1.55 * 1.55;
     const double nBk7 = std::sqrt(1 + 1.03961212 * l2 / (l2 - 0.00600069867) + 0.231792344 * l2 / (l2 - 0.0200179144) +
                                   1.01046945 * l2 / (l2 - 103.560653));
-    const LensSystem ir = buildLensSystem(parseZemax(singlet("  CONI 0", "WAVM 1 1.55 1\nPWAV 1"), "ir.zmx"));
+    const LensSystem ir = buildLensSystem(parseZemax(zmxSinglet("  CONI 0", "WAVM 1 1.55 1\nPWAV 1"), "ir.zmx"));
     EXPECT_DOUBLE_EQ(ir.primaryWavelength, 1550);
     EXPECT_NEAR(ir.surfaces[0].mediumAfter.nd, 1.5168, 1e-12);
     EXPECT_NEAR(refractiveIndex(ir.surfaces[0].mediumAfter, 1550), nBk7, 1e-12);
@@ -464,22 +458,22 @@ TEST(ZemaxWavelengths, InfraredAndUltravioletLensesReadWarningWhereGlassDataEnd)
     EXPECT_NEAR(analyzeLens(ir, LensSettings{}).firstOrder.efl, 1 / power, 1e-9);
     EXPECT_TRUE(ir.warnings.empty()) << ir.warnings.front().message;
 
-    const LensSystem uv = buildLensSystem(parseZemax(singlet("  CONI 0", "WAVM 1 0.248 1\nPWAV 1"), "uv.zmx"));
+    const LensSystem uv = buildLensSystem(parseZemax(zmxSinglet("  CONI 0", "WAVM 1 0.248 1\nPWAV 1"), "uv.zmx"));
     ASSERT_EQ(uv.warnings.size(), 1u);
     EXPECT_EQ(uv.warnings[0].line, uv.surfaces[0].line);  // the glass's surface
     EXPECT_EQ(uv.warnings[0].message.rfind("N-BK7 (SCHOTT)'s data cover 300-2500 nm: its index is extrapolated to 248 nm (n 1.5", 0), 0u)
         << uv.warnings[0].message;
 
     const LensSystem model = buildLensSystem(parseZemax(
-        replaced(singlet("  CONI 0", "WAVM 1 1.55 1\nWAVM 2 0.5876 1\nPWAV 2"), "GLAS N-BK7 0 0", "GLAS ___BLANK 1 0"), "model.zmx"));
+        replaced(zmxSinglet("  CONI 0", "WAVM 1 1.55 1\nWAVM 2 0.5876 1\nPWAV 2"), "GLAS N-BK7 0 0", "GLAS ___BLANK 1 0"), "model.zmx"));
     ASSERT_EQ(model.warnings.size(), 1u);
     EXPECT_EQ(model.warnings[0].message.rfind("model glass 1.5168/64.17, fitted to the visible, covers 360-830 nm: its index "
                                               "is extrapolated to 1550 nm (n 1.5", 0), 0u)
         << model.warnings[0].message;
 }
 
-TEST(ZemaxErrors, AsphereTermOutOfRange) { expectError(singlet("  TYPE EVENASPH\n  PARM 9 1"), 14, "PARM 9 is not one"); }
-TEST(ZemaxErrors, SurfaceLineBeforeAnySurface) { expectError(singlet("  CONI 0", "CURV 0.5"), 2, "CURV before the first SURF"); }
+TEST(ZemaxErrors, AsphereTermOutOfRange) { expectZemaxError(zmxSinglet("  TYPE EVENASPH\n  PARM 9 1"), 14, "PARM 9 is not one"); }
+TEST(ZemaxErrors, SurfaceLineBeforeAnySurface) { expectZemaxError(zmxSinglet("  CONI 0", "CURV 0.5"), 2, "CURV before the first SURF"); }
 
 TEST(ZemaxErrors, TooManySurfaces) {
     std::string text = "MODE SEQ\nSURF 0\n  CURV 0\n  DISZ INFINITY\n";
@@ -492,19 +486,19 @@ TEST(ZemaxErrors, TooManySurfaces) {
     EXPECT_EQ(parseZemax(text + "SURF 257\n  CURV 0\n", "max.zmx").rows.size(), std::size_t(kMaxLensSurfaces));
     // SURF 258 is the first that makes 257 lens surfaces (257 being no longer the image).
     addLensSurface(kMaxLensSurfaces + 1);
-    expectError(text + "SURF 258\n", lines + 1, "too many surfaces: a lens may have at most 256 surfaces");
+    expectZemaxError(text + "SURF 258\n", lines + 1, "too many surfaces: a lens may have at most 256 surfaces");
 }
 
 TEST(ZemaxErrors, BrokenUtf16) {
-    const std::string utf16 = toUtf16(singlet(), true);
-    expectError(utf16 + "x", 21, "odd number of bytes");  // the file's 20 lines end with a newline
+    const std::string utf16 = toUtf16(zmxSinglet(), true);
+    expectZemaxError(utf16 + "x", 21, "odd number of bytes");  // the file's 20 lines end with a newline
     // A high surrogate followed by a plain character on line 3.
     std::string broken = utf16;
-    const std::size_t unit = 2 + 2 * singlet().find("UNIT");
+    const std::size_t unit = 2 + 2 * zmxSinglet().find("UNIT");
     broken[unit] = '\x00';
     broken[unit + 1] = '\xd8';
-    expectError(broken, 3, "a high surrogate without a low one");
+    expectZemaxError(broken, 3, "a high surrogate without a low one");
     broken[unit + 1] = '\xdc';
-    expectError(broken, 3, "a low surrogate without a high one");
-    expectError(std::string("\xff\xfe\x00\xd8", 4), 1, "a high surrogate without a low one");  // at the very end
+    expectZemaxError(broken, 3, "a low surrogate without a high one");
+    expectZemaxError(std::string("\xff\xfe\x00\xd8", 4), 1, "a high surrogate without a low one");  // at the very end
 }

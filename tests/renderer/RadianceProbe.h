@@ -2,6 +2,8 @@
 // Helpers for light and integrator tests: a parsed scene with its geometry and an integrator, to
 // measure the radiance along chosen rays; image files written through OpenImageIO; lights made
 // straight from parameters.
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,12 +13,27 @@
 #include "scene/SceneDescription.h"
 #include "geometry/SceneGeometry.h"
 #include "SceneParams.h"
+#include "TempDir.h"
 
 namespace lenslab::test {
 
 // Camera and film lines every test scene starts with (the probes trace their own rays).
 inline const char* kProbeHeader = "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
                                   "Film \"image\" \"integer xresolution\" 8 \"integer yresolution\" 8\n";
+
+// A uniform white sky, radiance 1.
+inline const char* kWhiteSky = "LightSource \"infinite\" \"rgb L\" [1 1 1]\n";
+
+// A scene file in `dir` that the probes trace into: `options` (before the camera), the header, and
+// `world` between WorldBegin and WorldEnd.
+inline std::string probeScene(const TempDir& dir, const std::string& world, const std::string& options = "") {
+    return dir.write("s.pbrt", options + kProbeHeader + "WorldBegin\n" + world + "WorldEnd\n");
+}
+
+// Each channel of `got` within `tolerance` of `expected`, as a ratio.
+inline void expectRelative(Vec3f got, Vec3f expected, double tolerance, const std::string& what) {
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c] / expected[c], 1.0, tolerance) << what << " channel " << c;
+}
 
 class RadianceProbe {
 public:

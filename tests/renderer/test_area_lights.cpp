@@ -44,7 +44,7 @@ double irradianceFromHits(const SceneGeometry& g, Vec3f p, Vec3f n) {
     return e / kSamples;
 }
 
-struct Case {
+struct AreaLightCase {
     std::string world;  // an emitter of radiance 1 placed for a point at the origin facing +z
     double closedForm;  // the irradiance there, or 0 where there is none to compare with
 };
@@ -52,7 +52,7 @@ struct Case {
 TEST(AreaLights, EveryShapeGivesTheIrradianceItShould) {
     test::TempDir dir;
     const std::string light = "AreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n";
-    const Case cases[] = {
+    const AreaLightCase cases[] = {
         // A sphere of radius 0.5 at distance 2 on the axis: pi sin^2(alpha).
         {light + "Translate 0 0 2\nShape \"sphere\" \"float radius\" 0.5", M_PI * 0.0625},
         // A disk of radius 1 at height 2 facing down: pi r^2 / (r^2 + h^2).
@@ -72,7 +72,7 @@ TEST(AreaLights, EveryShapeGivesTheIrradianceItShould) {
                  "\"float phimax\" 270", 0},
         {light + "\"bool twosided\" true\nTranslate 0 0 2\nShape \"disk\" \"float innerradius\" 0.4 \"float phimax\" 100", 0},
     };
-    for (const Case& c : cases) {
+    for (const AreaLightCase& c : cases) {
         const auto g = test::geometryOf(dir, c.world);
         ASSERT_FALSE(g->lights().empty());
         const double byLight = irradianceFromLightSamples(*g, {0, 0, 0}, {0, 0, 1});

@@ -15,7 +15,7 @@
 namespace lenslab {
 namespace {
 
-struct Case {
+struct BsdfCase {
     const char* name;
     std::string directive;
     bool reciprocal;  // reflection only (transmission has its own relation, tested separately)
@@ -24,7 +24,7 @@ struct Case {
 
 const char* kRough = " \"bool remaproughness\" \"false\"";
 
-std::vector<Case> cases() {
+std::vector<BsdfCase> cases() {
     const std::string r = kRough;
     return {
         {"matte", "Material \"matte\" \"rgb Kd\" [1 1 1]", true},
@@ -59,7 +59,7 @@ const float kThetas[] = {0, 30, 60, 80, 89, 150, 175};
 
 TEST(Bsdfs, WhiteFurnaceNoMaterialCreatesEnergy) {
     test::TempDir dir;
-    for (const Case& c : cases()) {
+    for (const BsdfCase& c : cases()) {
         const auto m = test::parseMaterial(dir, c.directive);
         for (float theta : kThetas) {
             const auto a = test::sampledAlbedo(*m, test::direction(theta, 20), 30000, 1, c.etaBelow);
@@ -84,7 +84,7 @@ TEST(Bsdfs, LambertAlbedoIsKdAtEveryAngle) {
 // factor in sample(), pdf() or evaluate() sets them apart.
 TEST(Bsdfs, SampleWeightsAgreeWithEvaluation) {
     test::TempDir dir;
-    for (const Case& c : cases()) {
+    for (const BsdfCase& c : cases()) {
         const auto m = test::parseMaterial(dir, c.directive);
         if (m->isSpecular()) continue;
         for (float theta : {10.0f, 50.0f, 75.0f, 140.0f}) {
@@ -114,7 +114,7 @@ TEST(Bsdfs, SampleWeightsAgreeWithEvaluation) {
 // the mixture's pdf must still count it, as sampling drew it.
 TEST(Bsdfs, SampleWeightsAreTheMixturesEvaluationAtTheSample) {
     test::TempDir dir;
-    std::vector<Case> all = cases();
+    std::vector<BsdfCase> all = cases();
     all.push_back({"hair", "Material \"hair\" \"float eumelanin\" 1.3 \"float beta_m\" 0.25", false});
     // Float rounding: the leaning frame's own turns, amplified at a sharp lobe's peak (pdf ~300), reach
     // 3e-4 of the pdf; a lobe left out of the mixture is 1% or more of it.
@@ -126,7 +126,7 @@ TEST(Bsdfs, SampleWeightsAreTheMixturesEvaluationAtTheSample) {
     SurfaceHit leaning = test::flatHit();
     leaning.ns = {0, std::sin(25 * float(M_PI) / 180), std::cos(25 * float(M_PI) / 180)};
     Pcg32 rng(11);
-    for (const Case& c : all) {
+    for (const BsdfCase& c : all) {
         for (const bool lean : {false, true}) {
             if (lean && std::string(c.name) == "hair") continue;  // a fibre has no shading normal
             const SurfaceHit& h = lean ? leaning : flat;
@@ -154,7 +154,7 @@ TEST(Bsdfs, SampleWeightsAreTheMixturesEvaluationAtTheSample) {
 
 TEST(Bsdfs, SampledDirectionsFollowThePdf) {
     test::TempDir dir;
-    for (const Case& c : cases()) {
+    for (const BsdfCase& c : cases()) {
         const auto m = test::parseMaterial(dir, c.directive);
         if (m->isSpecular()) continue;
         for (float theta : {30.0f, 75.0f, 160.0f}) {
@@ -180,7 +180,7 @@ TEST(Bsdfs, ReflectionIsReciprocal) {
     test::TempDir dir;
     const SurfaceHit h = test::flatHit();
     Pcg32 rng(7);
-    for (const Case& c : cases()) {
+    for (const BsdfCase& c : cases()) {
         if (!c.reciprocal) continue;
         const auto m = test::parseMaterial(dir, c.directive);
         for (int i = 0; i < 200; ++i) {

@@ -9,13 +9,13 @@
 
 #include "RadianceProbe.h"
 #include "ShapeTestScenes.h"
+#include "prescription/Pi.h"
 
 namespace lenslab {
 namespace {
 
 using test::trace;
 
-constexpr double kPi = M_PI;
 constexpr double kRamp = 0.5;                   // displacement per unit u; u runs 1 per metre along x
 const double kTilt = std::atan(kRamp);          // 26.57 degrees, the normal leaning toward -x
 constexpr double kLightAngle = 30 * kPi / 180;  // the distant light comes from +x of the zenith

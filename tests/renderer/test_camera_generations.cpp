@@ -19,7 +19,7 @@
 namespace lenslab {
 namespace {
 
-std::string num(double v) {
+std::string exactText(double v) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.17g", v);
     return buffer;
@@ -73,17 +73,17 @@ double metadataNumber(const RenderOutput& out, const std::string& key) { return 
 TEST(CameraGenerations, CourseMillimetresAndLensfileMetresDrawTheSamePicture) {
     test::TempDir dir;
     const double stop = 8, focusFromVertex = 1500;  // mm
-    const std::string courseParams = "\"float aperture_diameter\" " + num(stop) + " \"float focaldistance\" " +
-                                     num(focusFromVertex) + " \"float filmdiag\" 30\nFilm \"image\"\n";
+    const std::string courseParams = "\"float aperture_diameter\" " + exactText(stop) + " \"float focaldistance\" " +
+                                     exactText(focusFromVertex) + " \"float filmdiag\" 30\nFilm \"image\"\n";
     const std::string course = dir.write("course.pbrt", test::courseCamera("dgauss.50mm.dat", courseParams) + kWorld);
     const RenderOutput c = test::render(course, 48, 48, 16);
     EXPECT_EQ(c.metadata.at("cameraSpaceUnitMm"), "1");
     // pbrt-v3 measures the focus from the film, in metres: the same plane of focus. Its camera space
     // starts at the film, so the camera moves back by the film's depth to stand where the course's did.
     const double filmZ = metadataNumber(c, "filmZMm");
-    const std::string pbrt = dir.write("pbrt.pbrt", "Translate 0 0 " + num(-filmZ / 1000) + "\n" +
-        lensfileCamera("dgauss.50mm.dat", "\"float aperturediameter\" " + num(stop) + " \"float focusdistance\" " +
-                                              num((focusFromVertex - filmZ) / 1000) +
+    const std::string pbrt = dir.write("pbrt.pbrt", "Translate 0 0 " + exactText(-filmZ / 1000) + "\n" +
+        lensfileCamera("dgauss.50mm.dat", "\"float aperturediameter\" " + exactText(stop) + " \"float focusdistance\" " +
+                                              exactText((focusFromVertex - filmZ) / 1000) +
                                               " \"bool simpleweighting\" false\nFilm \"image\" \"float diagonal\" 30\n") +
         kWorld);
     const RenderOutput p = test::render(pbrt, 48, 48, 16);
@@ -92,9 +92,9 @@ TEST(CameraGenerations, CourseMillimetresAndLensfileMetresDrawTheSamePicture) {
     EXPECT_EQ(c.metadata.at("cameraSpaceOrigin"), "front vertex");
     EXPECT_NEAR(metadataNumber(p, "filmZMm"), filmZ, 1e-3);
     const Comparison d = compare(c.image, p.image);
-    RecordProperty("mean_course", num(d.meanA));
-    RecordProperty("mean_lensfile", num(d.meanB));
-    RecordProperty("max_pixel_difference", num(d.maxAbsDifference));
+    RecordProperty("mean_course", exactText(d.meanA));
+    RecordProperty("mean_lensfile", exactText(d.meanB));
+    RecordProperty("max_pixel_difference", exactText(d.maxAbsDifference));
     EXPECT_GT(d.meanA, 0.01);
     EXPECT_NEAR(d.meanA / d.meanB, 1.0, 1e-3);
     EXPECT_LT(d.meanAbsDifference, 1e-3 * d.meanA);
@@ -174,7 +174,7 @@ TEST(CameraGenerations, FilmDistanceUnderALensOverrideFocusesTheOtherLensWhereTh
     const LensSystem own = loadLensSystem(test::lensPath("dgauss.50mm.dat"));
     const LensAnalysis a = analyzeLens(own, 4, 3000);
     const std::string scene = dir.write("s.pbrt",
-        test::courseCamera("dgauss.50mm.dat", "\"float filmdistance\" " + num(own.rearZ() - a.focus.imageZThick) +
+        test::courseCamera("dgauss.50mm.dat", "\"float filmdistance\" " + exactText(own.rearZ() - a.focus.imageZThick) +
                                                   " \"float aperture_diameter\" 10\n") + kWorld);
     EXPECT_EQ(test::render(scene, 8, 8, 1).metadata.at("filmPlacement").rfind("filmdistance ", 0), 0u);
     RenderSettings s;
@@ -192,9 +192,9 @@ TEST(CameraGenerations, ApertureDiameterIsTheStopOpeningOfTheSameFstop) {
     };
     const std::string common = "\"float focaldistance\" 3000 ";
     EXPECT_NEAR(fstopOf(test::courseCamera("dgauss.dat", common + "\"float fstop\" 5.6")), 5.6, 1e-9);
-    EXPECT_NEAR(fstopOf(test::courseCamera("dgauss.dat", common + "\"float aperture_diameter\" " + num(a.stopDiameter))),
+    EXPECT_NEAR(fstopOf(test::courseCamera("dgauss.dat", common + "\"float aperture_diameter\" " + exactText(a.stopDiameter))),
                 5.6, 1e-4);
-    EXPECT_NEAR(fstopOf(lensfileCamera("dgauss.dat", common + "\"float aperturediameter\" " + num(a.stopDiameter))), 5.6,
+    EXPECT_NEAR(fstopOf(lensfileCamera("dgauss.dat", common + "\"float aperturediameter\" " + exactText(a.stopDiameter))), 5.6,
                 1e-4);
 }
 
@@ -412,9 +412,9 @@ Bokeh bokeh(const std::string& aperture, const std::string& mode = "exact") {
 
 TEST(ApertureShapes, ASquareApertureMakesSquareBokehOfTheSameBrightness) {
     const Bokeh circle = bokeh("circular"), square = bokeh("square");
-    RecordProperty("circle_fourfold", num(circle.fourfold));
-    RecordProperty("square_fourfold", num(square.fourfold));
-    RecordProperty("brightness_ratio", num(square.total / circle.total));
+    RecordProperty("circle_fourfold", exactText(circle.fourfold));
+    RecordProperty("square_fourfold", exactText(square.fourfold));
+    RecordProperty("brightness_ratio", exactText(square.total / circle.total));
     EXPECT_NEAR(circle.fourfold, 0, 0.05);
     EXPECT_LT(square.fourfold, -0.15);  // mass toward the corners (the ball's own image rounds them)
     EXPECT_NEAR(square.twofold, 0, 0.05);

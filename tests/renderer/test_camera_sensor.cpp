@@ -293,7 +293,7 @@ TEST(CameraSensor, KeysAreCheckedByName) {
 }
 
 // A uniform sky seen through dgauss.50mm at f/8 focused far away.
-std::string skyScene(const std::string& camera) {
+std::string sensorSkyScene(const std::string& camera) {
     return camera + "\nFilm \"image\"\nPixelFilter \"box\"\nWorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\nWorldEnd\n";
 }
 
@@ -304,7 +304,7 @@ TEST(CameraSensor, ThroughALensTheCentreCollectsTheProjectedSolidAngleThatPasses
     // E t. The f-number alone (pi / (4 N^2), the marginal
     // ray's from infinity) agrees to 0.5%.
     test::TempDir dir;
-    const std::string scene = dir.write("sky.pbrt", skyScene(test::courseCamera("dgauss.50mm.dat",
+    const std::string scene = dir.write("sky.pbrt", sensorSkyScene(test::courseCamera("dgauss.50mm.dat",
         "\"float fstop\" 8 \"float focaldistance\" 1e6 \"float filmdiagonal\" 5 \"float shutteropen\" 0 \"float shutterclose\" 0.5")));
     RenderSettings s;
     s.sensor = sensorSpecFromPairs(parseSensorPairs("iso=100,exposure=0.0333333333333,nits=1000,read=0,prnu=0,dark=0,dsnu=0"));
@@ -329,7 +329,7 @@ TEST(CameraSensor, ThroughALensTheCentreCollectsTheProjectedSolidAngleThatPasses
 // The sky through dgauss.50mm at f/4 on 40 x 30 pixels.
 RenderOutput skyAtF4(const RenderSettings& s, int spp) {
     test::TempDir dir;
-    return test::render(dir.write("sky.pbrt", skyScene(test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4"))), 40, 30, spp, s);
+    return test::render(dir.write("sky.pbrt", sensorSkyScene(test::courseCamera("dgauss.50mm.dat", "\"float fstop\" 4"))), 40, 30, spp, s);
 }
 
 // A sensor of 700 um pixels (35 mm over 50 px), exposed for 1e-4 s (a metered exposure would meter
@@ -361,7 +361,7 @@ TEST(CameraSensor, NoiseBelongsToTheFullFramesPixelsAndAPitchSetsTheFilm) {
 
 TEST(CameraSensor, APinholeHasNoExposureToRead) {
     test::TempDir dir;
-    const std::string scene = dir.write("p.pbrt", skyScene("Camera \"perspective\""));
+    const std::string scene = dir.write("p.pbrt", sensorSkyScene("Camera \"perspective\""));
     RenderSettings s;
     s.sensor = SensorSpec{};
     s.scenePath = scene;

@@ -9,10 +9,10 @@
 namespace lenslab {
 namespace {
 
-const Vec3f kSigmaA{0.2f, 0.5f, 1.0f}, kSigmaS{0.8f, 0.8f, 0.8f};
+const Vec3f kCloudSigmaA{0.2f, 0.5f, 1.0f}, kCloudSigmaS{0.8f, 0.8f, 0.8f};
 
 CloudMedium unitCloud(CloudShape shape = {}) {
-    return CloudMedium(shape, kSigmaA, kSigmaS, {0, 0, 0}, {1, 1, 1}, Transform{}, HenyeyGreenstein(0));
+    return CloudMedium(shape, kCloudSigmaA, kCloudSigmaS, {0, 0, 0}, {1, 1, 1}, Transform{}, HenyeyGreenstein(0));
 }
 
 TEST(CloudMedium, DensityStaysWithinTheMajorantsBound) {
@@ -51,7 +51,7 @@ TEST(CloudMedium, RatioTrackingMatchesQuadrature) {
         Vec3f sum;
         for (int i = 0; i < kSamples; ++i) sum += cloud.transmittance(o, d, 2, rng);
         for (int c = 0; c < 3; ++c) {
-            const double expected = std::exp(-(kSigmaA[c] + kSigmaS[c]) * optical);
+            const double expected = std::exp(-(kCloudSigmaA[c] + kCloudSigmaS[c]) * optical);
             EXPECT_NEAR(sum[c] / kSamples / expected, 1.0, 0.02) << "y " << y << " channel " << c;
         }
     }

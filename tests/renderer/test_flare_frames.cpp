@@ -32,7 +32,7 @@ std::string pointLight(double x, double y, double z, double intensity) {
            "] \"rgb I\" [" + std::to_string(intensity) + " " + std::to_string(intensity) + " " + std::to_string(intensity) + "]\n";
 }
 
-RenderOutput renderWith(const std::string& scene, const std::string& ghosts, const std::string& model = "exact") {
+RenderOutput renderFlare(const std::string& scene, const std::string& ghosts, const std::string& model = "exact") {
     RenderSettings s;
     s.camera.ghosts = ghosts;
     s.camera.ghostModel = model;
@@ -51,7 +51,7 @@ TEST(FlareFrames, OffAndAutoWithoutABrightEmitterChangeNoBit) {
     const std::string scene = flareScene(dir, pointLight(1, 0.5, 20, 1e-3));
     const RenderOutput plain = test::render(scene, 72, 48, 2);
     for (const char* ghosts : {"off", "auto"}) {
-        const RenderOutput out = renderWith(scene, ghosts);
+        const RenderOutput out = renderFlare(scene, ghosts);
         EXPECT_EQ(out.image.rgb, plain.image.rgb) << ghosts;
         EXPECT_EQ(out.stats.flarePaths, 0) << ghosts;
         EXPECT_EQ(out.metadata.count("lensFlare"), 0u) << ghosts;
@@ -60,7 +60,7 @@ TEST(FlareFrames, OffAndAutoWithoutABrightEmitterChangeNoBit) {
 
 TEST(FlareFrames, AutoModelsBrightEmittersInOrNearTheFrameOnly) {
     test::TempDir dir;
-    const auto sources = [&](const std::string& lights) { return renderWith(flareScene(dir, lights), "auto").stats.flareSources; };
+    const auto sources = [&](const std::string& lights) { return renderFlare(flareScene(dir, lights), "auto").stats.flareSources; };
     EXPECT_EQ(sources(pointLight(1, 0.5, 20, 5000)), 1);
     EXPECT_EQ(sources("LightSource \"distant\" \"point from\" [0.1 0.05 1] \"point to\" [0 0 0] \"rgb L\" [3 3 3]"), 1);
     EXPECT_EQ(sources("AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [20000 20000 20000]\nTranslate 1 0.5 30\n"
@@ -73,7 +73,7 @@ TEST(FlareFrames, AutoModelsBrightEmittersInOrNearTheFrameOnly) {
               0);  // hidden behind a ball
     // The same bright light, asked for all ghosts or the five brightest.
     const std::string scene = flareScene(dir, pointLight(1, 0.5, 20, 5000));
-    const RenderOutput all = renderWith(scene, "all"), five = renderWith(scene, "5"), off = renderWith(scene, "off");
+    const RenderOutput all = renderFlare(scene, "all"), five = renderFlare(scene, "5"), off = renderFlare(scene, "off");
     EXPECT_EQ(all.stats.flarePaths, 45);
     EXPECT_EQ(five.stats.flarePaths, 5);
     EXPECT_GT(total(all.image), total(five.image));
@@ -88,7 +88,7 @@ TEST(FlareFrames, AutoKeepsTheBrightestWhenMoreQualifyThanItModels) {
     test::TempDir dir;
     const auto flare = [&](const std::string& lights) {
         const std::string scene = flareScene(dir, lights);
-        const RenderOutput on = renderWith(scene, "auto"), off = renderWith(scene, "off");
+        const RenderOutput on = renderFlare(scene, "auto"), off = renderFlare(scene, "off");
         EXPECT_EQ(on.stats.flareSources, std::min(8, int(std::count(lights.begin(), lights.end(), '\n'))));
         return total(on.image) - total(off.image);
     };
@@ -109,7 +109,7 @@ TEST(FlareFrames, AutoModelsABrightTexelOfAnEnvironmentMap) {
     for (int c = 0; c < 3; ++c) rgb[(64 * 256 + 64) * 3 + c] = 1e5f;
     test::writeImage(dir.path() + "/sun.exr", 256, 128, rgb);
     const std::string scene = flareScene(dir, "AttributeBegin\nRotate 90 1 0 0\nLightSource \"infinite\" \"string mapname\" \"sun.exr\"\nAttributeEnd\n");
-    const RenderOutput out = renderWith(scene, "auto");
+    const RenderOutput out = renderFlare(scene, "auto");
     EXPECT_EQ(out.stats.flareSources, 1);
     EXPECT_NE(out.metadata.at("lensFlare").find("environment map"), std::string::npos) << out.metadata.at("lensFlare");
 }
@@ -118,7 +118,7 @@ TEST(FlareFrames, AutoModelsABrightTexelOfAnEnvironmentMap) {
 TEST(FlareFrames, CoatedGhostsTakeTheCoatingsColour) {
     test::TempDir dir;
     const std::string scene = flareScene(dir, "LightSource \"distant\" \"point from\" [0.1 0.05 1] \"point to\" [0 0 0] \"rgb L\" [3 3 3]");
-    const Image off = renderWith(scene, "off").image, on = renderWith(scene, "all").image;
+    const Image off = renderFlare(scene, "off").image, on = renderFlare(scene, "all").image;
     double sum[3] = {0, 0, 0};
     for (std::size_t i = 0; i < on.rgb.size(); ++i) sum[i % 3] += on.rgb[i] - off.rgb[i];
     EXPECT_GT(sum[0], 1.3 * sum[1]);
@@ -130,9 +130,9 @@ TEST(FlareFrames, CoatedGhostsTakeTheCoatingsColour) {
 TEST(FlareFrames, ParaxialModelApproachesTheExactNearTheAxis) {
     test::TempDir dir;
     const std::string scene = flareScene(dir, "LightSource \"distant\" \"point from\" [0.02 0.01 1] \"point to\" [0 0 0] \"rgb L\" [3 3 3]");
-    const double off = total(renderWith(scene, "off").image);
-    const double exact = total(renderWith(scene, "all", "exact").image) - off;
-    const double paraxial = total(renderWith(scene, "all", "paraxial").image) - off;
+    const double off = total(renderFlare(scene, "off").image);
+    const double exact = total(renderFlare(scene, "all", "exact").image) - off;
+    const double paraxial = total(renderFlare(scene, "all", "paraxial").image) - off;
     EXPECT_GT(exact, 0);
     EXPECT_NEAR(paraxial / exact, 1, 0.1);
 }

@@ -12,7 +12,7 @@
 namespace lenslab {
 namespace {
 
-const Vec3f kSigmaA{0.4f, 0.7f, 1.0f}, kSigmaS{2.0f, 1.0f, 0.5f};
+const Vec3f kGridSigmaA{0.4f, 0.7f, 1.0f}, kGridSigmaS{2.0f, 1.0f, 0.5f};
 const float kSigmaT = 2.4f;  // the largest channel of sigma_a + sigma_s
 
 // 9 x 6 x 80 samples (the last axis finer than the majorant grid's 64 cells, so cells and samples
@@ -26,7 +26,7 @@ DensityGrid twoBlocks() {
     return g;
 }
 
-GridMedium mediumOf(const DensityGrid& g) { return GridMedium(g, kSigmaA, kSigmaS, Transform{}, HenyeyGreenstein(0)); }
+GridMedium mediumOf(const DensityGrid& g) { return GridMedium(g, kGridSigmaA, kGridSigmaS, Transform{}, HenyeyGreenstein(0)); }
 
 TEST(GridMedium, MajorantsBoundTheDensityEverywhere) {
     const DensityGrid g = twoBlocks();

@@ -9,11 +9,10 @@
 
 #include "BsdfTesting.h"
 #include "ShapeTestScenes.h"
+#include "core/Pi.h"
 
 namespace lenslab {
 namespace {
-
-constexpr float kPi = 3.14159265f;
 
 // A fibre along x lying in the plane z = 0, hit at offset h across its width (v = (1 + h) / 2).
 SurfaceHit fibreHit(float h) {
@@ -24,7 +23,7 @@ SurfaceHit fibreHit(float h) {
 
 // theta: the angle from the plane normal to the fibre (0 = across it), phi around the fibre.
 Vec3f aroundFibre(float thetaDeg, float phiDeg) {
-    const float t = thetaDeg * kPi / 180, p = phiDeg * kPi / 180;
+    const float t = thetaDeg * kPif / 180, p = phiDeg * kPif / 180;
     return {std::sin(t), std::cos(t) * std::cos(p), std::cos(t) * std::sin(p)};
 }
 
@@ -37,7 +36,7 @@ double sphereIntegral(G g, int n = 400) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
             const float x = -1 + 2 * (float(i) + rng.uniform()) / float(n);
-            const float phi = 2 * kPi * (float(j) + rng.uniform()) / float(n);
+            const float phi = 2 * kPif * (float(j) + rng.uniform()) / float(n);
             const float r = std::sqrt(std::max(0.0f, 1 - x * x));
             sum += g(Vec3f{x, r * std::cos(phi), r * std::sin(phi)});
         }
@@ -95,7 +94,7 @@ TEST(Hair, TheRLobeIsTiltedByMinusTwoAlpha) {
     const float h = 0.5f;
     const SurfaceHit hit = fibreHit(h);
     const Vec3f wo = aroundFibre(20, 90);
-    const float rAzimuth = 90 - 2 * std::asin(h) * 180 / kPi;  // -2 gamma_o from the viewer's
+    const float rAzimuth = 90 - 2 * std::asin(h) * 180 / kPif;  // -2 gamma_o from the viewer's
     float brightest = -90, peak = 0;
     for (float theta = -80; theta <= 80; theta += 0.05f) {
         const float value = m->evaluate(hit, wo, aroundFibre(theta, rAzimuth)).y;
@@ -125,8 +124,8 @@ TEST(Hair, SamplingDrawsTheDensityPdfReportsAndWeightsMatchEvaluation) {
                 constexpr int kBinsX = 10, kBinsPhi = 8, kSamples = 200000;
                 const auto binOf = [&](Vec3f w) {
                     const int bx = std::clamp(int((w.x + 1) / 2 * kBinsX), 0, kBinsX - 1);
-                    const float phi = std::atan2(w.z, w.y) + kPi;
-                    return bx * kBinsPhi + std::clamp(int(phi / (2 * kPi) * kBinsPhi), 0, kBinsPhi - 1);
+                    const float phi = std::atan2(w.z, w.y) + kPif;
+                    return bx * kBinsPhi + std::clamp(int(phi / (2 * kPif) * kBinsPhi), 0, kBinsPhi - 1);
                 };
                 std::vector<double> expected(kBinsX * kBinsPhi, 0), drawn(kBinsX * kBinsPhi, 0);
                 constexpr int kStrata = 400;

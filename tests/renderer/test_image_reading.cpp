@@ -22,7 +22,7 @@ namespace {
 
 // Writes channels `names` (each value: 100 * channel + pixel index, then / 8: exact in half) over
 // the data window x0..x0+w-1, y0..y0+h-1.
-void writeExr(const std::string& path, const std::vector<std::string>& names, Imf::PixelType type, int x0, int y0, int w, int h) {
+void writeExrChannels(const std::string& path, const std::vector<std::string>& names, Imf::PixelType type, int x0, int y0, int w, int h) {
     Imf::Header header(Imath::Box2i({0, 0}, {x0 + w + 3, y0 + h + 3}), Imath::Box2i({x0, y0}, {x0 + w - 1, y0 + h - 1}));
     for (const std::string& n : names) header.channels().insert(n, Imf::Channel(type));
     std::vector<std::vector<float>> values(names.size());
@@ -44,7 +44,7 @@ void writeExr(const std::string& path, const std::vector<std::string>& names, Im
 TEST(ExrReading, ColourAndAlphaComeInRgbaOrderOverTheDataWindow) {
     test::TempDir dir;
     const std::string path = dir.path() + "/rgba.exr";
-    writeExr(path, {"B", "A", "R", "G"}, Imf::HALF, 5, 7, 4, 3);
+    writeExrChannels(path, {"B", "A", "R", "G"}, Imf::HALF, 5, 7, 4, 3);
     ASSERT_TRUE(isExrFile(path));
     const std::optional<DecodedImage> image = readExrFile(path);
     ASSERT_TRUE(image);
@@ -61,7 +61,7 @@ TEST(ExrReading, ColourAndAlphaComeInRgbaOrderOverTheDataWindow) {
 TEST(ExrReading, LuminanceIsOneChannel) {
     test::TempDir dir;
     const std::string path = dir.path() + "/y.exr";
-    writeExr(path, {"Y"}, Imf::FLOAT, 0, 0, 3, 2);
+    writeExrChannels(path, {"Y"}, Imf::FLOAT, 0, 0, 3, 2);
     const DecodedImage image = readImageFile(path);
     ASSERT_EQ(image.channels, 1);
     ASSERT_EQ(image.pixels.size(), 6u);
@@ -71,7 +71,7 @@ TEST(ExrReading, LuminanceIsOneChannel) {
 TEST(ExrReading, OtherChannelsGoToTheGeneralReader) {
     test::TempDir dir;
     const std::string path = dir.path() + "/z.exr";
-    writeExr(path, {"Z"}, Imf::FLOAT, 0, 0, 2, 2);
+    writeExrChannels(path, {"Z"}, Imf::FLOAT, 0, 0, 2, 2);
     EXPECT_FALSE(readExrFile(path));
     const DecodedImage image = readImageFile(path);  // OpenImageIO reads the depth channel
     ASSERT_EQ(image.channels, 1);
@@ -81,7 +81,7 @@ TEST(ExrReading, OtherChannelsGoToTheGeneralReader) {
 TEST(ExrReading, DamagedFilesAreErrors) {
     test::TempDir dir;
     const std::string path = dir.path() + "/rgb.exr";
-    writeExr(path, {"R", "G", "B"}, Imf::HALF, 0, 0, 64, 64);
+    writeExrChannels(path, {"R", "G", "B"}, Imf::HALF, 0, 0, 64, 64);
     std::ifstream in(path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::ofstream(dir.path() + "/cut.exr", std::ios::binary) << bytes.substr(0, bytes.size() / 2);

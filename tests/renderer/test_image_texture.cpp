@@ -27,7 +27,7 @@ void writeImage(const std::string& path, int w, int h, OIIO::TypeDesc format, co
 // centres (s, t) = (0.25, 0.25) is C, (0.75, 0.25) D, (0.25, 0.75) A, (0.75, 0.75) B.
 const Vec3f A{0.1f, 0.2f, 0.3f}, B{1.5f, 2.5f, 3.5f}, C{0.123456789f, 7.25f, -0.5f}, D{0.0625f, 1e-3f, 100};
 
-std::string writeExr(const TempDir& dir) {
+std::string writeTextureExr(const TempDir& dir) {
     const std::string path = dir.path() + "/quad.exr";
     writeImage(path, 2, 2, OIIO::TypeDesc::FLOAT, {A.x, A.y, A.z, B.x, B.y, B.z, C.x, C.y, C.z, D.x, D.y, D.z});
     return path;
@@ -41,7 +41,7 @@ std::shared_ptr<const Texture> image(const std::string& path, std::vector<Param>
 
 TEST(ImageTexture, ExrTexelsComeBackExactlyWithTheBottomRowAtTZero) {
     TempDir dir;
-    auto t = image(writeExr(dir));
+    auto t = image(writeTextureExr(dir));
     expectRgb(t->evaluate(hitAt(0.25f, 0.25f)), C, 0);
     expectRgb(t->evaluate(hitAt(0.75f, 0.25f)), D, 0);
     expectRgb(t->evaluate(hitAt(0.25f, 0.75f)), A, 0);
@@ -102,7 +102,7 @@ TEST(ImageTexture, ReadsTheCommonFormats) {
 
 TEST(ImageTexture, WrapModesOutsideTheUnitSquare) {
     TempDir dir;
-    const std::string path = writeExr(dir);
+    const std::string path = writeTextureExr(dir);
     auto repeat = image(path);
     auto clamp = image(path, {stringParam("wrap", "clamp")});
     auto black = image(path, {stringParam("wrap", "black")});
@@ -120,7 +120,7 @@ TEST(ImageTexture, WrapModesOutsideTheUnitSquare) {
 
 TEST(ImageTexture, ScaleThenInvert) {
     TempDir dir;
-    const std::string path = writeExr(dir);
+    const std::string path = writeTextureExr(dir);
     expectRgb(image(path, {floatParam("scale", 0.5)})->evaluate(hitAt(0.25f, 0.75f)), 0.5f * A, 0);
     // invert: max(0, 1 - scale value).
     expectRgb(image(path, {floatParam("scale", 0.5), boolParam("invert", true)})->evaluate(hitAt(0.25f, 0.25f)),
@@ -151,7 +151,7 @@ TEST(ImageTexture, EightBitImagesAreSrgbDecodedUnlessGammaIsFalse) {
     }
     expectRgb(image(rgba)->evaluate(hitAt(0.5f, 0.5f)), {decode(r), decode(g), 1}, 1e-6f);
     // A float EXR is linear: no decoding by default.
-    expectRgb(image(writeExr(dir))->evaluate(hitAt(0.25f, 0.75f)), A, 0);
+    expectRgb(image(writeTextureExr(dir))->evaluate(hitAt(0.25f, 0.75f)), A, 0);
 }
 
 TEST(ImageTexture, MissingOrUnreadableImageNamesTheFile) {

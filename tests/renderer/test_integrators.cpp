@@ -8,13 +8,13 @@
 #include "RadianceProbe.h"
 #include "TempDir.h"
 #include "TestScenes.h"
+#include "prescription/Pi.h"
 
 namespace lenslab {
 namespace {
 
-constexpr double kPi = M_PI;
 const IntegratorType kAll[] = {IntegratorType::Path, IntegratorType::DirectLighting, IntegratorType::Whitted};
-const char* kNames[] = {"path", "directlighting", "whitted"};
+const char* kIntegratorNames[] = {"path", "directlighting", "whitted"};
 
 std::string square(double half, double z, const std::string& material) {
     const std::string h = std::to_string(half), zs = std::to_string(z);
@@ -22,20 +22,16 @@ std::string square(double half, double z, const std::string& material) {
            zs + "  " + h + " -" + h + " " + zs + "  " + h + " " + h + " " + zs + "  -" + h + " " + h + " " + zs + "]\n";
 }
 
-std::string scene(const test::TempDir& dir, const std::string& world) {
-    return dir.write("s.pbrt", std::string(test::kProbeHeader) + "WorldBegin\n" + world + "WorldEnd\n");
-}
-
 const std::string kWhite = "Material \"matte\" \"rgb Kd\" [1 1 1]";
 
 TEST(Integrators, DiffusePlaneUnderAPointLight) {
     test::TempDir dir;
-    const std::string s = scene(dir, "LightSource \"point\" \"point from\" [0 0 2] \"rgb I\" [4 4 4]\n" +
+    const std::string s = test::probeScene(dir, "LightSource \"point\" \"point from\" [0 0 2] \"rgb I\" [4 4 4]\n" +
                                          square(100, 0, kWhite));
     const double d2 = 1 + 4, expected = 4 * (2 / std::sqrt(d2)) / d2 / kPi;
     for (int i = 0; i < 3; ++i) {
         const test::RadianceProbe probe(s, kAll[i], 5);
-        EXPECT_NEAR(probe.mean({1, 0, 1}, {0, 0, -1}, 4), expected, 1e-5) << kNames[i];
+        EXPECT_NEAR(probe.mean({1, 0, 1}, {0, 0, -1}, 4), expected, 1e-5) << kIntegratorNames[i];
     }
 }
 
@@ -44,13 +40,13 @@ TEST(Integrators, DiffusePlaneUnderAPointLight) {
 // at maxdepth 2 path tracing stops before the light the mirror sends back up).
 TEST(Integrators, MirrorShowsTheLitCeiling) {
     test::TempDir dir;
-    const std::string s = scene(dir, "LightSource \"point\" \"point from\" [0 0 1] \"rgb I\" [4 4 4]\n" +
+    const std::string s = test::probeScene(dir, "LightSource \"point\" \"point from\" [0 0 1] \"rgb I\" [4 4 4]\n" +
                                          square(100, 0, "Material \"mirror\" \"rgb Kr\" [0.9 0.9 0.9]") +
                                          square(100, 2, kWhite));
     const double x = 0.5, d2 = x * x + 1, ceiling = 4 * (1 / std::sqrt(d2)) / d2 / kPi;
     for (int i = 0; i < 3; ++i) {
         const test::RadianceProbe probe(s, kAll[i], 2);
-        EXPECT_NEAR(probe.mean({float(x), 0, 1}, {0, 0, -1}, 4), 0.9 * ceiling, 1e-5) << kNames[i];
+        EXPECT_NEAR(probe.mean({float(x), 0, 1}, {0, 0, -1}, 4), 0.9 * ceiling, 1e-5) << kIntegratorNames[i];
     }
     // pbrt-v3's depth: maxdepth 1 shades the first surface only, and the mirror alone is black.
     EXPECT_EQ(test::RadianceProbe(s, IntegratorType::Whitted, 1).mean({float(x), 0, 1}, {0, 0, -1}, 4), 0.0);
@@ -59,10 +55,10 @@ TEST(Integrators, MirrorShowsTheLitCeiling) {
 
 TEST(Integrators, WhitePlaneUnderUniformSkyHasRadianceL) {
     test::TempDir dir;
-    const std::string s = scene(dir, "LightSource \"infinite\" \"rgb L\" [0.6 0.6 0.6]\n" + square(1000, 0, kWhite));
+    const std::string s = test::probeScene(dir, "LightSource \"infinite\" \"rgb L\" [0.6 0.6 0.6]\n" + square(1000, 0, kWhite));
     for (int i = 0; i < 3; ++i) {
         const test::RadianceProbe probe(s, kAll[i], 5);
-        EXPECT_NEAR(probe.mean({0.2f, 0.3f, 1}, {0, 0, -1}, 20000), 0.6, 0.006) << kNames[i];
+        EXPECT_NEAR(probe.mean({0.2f, 0.3f, 1}, {0, 0, -1}, 20000), 0.6, 0.006) << kIntegratorNames[i];
     }
 }
 
@@ -72,7 +68,7 @@ TEST(Integrators, WhitePlaneUnderUniformSkyHasRadianceL) {
 // area alone, which is noisy: it gets more samples and a wider tolerance.
 TEST(Integrators, EmittingCeilingOverWhitePlane) {
     test::TempDir dir;
-    const std::string s = scene(dir, "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [0.5 0.5 0.5] "
+    const std::string s = test::probeScene(dir, "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [0.5 0.5 0.5] "
                                      "\"bool twosided\" true\n" + square(10, 1, kWhite) + "AttributeEnd\n" +
                                      square(1000, 0, kWhite));
     const double a = 10, f = std::atan(a / std::sqrt(1 + a * a)) * a / std::sqrt(1 + a * a) / (2 * kPi) * 2;
@@ -81,7 +77,7 @@ TEST(Integrators, EmittingCeilingOverWhitePlane) {
     const double tolerance[] = {0.01, 0.01, 0.03};
     for (int i = 0; i < 3; ++i) {
         const test::RadianceProbe probe(s, kAll[i], 1);
-        EXPECT_NEAR(probe.mean({0, 0, 0.5f}, {0, 0, -1}, samples[i]), expected, tolerance[i] * expected) << kNames[i];
+        EXPECT_NEAR(probe.mean({0, 0, 0.5f}, {0, 0, -1}, samples[i]), expected, tolerance[i] * expected) << kIntegratorNames[i];
     }
 }
 
@@ -89,13 +85,13 @@ TEST(Integrators, EmittingCeilingOverWhitePlane) {
 // irradiance on its axis is pi L r^2 / (r^2 + h^2), the plane's radiance L r^2 / (r^2 + h^2) = 0.4.
 TEST(Integrators, EmittingDiskOverWhitePlane) {
     test::TempDir dir;
-    const std::string s = scene(dir, "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [2 2 2]\n"
+    const std::string s = test::probeScene(dir, "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [2 2 2]\n"
                                      "Translate 0 0 1\nRotate 180 1 0 0\nShape \"disk\" \"float radius\" 0.5\n"
                                      "AttributeEnd\n" + square(1000, 0, kWhite));
     const double L = 2, r = 0.5, h = 1, expected = L * r * r / (r * r + h * h);
     for (int i = 0; i < 3; ++i) {
         const test::RadianceProbe probe(s, kAll[i], 1);
-        EXPECT_NEAR(probe.mean({0, 0, 0.5f}, {0, 0, -1}, 20000), expected, 0.01 * expected) << kNames[i];
+        EXPECT_NEAR(probe.mean({0, 0, 0.5f}, {0, 0, -1}, 20000), expected, 0.01 * expected) << kIntegratorNames[i];
     }
 }
 
@@ -128,7 +124,7 @@ TEST(Integrators, VolpathShadowRaysAnswerAlikeByAnyHitAndHitByHit) {
     const std::string boundary = "AttributeBegin Material \"interface\" Translate 0 0 0.6 "
                                  "Shape \"sphere\" \"float radius\" 0.001 AttributeEnd\n";
     test::TempDir dir;
-    const test::RadianceProbe anyHit(scene(dir, world), IntegratorType::VolPath, 5);
+    const test::RadianceProbe anyHit(test::probeScene(dir, world), IntegratorType::VolPath, 5);
     ASSERT_FALSE(anyHit.geometry().hasPassthroughSurfaces());
     const test::RadianceProbe walked(dir.write("b.pbrt", std::string(test::kProbeHeader) + "WorldBegin\n" + world + boundary + "WorldEnd\n"),
                                      IntegratorType::VolPath, 5);

@@ -11,7 +11,7 @@
 namespace lenslab {
 namespace {
 
-std::string num(double v) { return std::to_string(v); }
+std::string decimalText(double v) { return std::to_string(v); }
 
 // A matte checkerboard wall 3 m ahead under a uniform sky (radiance = albedo everywhere).
 std::string checkerWall(const std::string& camera) {
@@ -52,16 +52,16 @@ TEST(LensCamera, TinyApertureMatchesPinholeOfSameFieldOfView) {
     const double fov = 2 * std::atan(0.5 * diag / std::sqrt(2.0) / imageDistance) * 180 / M_PI;
     const double pupilZm = a.pupils.entrance.z / 1000.0;
     const std::string realistic = dir.write("r.pbrt", checkerWall(
-        test::courseCamera("dgauss.dat", "\"float fstop\" ") + num(fstop) +
-        " \"float focaldistance\" " + num(focus) + " \"float filmdiagonal\" " + num(diag) + " \"bool simpleweighting\" true"));
+        test::courseCamera("dgauss.dat", "\"float fstop\" ") + decimalText(fstop) +
+        " \"float focaldistance\" " + decimalText(focus) + " \"float filmdiagonal\" " + decimalText(diag) + " \"bool simpleweighting\" true"));
     const auto pinhole = [&](double fovDegrees) {
-        return dir.write("p.pbrt", checkerWall("Translate 0 0 " + num(-pupilZm) + "\nCamera \"perspective\" \"float fov\" " +
-                                               num(fovDegrees)));
+        return dir.write("p.pbrt", checkerWall("Translate 0 0 " + decimalText(-pupilZm) + "\nCamera \"perspective\" \"float fov\" " +
+                                               decimalText(fovDegrees)));
     };
     const Image r = test::render(realistic, 96, 96, 32).image;
     const double same = centralDifference(r, test::render(pinhole(fov), 96, 96, 32).image);
     const double wider = centralDifference(r, test::render(pinhole(fov * 1.03), 96, 96, 32).image);
-    RecordProperty("difference_same_fov", num(same));
+    RecordProperty("difference_same_fov", decimalText(same));
     EXPECT_LT(same, 0.08) << "fov " << fov;
     EXPECT_GT(wider, 2 * same) << "the comparison must notice a 3% change of field of view";
 }
@@ -76,10 +76,10 @@ Blur measureBlur(const std::string& mode) {
     const double fstop = 4, focus = 2000, object = 1000, diag = 35, ball = 2.0;  // mm
     const int res = 256;
     const std::string scene = dir.write("coc.pbrt",
-        test::courseCamera("dgauss.dat", "\"float fstop\" ") + num(fstop) +
-        " \"float focaldistance\" " + num(focus) + " \"float filmdiagonal\" " + num(diag) + " \"string mode\" \"" + mode +
+        test::courseCamera("dgauss.dat", "\"float fstop\" ") + decimalText(fstop) +
+        " \"float focaldistance\" " + decimalText(focus) + " \"float filmdiagonal\" " + decimalText(diag) + " \"string mode\" \"" + mode +
         "\"\nFilm \"image\"\nPixelFilter \"box\"\nWorldBegin\nAttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
-        "Translate 0 0 " + num(object / 1000) + "\nShape \"sphere\" \"float radius\" " + num(ball / 1000) +
+        "Translate 0 0 " + decimalText(object / 1000) + "\nShape \"sphere\" \"float radius\" " + decimalText(ball / 1000) +
         "\nAttributeEnd\nWorldEnd\n");
     RenderSettings s;
     s.crop = std::array<double, 4>{0.4, 0.6, 0.4, 0.6};
@@ -115,15 +115,15 @@ Blur measureBlur(const std::string& mode) {
 
 TEST(LensCamera, DefocusBlurMatchesThickLensCircleOfConfusionApproximate) {
     const Blur b = measureBlur("thick");
-    RecordProperty("blur_radius_mm", num(b.radiusMm));
-    RecordProperty("predicted_mm", num(b.predictedMm));
+    RecordProperty("blur_radius_mm", decimalText(b.radiusMm));
+    RecordProperty("predicted_mm", decimalText(b.predictedMm));
     EXPECT_NEAR(b.radiusMm / b.predictedMm, 1.0, 0.05) << b.radiusMm << " vs " << b.predictedMm;
 }
 
 TEST(LensCamera, DefocusBlurMatchesThickLensCircleOfConfusionAccurate) {
     const Blur b = measureBlur("exact");
-    RecordProperty("blur_radius_mm", num(b.radiusMm));
-    RecordProperty("predicted_mm", num(b.predictedMm));
+    RecordProperty("blur_radius_mm", decimalText(b.radiusMm));
+    RecordProperty("predicted_mm", decimalText(b.predictedMm));
     EXPECT_NEAR(b.radiusMm / b.predictedMm, 1.0, 0.10) << b.radiusMm << " vs " << b.predictedMm;
 }
 
@@ -134,8 +134,8 @@ void checkCosFourthFalloff(const std::string& mode, double tolerance) {
     const double fstop = 16, focus = 2000, diag = 70;
     const int res = 96;
     const std::string scene = dir.write("wall.pbrt",
-        test::courseCamera("dgauss.dat", "\"float fstop\" ") + num(fstop) +
-        " \"float focaldistance\" " + num(focus) + " \"float filmdiagonal\" " + num(diag) + " \"string mode\" \"" + mode +
+        test::courseCamera("dgauss.dat", "\"float fstop\" ") + decimalText(fstop) +
+        " \"float focaldistance\" " + decimalText(focus) + " \"float filmdiagonal\" " + decimalText(diag) + " \"string mode\" \"" + mode +
         "\"\nFilm \"image\"\nPixelFilter \"box\"\nWorldBegin\nAttributeBegin\n"
         "AreaLightSource \"diffuse\" \"rgb L\" [1 1 1] \"bool twosided\" true\n"
         "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point P\" [-20 -20 2  20 -20 2  20 20 2  -20 20 2]\n"
@@ -207,7 +207,7 @@ TEST(LensCamera, FisheyeBendsStraightLinesIntoBarrels) {
     // (larger row numbers for a bar in the upper half) while the pinhole keeps it straight.
     const double bow = fisheye[edge] - fisheye[middle];
     const double bowRight = fisheye[res - 1 - edge] - fisheye[middle];
-    RecordProperty("fisheye_bow_pixels", num(bow));
+    RecordProperty("fisheye_bow_pixels", decimalText(bow));
     EXPECT_GT(bow, 4.0);
     EXPECT_GT(bowRight, 4.0);
     EXPECT_LT(std::fabs(pinhole[edge] - pinhole[middle]), 0.5);

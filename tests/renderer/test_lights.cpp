@@ -8,11 +8,10 @@
 #include "lights/LightSampler.h"
 #include "RadianceProbe.h"
 #include "TestScenes.h"
+#include "prescription/Pi.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPi = M_PI;
 
 // A white matte plane, 2 km wide, at z = 0, facing +z.
 const char* kWhitePlane = "Material \"matte\" \"rgb Kd\" [1 1 1]\n"
@@ -31,7 +30,7 @@ double planeRadiance(const std::string& scene, double x, double y, int samples =
     return probe.mean({float(x), float(y), 1}, {0, 0, -1}, samples);
 }
 
-std::string errorOf(const std::string& scene) {
+std::string lightErrorOf(const std::string& scene) {
     try {
         test::render(scene, 4, 4, 1);
     } catch (const SceneError& e) {
@@ -168,10 +167,10 @@ TEST(EnvironmentMap, SamplingDensityIntegratesToOneAndMatchesSamples) {
 TEST(EnvironmentMap, MissingOrUnreadableMapNamesTheFile) {
     test::TempDir dir;
     const std::string missing = planeScene(dir, "LightSource \"infinite\" \"string mapname\" \"nosky.exr\"");
-    EXPECT_NE(errorOf(missing).find("nosky.exr"), std::string::npos) << errorOf(missing);
+    EXPECT_NE(lightErrorOf(missing).find("nosky.exr"), std::string::npos) << lightErrorOf(missing);
     dir.write("broken.hdr", "this is not an image");
     const std::string broken = planeScene(dir, "LightSource \"infinite\" \"string mapname\" \"broken.hdr\"");
-    const std::string e = errorOf(broken);
+    const std::string e = lightErrorOf(broken);
     EXPECT_NE(e.find("broken.hdr"), std::string::npos) << e;
     EXPECT_NE(e.find("plane.pbrt:5"), std::string::npos) << e;
 }
@@ -179,9 +178,9 @@ TEST(EnvironmentMap, MissingOrUnreadableMapNamesTheFile) {
 TEST(Lights, UnknownTypeAndBadConeAreNamed) {
     test::TempDir dir;
     const std::string laser = planeScene(dir, "LightSource \"laser\"");
-    EXPECT_NE(errorOf(laser).find("light \"laser\" is not supported"), std::string::npos) << errorOf(laser);
+    EXPECT_NE(lightErrorOf(laser).find("light \"laser\" is not supported"), std::string::npos) << lightErrorOf(laser);
     const std::string cone = planeScene(dir, "LightSource \"spot\" \"float coneangle\" 10 \"float conedeltaangle\" 20");
-    EXPECT_NE(errorOf(cone).find("conedeltaangle"), std::string::npos) << errorOf(cone);
+    EXPECT_NE(lightErrorOf(cone).find("conedeltaangle"), std::string::npos) << lightErrorOf(cone);
 }
 
 TEST(PointLight, IrradianceIsIntensityTimesCosineOverDistanceSquared) {

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "BsdfTesting.h"
+#include "core/Pi.h"
 #include "materials/Fresnel.h"
 #include "materials/MetalSpectra.h"
 #include "core/Spectrum.h"
@@ -13,9 +14,7 @@
 namespace lenslab {
 namespace {
 
-constexpr float kPi = float(M_PI);
-
-std::string errorOf(const test::TempDir& dir, const std::string& directive) {
+std::string materialErrorOf(const test::TempDir& dir, const std::string& directive) {
     try {
         test::parseMaterial(dir, directive);
     } catch (const SceneError& e) {
@@ -72,7 +71,7 @@ TEST(Materials, MixWeightsTheFirstMaterialByAmount) {
                                               "Material \"mix\" \"string namedmaterial1\" \"white\" "
                                               "\"string namedmaterial2\" \"black\" \"rgb amount\" [0.2 0.5 0.9]");
     const SurfaceHit h = test::flatHit();
-    const Vec3f f = mix->evaluate(h, test::direction(10, 0), test::direction(0, 0)) * kPi;
+    const Vec3f f = mix->evaluate(h, test::direction(10, 0), test::direction(0, 0)) * kPif;
     EXPECT_NEAR(f.x, 0.2f, 1e-6f);
     EXPECT_NEAR(f.y, 0.5f, 1e-6f);
     EXPECT_NEAR(f.z, 0.9f, 1e-6f);
@@ -187,9 +186,9 @@ struct Record {
     std::vector<double> values;  // at 400, 550, 700 nm
 };
 
-const std::vector<Record> kRecords = {{0.2f, 0.0f, 0.3f, kPi, {0.10, 0.20, 0.30}},
+const std::vector<Record> kRecords = {{0.2f, 0.0f, 0.3f, kPif, {0.10, 0.20, 0.30}},
                                       {0.8f, 0.0f, 0.8f, 0.0f, {0.90, 0.50, 0.10}},
-                                      {1.2f, 0.0f, 0.5f, 0.5f * kPi, {0.05, 0.05, 0.40}},
+                                      {1.2f, 0.0f, 0.5f, 0.5f * kPif, {0.05, 0.05, 0.40}},
                                       {1.0f, 0.0f, 1.3f, 0.0f, {0.30, 0.30, 0.30}}};
 
 std::string cornellFile() {
@@ -208,7 +207,7 @@ TEST(Materials, MeasuredBrdfFileReturnsItsSamples) {
     dir.write("paint.brdf", cornellFile());
     const auto m = test::parseMaterial(dir, "Material \"measured\" \"string filename\" \"paint.brdf\"");
     const SurfaceHit h = test::flatHit();
-    const auto deg = [](float rad) { return rad * 180 / kPi; };
+    const auto deg = [](float rad) { return rad * 180 / kPif; };
     for (const Record& r : kRecords) {
         const Vec3f expected = sampledSpectrumToRgb({400, 550, 700}, r.values);
         const Vec3f wi = test::direction(deg(r.thetaI), deg(r.phiI)), wo = test::direction(deg(r.thetaO), deg(r.phiO));
@@ -228,15 +227,15 @@ TEST(Materials, MeasuredBrdfFileReturnsItsSamples) {
 TEST(Materials, MeasuredBrdfFileErrorsNameTheProblem) {
     test::TempDir dir;
     dir.write("short.brdf", "3\n400 550 700\n0.1 0 0.2 0 0.5 0.5\n");
-    EXPECT_NE(errorOf(dir, "Material \"measured\" \"string filename\" \"short.brdf\"").find("not a whole number of records"),
+    EXPECT_NE(materialErrorOf(dir, "Material \"measured\" \"string filename\" \"short.brdf\"").find("not a whole number of records"),
               std::string::npos);
     dir.write("words.brdf", "1\n500\n0.1 0 0.2 zero 0.5\n");
-    EXPECT_NE(errorOf(dir, "Material \"measured\" \"string filename\" \"words.brdf\"").find("line 3: 'zero'"),
+    EXPECT_NE(materialErrorOf(dir, "Material \"measured\" \"string filename\" \"words.brdf\"").find("line 3: 'zero'"),
               std::string::npos);
     dir.write("tiny.merl", "not a table");
-    EXPECT_NE(errorOf(dir, "Material \"measured\" \"string filename\" \"tiny.merl\"").find("MERL"), std::string::npos);
-    EXPECT_NE(errorOf(dir, "Material \"measured\"").find("needs \"string filename\""), std::string::npos);
-    EXPECT_NE(errorOf(dir, "Material \"measured\" \"string filename\" \"absent.brdf\"").find("cannot open"), std::string::npos);
+    EXPECT_NE(materialErrorOf(dir, "Material \"measured\" \"string filename\" \"tiny.merl\"").find("MERL"), std::string::npos);
+    EXPECT_NE(materialErrorOf(dir, "Material \"measured\"").find("needs \"string filename\""), std::string::npos);
+    EXPECT_NE(materialErrorOf(dir, "Material \"measured\" \"string filename\" \"absent.brdf\"").find("cannot open"), std::string::npos);
 }
 
 // A MERL table whose entries encode their own indices (red: theta_half bin + 1, green:
@@ -266,8 +265,8 @@ TEST(Materials, MerlTableIsIndexedByHalfAndDifferenceAngles) {
     const SurfaceHit hit = test::flatHit();
     // The direction pair at the centre of bin (h, d, p), the half vector in the x-z plane.
     const auto pairAt = [](int h, int d, int p, Vec3f& wo, Vec3f& wi) {
-        const float thetaH = (h + 0.5f) / nH, tH = thetaH * thetaH * 0.5f * kPi;
-        const float tD = (d + 0.5f) / nD * 0.5f * kPi, pD = (p + 0.5f) / nP * kPi;
+        const float thetaH = (h + 0.5f) / nH, tH = thetaH * thetaH * 0.5f * kPif;
+        const float tD = (d + 0.5f) / nD * 0.5f * kPif, pD = (p + 0.5f) / nP * kPif;
         const Vec3f wd{std::sin(tD) * std::cos(pD), std::sin(tD) * std::sin(pD), std::cos(tD)};
         wi = {wd.x * std::cos(tH) + wd.z * std::sin(tH), wd.y, -wd.x * std::sin(tH) + wd.z * std::cos(tH)};
         const Vec3f wh{std::sin(tH), 0, std::cos(tH)};
@@ -292,18 +291,18 @@ TEST(Materials, MerlTableIsIndexedByHalfAndDifferenceAngles) {
 
 TEST(Materials, DefinitionErrorsNameTheProblem) {
     test::TempDir dir;
-    EXPECT_NE(errorOf(dir, "Material \"mix\" \"string namedmaterial1\" \"a\" \"string namedmaterial2\" \"b\"")
+    EXPECT_NE(materialErrorOf(dir, "Material \"mix\" \"string namedmaterial1\" \"a\" \"string namedmaterial2\" \"b\"")
                   .find("undefined material \"a\""),
               std::string::npos);
-    EXPECT_NE(errorOf(dir, "MakeNamedMaterial \"a\" \"rgb Kd\" [1 1 1]").find("needs \"string type\""), std::string::npos);
-    EXPECT_NE(errorOf(dir, "Material \"metal\" \"string distribution\" \"phong\"").find("beckmann"), std::string::npos);
-    EXPECT_NE(errorOf(dir, "Material \"glass\" \"float eta\" 0").find("must be positive"), std::string::npos);
-    EXPECT_NE(errorOf(dir, "Material \"fourier\"").find("material \"fourier\" is not supported"), std::string::npos);
+    EXPECT_NE(materialErrorOf(dir, "MakeNamedMaterial \"a\" \"rgb Kd\" [1 1 1]").find("needs \"string type\""), std::string::npos);
+    EXPECT_NE(materialErrorOf(dir, "Material \"metal\" \"string distribution\" \"phong\"").find("beckmann"), std::string::npos);
+    EXPECT_NE(materialErrorOf(dir, "Material \"glass\" \"float eta\" 0").find("must be positive"), std::string::npos);
+    EXPECT_NE(materialErrorOf(dir, "Material \"fourier\"").find("material \"fourier\" is not supported"), std::string::npos);
     const std::string uber = "MakeNamedMaterial \"u\" \"string type\" \"uber\"\n";
     std::string nested = uber + "MakeNamedMaterial \"m1\" \"string type\" \"mix\" \"string namedmaterial1\" \"u\" "
                                 "\"string namedmaterial2\" \"u\"\n";
     nested += "Material \"mix\" \"string namedmaterial1\" \"m1\" \"string namedmaterial2\" \"m1\"";
-    EXPECT_NE(errorOf(dir, nested).find("lobes"), std::string::npos);
+    EXPECT_NE(materialErrorOf(dir, nested).find("lobes"), std::string::npos);
 }
 
 }  // namespace

@@ -13,10 +13,6 @@
 namespace lenslab {
 namespace {
 
-std::string scene(const test::TempDir& dir, const std::string& world, const std::string& options = "") {
-    return dir.write("s.pbrt", options + test::kProbeHeader + "WorldBegin\n" + world + "WorldEnd\n");
-}
-
 // The slab 0 < z < depth between two wide disks that bound medium "m" and have no surface.
 std::string slab(double depth) {
     return "Material \"interface\"\n"
@@ -31,12 +27,6 @@ Vec3f meanRadiance(const test::RadianceProbe& probe, Vec3f o, Vec3f d, int n) {
     return sum / float(n);
 }
 
-void expectRelative(Vec3f got, Vec3f expected, double tolerance, const char* what) {
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c] / expected[c], 1.0, tolerance) << what << " channel " << c;
-}
-
-const char* kSky = "LightSource \"infinite\" \"rgb L\" [1 1 1]\n";
-
 // Looking through the slab at a uniform sky: exp(-sigma_t d) per channel, for the homogeneous
 // medium (closed form per channel choice) and for a grid (delta tracking) of the same density.
 TEST(Media, SlabTransmittanceIsBeerLambert) {
@@ -49,8 +39,8 @@ TEST(Media, SlabTransmittanceIsBeerLambert) {
                              " \"float density\" [" + [] { std::string s; for (int i = 0; i < 64; ++i) s += " 1"; return s; }() + "]\n";
     for (const std::string& medium : {homogeneous, grid}) {
         test::TempDir dir;
-        const test::RadianceProbe probe(scene(dir, kSky + medium + slab(depth)), IntegratorType::VolPath, 5);
-        expectRelative(meanRadiance(probe, {0, 0, -1}, {0, 0, 1}, 100000), expected, 0.01, medium.c_str());
+        const test::RadianceProbe probe(test::probeScene(dir, test::kWhiteSky + medium + slab(depth)), IntegratorType::VolPath, 5);
+        test::expectRelative(meanRadiance(probe, {0, 0, -1}, {0, 0, 1}, 100000), expected, 0.01, medium.c_str());
     }
 }
 
@@ -59,10 +49,10 @@ TEST(Media, SlabTransmittanceIsBeerLambert) {
 TEST(Media, PresetTakesTheMeasuredCoefficients) {
     test::TempDir dir;
     const std::string medium = "MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"string preset\" \"Merlot\"\n";
-    const test::RadianceProbe probe(scene(dir, kSky + medium + slab(0.7)), IntegratorType::VolPath, 5);
+    const test::RadianceProbe probe(test::probeScene(dir, test::kWhiteSky + medium + slab(0.7)), IntegratorType::VolPath, 5);
     const Vec3f expected{std::exp(-0.11632f * 0.7f), std::exp(-0.25191f * 0.7f), std::exp(-0.29434f * 0.7f)};
-    expectRelative(meanRadiance(probe, {0, 0, -1}, {0, 0, 1}, 100000), expected, 0.01, "Merlot");
-    const std::string unknown = test::sceneErrorOf(scene(dir, "MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"string preset\" \"Marmite\"\n"));
+    test::expectRelative(meanRadiance(probe, {0, 0, -1}, {0, 0, 1}, 100000), expected, 0.01, "Merlot");
+    const std::string unknown = test::sceneErrorOf(test::probeScene(dir, "MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"string preset\" \"Marmite\"\n"));
     EXPECT_NE(unknown.find("s.pbrt:5"), std::string::npos) << unknown;
     EXPECT_NE(unknown.find("no measured medium is named \"Marmite\""), std::string::npos) << unknown;
 }
@@ -83,10 +73,10 @@ TEST(Media, SlabSingleScatteringMatchesTheIntegral) {
     const std::string world = "LightSource \"distant\" \"point from\" [0 0 1] \"point to\" [0 0 0] \"rgb L\" [2 2 2]\n"
                               "MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [0.1 0.1 0.1]"
                               " \"rgb sigma_s\" [0.5 0.5 0.5] \"float g\" 0.3\n" + slab(d);
-    const test::RadianceProbe probe(scene(dir, world), IntegratorType::VolPath, 1);
+    const test::RadianceProbe probe(test::probeScene(dir, world), IntegratorType::VolPath, 1);
     const Vec3f view{float(std::sin(alpha)), 0, float(mu)};
     const Vec3f L = meanRadiance(probe, Vec3f{0, 0, -1} - view, view, 100000);
-    expectRelative(L, {float(expected), float(expected), float(expected)}, 0.01, "single scattering");
+    test::expectRelative(L, {float(expected), float(expected), float(expected)}, 0.01, "single scattering");
 }
 
 // A white furnace: a sphere of non-absorbing medium (coloured scattering, forward phase) under a
@@ -102,10 +92,10 @@ TEST(Media, NonAbsorbingMediumInAFurnaceStaysAtOne) {
             density + "]\n"};
     for (const std::string& medium : media) {
         test::TempDir dir;
-        const std::string world = std::string(kSky) + medium +
+        const std::string world = std::string(test::kWhiteSky) + medium +
                                   "Material \"interface\" MediumInterface \"m\" \"\" Shape \"sphere\" \"float radius\" 1\n";
-        const test::RadianceProbe probe(scene(dir, world), IntegratorType::VolPath, 1000);
-        expectRelative(meanRadiance(probe, {0.3f, 0, 3}, {0, 0, -1}, 20000), {1, 1, 1}, 0.01, medium.c_str());
+        const test::RadianceProbe probe(test::probeScene(dir, world), IntegratorType::VolPath, 1000);
+        test::expectRelative(meanRadiance(probe, {0.3f, 0, 3}, {0, 0, -1}, 20000), {1, 1, 1}, 0.01, medium.c_str());
     }
 }
 
@@ -115,7 +105,7 @@ TEST(Media, CameraTakesTheOutsideMediumAtCamera) {
     test::TempDir dir;
     const std::string options = "MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [1 1 1] \"rgb sigma_s\" [0 0 0]\n"
                                 "MediumInterface \"\" \"m\"\n";
-    const std::string path = scene(dir, kSky + slab(1), options);
+    const std::string path = test::probeScene(dir, test::kWhiteSky + slab(1), options);
     const SceneDescription parsed = parseSceneFile(path);
     ASSERT_TRUE(parsed.camera.medium);
     const test::RadianceProbe probe(path, IntegratorType::VolPath, 5);
@@ -127,34 +117,34 @@ TEST(Media, CameraTakesTheOutsideMediumAtCamera) {
 TEST(Media, DefaultIntegratorIsEachPbrtsOwn) {
     test::TempDir dir;
     const std::string medium = "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n";
-    const SceneDescription v3 = parseSceneFile(scene(dir, medium + slab(1)));
+    const SceneDescription v3 = parseSceneFile(test::probeScene(dir, medium + slab(1)));
     ASSERT_EQ(v3.dialect, SceneDialect::PbrtV3);
     EXPECT_EQ(v3.integrator.type, IntegratorType::Path);
     ASSERT_FALSE(v3.warnings.empty());
     EXPECT_NE(v3.warnings.back().find("ignores the scene's participating media"), std::string::npos);
-    const SceneDescription v4 = parseSceneFile(scene(dir, "Material \"diffuse\"\n" + medium + slab(1)));
+    const SceneDescription v4 = parseSceneFile(test::probeScene(dir, "Material \"diffuse\"\n" + medium + slab(1)));
     ASSERT_EQ(v4.dialect, SceneDialect::PbrtV4);
     EXPECT_EQ(v4.integrator.type, IntegratorType::VolPath);
     EXPECT_EQ(v4.integrator.maxDepth, 5);
     for (const std::string& w : v4.warnings) EXPECT_EQ(w.find("Integrator"), std::string::npos) << w;
-    const SceneDescription v4Path = parseSceneFile(scene(dir, "Material \"diffuse\"\n" + medium + slab(1), "Integrator \"path\"\n"));
+    const SceneDescription v4Path = parseSceneFile(test::probeScene(dir, "Material \"diffuse\"\n" + medium + slab(1), "Integrator \"path\"\n"));
     EXPECT_EQ(v4Path.integrator.type, IntegratorType::Path);
 }
 
 TEST(Media, ParserChoosesVolpathAndNamesErrors) {
     test::TempDir dir;
     const std::string medium = "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n";
-    const std::string bdpt = scene(dir, medium + slab(1), "Integrator \"bdpt\"\n");
+    const std::string bdpt = test::probeScene(dir, medium + slab(1), "Integrator \"bdpt\"\n");
     EXPECT_EQ(parseSceneFile(bdpt).integrator.type, IntegratorType::VolPath);
-    const SceneDescription path = parseSceneFile(scene(dir, medium + slab(1), "Integrator \"path\"\n"));
+    const SceneDescription path = parseSceneFile(test::probeScene(dir, medium + slab(1), "Integrator \"path\"\n"));
     EXPECT_EQ(path.integrator.type, IntegratorType::Path);
     ASSERT_FALSE(path.warnings.empty());
     EXPECT_NE(path.warnings.back().find("ignores the scene's participating media"), std::string::npos);
-    EXPECT_NE(test::sceneErrorOf(scene(dir, "MediumInterface \"fog\" \"\"\nShape \"sphere\"\n")).find("s.pbrt:6: Shape \"sphere\": unknown medium \"fog\""),
+    EXPECT_NE(test::sceneErrorOf(test::probeScene(dir, "MediumInterface \"fog\" \"\"\nShape \"sphere\"\n")).find("s.pbrt:6: Shape \"sphere\": unknown medium \"fog\""),
               std::string::npos);
-    EXPECT_NE(test::sceneErrorOf(scene(dir, "MakeNamedMedium \"c\" \"string type\" \"rgbgrid\"\n")).find("s.pbrt:5: MakeNamedMedium \"c\": medium \"rgbgrid\" is not supported"),
+    EXPECT_NE(test::sceneErrorOf(test::probeScene(dir, "MakeNamedMedium \"c\" \"string type\" \"rgbgrid\"\n")).find("s.pbrt:5: MakeNamedMedium \"c\": medium \"rgbgrid\" is not supported"),
               std::string::npos);
-    EXPECT_NE(test::sceneErrorOf(scene(dir, "MakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"float density\" [1]\n"))
+    EXPECT_NE(test::sceneErrorOf(test::probeScene(dir, "MakeNamedMedium \"g\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"float density\" [1]\n"))
                   .find("nx * ny * nz = 2"),
               std::string::npos);
 }

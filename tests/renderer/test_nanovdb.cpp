@@ -53,7 +53,7 @@ NanoVdbGrid readBack(const std::string& bytes, const std::string& grid = "densit
 }
 
 // The reader's error message for these bytes, or "(no error)".
-std::string errorOf(const std::string& bytes, const std::string& grid = "density") {
+std::string vdbErrorOf(const std::string& bytes, const std::string& grid = "density") {
     std::istringstream in(bytes);
     try {
         readNanoVdbGrid(in, grid, "t.nvdb");
@@ -117,10 +117,10 @@ NanoVdbTestGrid blockGrid() {
     return g;
 }
 
-const Vec3f kSigmaA{0.5f, 1, 2};
+const Vec3f kVdbSigmaA{0.5f, 1, 2};
 
 NanoVdbMedium blockMedium() {
-    return NanoVdbMedium(readBack(test::nanoVdbFile({blockGrid()})), kSigmaA, {}, translate(0, 0, 5), HenyeyGreenstein(0));
+    return NanoVdbMedium(readBack(test::nanoVdbFile({blockGrid()})), kVdbSigmaA, {}, translate(0, 0, 5), HenyeyGreenstein(0));
 }
 
 TEST(NanoVdb, BoxIsTheActiveVoxelsMappedToTheMediumsSpace) {
@@ -160,7 +160,7 @@ TEST(NanoVdb, TransmittanceThroughAConstantBlockIsBeerLambert) {
         Vec3f sum;
         for (int i = 0; i < kSamples; ++i) sum += m.transmittance(c.o, {1, 0, 0}, c.length, rng);
         for (int ch = 0; ch < 3; ++ch)
-            EXPECT_NEAR(sum[ch] / kSamples / std::exp(-kSigmaA[ch] * c.expectedDepth), 1.0, 0.01) << "channel " << ch;
+            EXPECT_NEAR(sum[ch] / kSamples / std::exp(-kVdbSigmaA[ch] * c.expectedDepth), 1.0, 0.01) << "channel " << ch;
     }
     EXPECT_FLOAT_EQ(m.density({1 + 0.25f * 3.5f, y, z - 5}), 0.5f);
     EXPECT_FLOAT_EQ(m.density({1 + 0.25f * 7.5f, y, z - 5}), 0.25f);
@@ -231,7 +231,7 @@ TEST(NanoVdb, MajorantsBoundTheDensityVoxelByVoxel) {
 TEST(NanoVdb, UnsupportedFilesAreErrorsNamingTheFile) {
     const std::string good = test::nanoVdbFile({blockGrid()});
     const auto errorContains = [](const std::string& bytes, const std::string& text) {
-        const std::string e = errorOf(bytes);
+        const std::string e = vdbErrorOf(bytes);
         EXPECT_EQ(e.rfind("t.nvdb: ", 0), 0u) << e;
         EXPECT_NE(e.find(text), std::string::npos) << e;
     };
@@ -272,7 +272,7 @@ TEST(NanoVdb, TruncatedAndCorruptedFilesNeverCrash) {
     g.voxels.erase({5000, 0, 0});
     const std::string good = test::nanoVdbFile({g});
     for (std::size_t n = 0; n < good.size(); n += n < 2000 ? 1 : 4999) {
-        const std::string e = errorOf(good.substr(0, n));
+        const std::string e = vdbErrorOf(good.substr(0, n));
         ASSERT_EQ(e.rfind("t.nvdb: ", 0), 0u) << "length " << n << ": " << e;
     }
     Pcg32 rng(5);

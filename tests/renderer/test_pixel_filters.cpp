@@ -6,12 +6,11 @@
 #include <vector>
 
 #include "film/PixelFilter.h"
+#include "prescription/Pi.h"
 #include "sampling/Sampling.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPi = M_PI;
 
 FilterSpec spec(FilterType type, double width) {
     FilterSpec s;
@@ -23,7 +22,7 @@ FilterSpec spec(FilterType type, double width) {
 // pbrt-v3's defaults.
 const FilterSpec kFilters[] = {spec(FilterType::Box, 0.5), spec(FilterType::Gaussian, 2), spec(FilterType::Triangle, 2),
                                spec(FilterType::Mitchell, 2), spec(FilterType::Sinc, 4)};
-const char* kNames[] = {"box", "gaussian", "triangle", "mitchell", "sinc"};
+const char* kFilterNames[] = {"box", "gaussian", "triangle", "mitchell", "sinc"};
 
 TEST(PixelFilters, ProfilesMatchTheirDefinitions) {
     const FilterSpec& g = kFilters[1];
@@ -66,13 +65,13 @@ TEST(PixelFilters, OffsetsFollowTheAbsoluteProfile) {
         for (int i = 0; i < n; ++i) {
             float dx, dy;
             filter.sample((i + 0.5f) / n, 0.5f, dx, dy);
-            ASSERT_LE(std::fabs(dx), w) << kNames[k];
+            ASSERT_LE(std::fabs(dx), w) << kFilterNames[k];
             histogram[std::min(bins - 1, int((dx + w) / (2 * w) * bins))] += 1.0 / n;
         }
         const double total = integral(s, w, -w, w, true);
         for (int b = 0; b < bins; ++b) {
             const double a = -w + 2 * w * b / bins, expected = integral(s, w, a, a + 2 * w / bins, true) / total;
-            EXPECT_NEAR(histogram[b], expected, 2e-3) << kNames[k] << " bin " << b;
+            EXPECT_NEAR(histogram[b], expected, 2e-3) << kFilterNames[k] << " bin " << b;
         }
     }
 }
@@ -100,7 +99,7 @@ TEST(PixelFilters, SignedWeightsReproduceTheFilter) {
             yWeights += filter.sample(centre, u, dx, dy);
         }
         // mean(x part) mean(y part) = (xWeights / n) (yWeights / n) / both
-        EXPECT_NEAR(xWeights / n * yWeights / n / both, 1.0, 1e-3) << kNames[k];
+        EXPECT_NEAR(xWeights / n * yWeights / n / both, 1.0, 1e-3) << kFilterNames[k];
         double fx2 = 0;
         const int m = 4000;
         for (int i = 0; i < m; ++i) {
@@ -109,9 +108,9 @@ TEST(PixelFilters, SignedWeightsReproduceTheFilter) {
         }
         const double moment = fx2 / integral(s, w, -w, w, false);
         // The y part (at the centre) multiplies both sums alike.
-        EXPECT_NEAR(xMoment / xWeights, moment, 1e-3 * std::max(1.0, moment)) << kNames[k];
+        EXPECT_NEAR(xMoment / xWeights, moment, 1e-3 * std::max(1.0, moment)) << kFilterNames[k];
         const bool lobes = s.type == FilterType::Mitchell || s.type == FilterType::Sinc;
-        EXPECT_EQ(negative > 0, lobes) << kNames[k];
+        EXPECT_EQ(negative > 0, lobes) << kFilterNames[k];
     }
 }
 
@@ -144,13 +143,13 @@ TEST(PixelFilters, PixelsOfAFlatFieldAreExactAndEdgesConverge) {
                 flat.add(weight, {0.25f, 0.5f, 2});
                 step.add(weight, dx > edge ? Vec3f{1, 1, 1} : Vec3f{});
             }
-            ASSERT_NEAR(flat.value().x, 0.25f, 1e-6f) << kNames[k];
-            ASSERT_NEAR(flat.value().z, 2.0f, 1e-5f) << kNames[k];
+            ASSERT_NEAR(flat.value().x, 0.25f, 1e-6f) << kFilterNames[k];
+            ASSERT_NEAR(flat.value().z, 2.0f, 1e-5f) << kFilterNames[k];
             edgeSum += step.value().x;
         }
         const double bias = (absolute - filtered) / spp;
-        EXPECT_NEAR(edgeSum / pixels, filtered + bias, 0.01) << kNames[k];
-        EXPECT_LT(std::fabs(bias), 0.01) << kNames[k];
+        EXPECT_NEAR(edgeSum / pixels, filtered + bias, 0.01) << kFilterNames[k];
+        EXPECT_LT(std::fabs(bias), 0.01) << kFilterNames[k];
     }
 }
 

@@ -21,7 +21,7 @@ constexpr const char* kBaffledSinglet = "0 0 0 6\n50 2 1.5 20\n-200 4 0 20\n0 60
 constexpr double kFilmDiagonal = 35;
 
 // A uniform white sky through `camera`.
-std::string skyScene(const test::TempDir& dir, const std::string& camera) {
+std::string warningSkyScene(const test::TempDir& dir, const std::string& camera) {
     return dir.write("sky.pbrt", camera +
                                      "\nFilm \"image\"\nPixelFilter \"box\"\nIntegrator \"directlighting\" \"integer maxdepth\" 1\n"
                                      "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\nWorldEnd\n");
@@ -49,7 +49,7 @@ TEST(RenderWarnings, ABlackFrameSaysTheLensBlocksEveryCameraRay) {
     test::TempDir dir;
     RenderSettings s;
     s.crop = {0, 0.25, 0, 0.25};  // the frame's corner, all of it outside the image circle
-    const RenderOutput out = test::render(skyScene(dir, baffledCamera(dir)), 64, 48, 4, s);
+    const RenderOutput out = test::render(warningSkyScene(dir, baffledCamera(dir)), 64, 48, 4, s);
     EXPECT_EQ(test::meanLum(out.image), 0.0);
     EXPECT_EQ(out.stats.cameraRays, 16u * 12u * 4u);
     EXPECT_EQ(out.stats.blockedCameraRays, out.stats.cameraRays);
@@ -61,7 +61,7 @@ TEST(RenderWarnings, ABlackFrameSaysTheLensBlocksEveryCameraRay) {
 TEST(RenderWarnings, AnImageCircleSmallerThanTheFilmIsSaidAndIsWhereTheLightEnds) {
     test::TempDir dir;
     const int width = 64, height = 48;
-    const RenderOutput out = test::render(skyScene(dir, baffledCamera(dir)), width, height, 4);
+    const RenderOutput out = test::render(warningSkyScene(dir, baffledCamera(dir)), width, height, 4);
     ASSERT_EQ(out.warnings.size(), 2u);
     EXPECT_EQ(out.warnings[1], kSmallCircle);
     EXPECT_EQ(out.metadata.at("imageCircleDiameterMm"), "7.47758");
@@ -87,7 +87,7 @@ TEST(RenderWarnings, AnImageCircleSmallerThanTheFilmIsSaidAndIsWhereTheLightEnds
 TEST(RenderWarnings, AnOrdinaryLensRenderSaysNothing) {
     test::TempDir dir;
     const RenderOutput out = test::render(
-        skyScene(dir, test::courseCamera("dgauss.dat", "\"float fstop\" 4 \"float focaldistance\" 1000 \"float filmdiagonal\" 35")), 32, 24, 2);
+        warningSkyScene(dir, test::courseCamera("dgauss.dat", "\"float fstop\" 4 \"float focaldistance\" 1000 \"float filmdiagonal\" 35")), 32, 24, 2);
     EXPECT_LT(out.stats.blockedCameraRays, out.stats.cameraRays / 2);
     EXPECT_TRUE(out.warnings.empty()) << out.warnings.front();
     EXPECT_EQ(exrRenderWarnings(out, dir), "(none)");

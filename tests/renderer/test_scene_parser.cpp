@@ -8,7 +8,7 @@
 namespace lenslab {
 namespace {
 
-const char* kHeader = "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+const char* kParserHeader = "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
                       "Film \"image\" \"integer xresolution\" 16 \"integer yresolution\" 16\n";
 
 
@@ -29,7 +29,7 @@ std::string renderErrorOf(const std::string& path, RenderSettings s = {}) {
 
 TEST(SceneParser, TransformsPlaceShapesAsPbrtDoes) {
     test::TempDir dir;
-    const std::string scene = dir.write("s.pbrt", std::string(kHeader) +
+    const std::string scene = dir.write("s.pbrt", std::string(kParserHeader) +
         "WorldBegin\n"
         "AttributeBegin\n  Translate 1 2 3\n  Scale 2 2 2\n  Shape \"sphere\" \"float radius\" 0.5\nAttributeEnd\n"
         "TransformBegin\n  Rotate 90 0 0 1\n"
@@ -57,7 +57,7 @@ TEST(SceneParser, TransformsPlaceShapesAsPbrtDoes) {
 TEST(SceneParser, IncludeReachesAnywhereUnlessConfined) {
     test::TempDir dir;
     dir.write("parts/ball.pbrt", "Shape \"sphere\" \"float radius\" 2\n");
-    const std::string up = dir.write("scene/s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"../parts/ball.pbrt\"\nWorldEnd\n");
+    const std::string up = dir.write("scene/s.pbrt", std::string(kParserHeader) + "WorldBegin\nInclude \"../parts/ball.pbrt\"\nWorldEnd\n");
     EXPECT_EQ(parseSceneFile(up).shapes.size(), 1u);  // the command line: the user's own files
     SceneParseOptions confined;
     confined.confined = true;
@@ -67,7 +67,7 @@ TEST(SceneParser, IncludeReachesAnywhereUnlessConfined) {
     } catch (const SceneError& e) {
         EXPECT_NE(std::string(e.what()).find("outside the scene's folder"), std::string::npos) << e.what();
     }
-    const std::string inside = dir.write("s2.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"parts/ball.pbrt\"\nWorldEnd\n");
+    const std::string inside = dir.write("s2.pbrt", std::string(kParserHeader) + "WorldBegin\nInclude \"parts/ball.pbrt\"\nWorldEnd\n");
     EXPECT_EQ(parseSceneFile(inside).shapes.size(), 1u);
 }
 
@@ -76,13 +76,13 @@ TEST(SceneParser, IncludeReachesAnywhereUnlessConfined) {
 TEST(SceneParser, IncludedDirectiveTakesParametersThatFollow) {
     test::TempDir dir;
     dir.write("parts/ball.pbrt", "AttributeBegin\nShape \"sphere\"\n");
-    const std::string ok = dir.write("ok.pbrt", std::string(kHeader) +
+    const std::string ok = dir.write("ok.pbrt", std::string(kParserHeader) +
         "WorldBegin\nInclude \"parts/ball.pbrt\"\n  \"float radius\" 2\nAttributeEnd\nWorldEnd\n");
     const SceneDescription s = parseSceneFile(ok);
     EXPECT_EQ(s.shapes.size(), 1u);
     EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
     // A bad value names the line in the including file, where it stands.
-    const std::string bad = dir.write("bad.pbrt", std::string(kHeader) +
+    const std::string bad = dir.write("bad.pbrt", std::string(kParserHeader) +
         "WorldBegin\nInclude \"parts/ball.pbrt\"\n  \"float radius\" [ x ]\nAttributeEnd\nWorldEnd\n");
     const std::string e = test::sceneErrorOf(bad);
     EXPECT_NE(e.find("bad.pbrt:6: Shape \"sphere\": bad number 'x'"), std::string::npos) << e;
@@ -91,7 +91,7 @@ TEST(SceneParser, IncludedDirectiveTakesParametersThatFollow) {
 TEST(SceneErrors, ErrorInIncludedFileNamesItsLine) {
     test::TempDir dir;
     dir.write("parts/t.pbrt", "\n\nTranslate 1 x 2\n");
-    const std::string p = dir.write("s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"parts/t.pbrt\"\nWorldEnd\n");
+    const std::string p = dir.write("s.pbrt", std::string(kParserHeader) + "WorldBegin\nInclude \"parts/t.pbrt\"\nWorldEnd\n");
     const std::string e = test::sceneErrorOf(p);
     EXPECT_NE(e.find("t.pbrt:3: Translate: bad number 'x'"), std::string::npos) << e;
 }
@@ -99,14 +99,14 @@ TEST(SceneErrors, ErrorInIncludedFileNamesItsLine) {
 TEST(SceneErrors, IncludeCycle) {
     test::TempDir dir;
     dir.write("cycle.pbrt", "Include \"cycle.pbrt\"\n");  // last: its file is done when it nests
-    const std::string p = dir.write("s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"cycle.pbrt\"\n");
+    const std::string p = dir.write("s.pbrt", std::string(kParserHeader) + "WorldBegin\nInclude \"cycle.pbrt\"\n");
     const std::string e = test::sceneErrorOf(p);
     EXPECT_NE(e.find("nested deeper than 32"), std::string::npos) << e;
 }
 
 TEST(SceneErrors, UnknownDirectiveNamesFileLineAndDirective) {
     test::TempDir dir;
-    const std::string p = dir.write("bad.pbrt", std::string(kHeader) + "WorldBegin\n\nMakeItPretty 3\nWorldEnd\n");
+    const std::string p = dir.write("bad.pbrt", std::string(kParserHeader) + "WorldBegin\n\nMakeItPretty 3\nWorldEnd\n");
     const std::string e = test::sceneErrorOf(p);
     EXPECT_NE(e.find("bad.pbrt:6"), std::string::npos) << e;
     EXPECT_NE(e.find("MakeItPretty"), std::string::npos) << e;
@@ -114,7 +114,7 @@ TEST(SceneErrors, UnknownDirectiveNamesFileLineAndDirective) {
 
 TEST(SceneErrors, MissingIncludeFile) {
     test::TempDir dir;
-    const std::string p = dir.write("s.pbrt", std::string(kHeader) + "WorldBegin\nInclude \"nothere.pbrt\"\nWorldEnd\n");
+    const std::string p = dir.write("s.pbrt", std::string(kParserHeader) + "WorldBegin\nInclude \"nothere.pbrt\"\nWorldEnd\n");
     const std::string e = test::sceneErrorOf(p);
     EXPECT_NE(e.find("s.pbrt:5: Include"), std::string::npos) << e;
     EXPECT_NE(e.find("cannot open 'nothere.pbrt'"), std::string::npos) << e;
@@ -123,13 +123,13 @@ TEST(SceneErrors, MissingIncludeFile) {
 
 TEST(SceneErrors, BadNumbers) {
     test::TempDir dir;
-    const std::string a = dir.write("a.pbrt", std::string(kHeader) + "WorldBegin\nTranslate 1 2 x3\nWorldEnd\n");
+    const std::string a = dir.write("a.pbrt", std::string(kParserHeader) + "WorldBegin\nTranslate 1 2 x3\nWorldEnd\n");
     EXPECT_NE(test::sceneErrorOf(a).find("a.pbrt:5: Translate: bad number 'x3'"), std::string::npos) << test::sceneErrorOf(a);
-    const std::string b = dir.write("b.pbrt", std::string(kHeader) + "WorldBegin\nShape \"sphere\" \"float radius\" [ 1e999 ]\nWorldEnd\n");
+    const std::string b = dir.write("b.pbrt", std::string(kParserHeader) + "WorldBegin\nShape \"sphere\" \"float radius\" [ 1e999 ]\nWorldEnd\n");
     EXPECT_NE(test::sceneErrorOf(b).find("bad number '1e999'"), std::string::npos) << test::sceneErrorOf(b);
-    const std::string c = dir.write("c.pbrt", std::string(kHeader) + "WorldBegin\nShape \"sphere\" \"float radius\" -1\nWorldEnd\n");
+    const std::string c = dir.write("c.pbrt", std::string(kParserHeader) + "WorldBegin\nShape \"sphere\" \"float radius\" -1\nWorldEnd\n");
     EXPECT_NE(test::sceneErrorOf(c).find("radius must be positive"), std::string::npos) << test::sceneErrorOf(c);
-    const std::string d = dir.write("d.pbrt", std::string(kHeader) +
+    const std::string d = dir.write("d.pbrt", std::string(kParserHeader) +
         "WorldBegin\nShape \"trianglemesh\" \"integer indices\" [0 1 5] \"point P\" [0 0 0 1 0 0 0 1 0]\nWorldEnd\n");
     EXPECT_NE(test::sceneErrorOf(d).find("index 5 out of range"), std::string::npos) << test::sceneErrorOf(d);
 }
@@ -156,7 +156,7 @@ TEST(SceneErrors, AbsurdResolution) {
 TEST(SceneErrors, UnsupportedFeaturesAreNamedNeverIgnored) {
     test::TempDir dir;
     const auto check = [&](const std::string& world, const std::string& expected) {
-        const std::string p = dir.write("u.pbrt", std::string(kHeader) + "WorldBegin\n" + world + "\nWorldEnd\n");
+        const std::string p = dir.write("u.pbrt", std::string(kParserHeader) + "WorldBegin\n" + world + "\nWorldEnd\n");
         const std::string e = test::sceneErrorOf(p);
         EXPECT_NE(e.find(expected), std::string::npos) << e;
     };

@@ -7,13 +7,12 @@
 
 #include "sampling/Sampling.h"
 #include "ShapeTestScenes.h"
+#include "core/Pi.h"
 
 namespace lenslab {
 namespace {
 
 using test::trace;
-
-constexpr float kPi = float(M_PI);
 
 // The single shape of a world block.
 std::shared_ptr<const Shape> shapeOf(const test::TempDir& dir, const std::string& world) {

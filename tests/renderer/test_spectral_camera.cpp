@@ -20,7 +20,7 @@
 namespace lenslab {
 namespace {
 
-RenderOutput renderWith(const std::string& scene, int w, int h, int spp, bool spectral, std::uint64_t seed,
+RenderOutput renderSpectral(const std::string& scene, int w, int h, int spp, bool spectral, std::uint64_t seed,
                         std::optional<std::array<double, 4>> crop = std::nullopt, int wavelengthsPerSample = 3) {
     RenderSettings s;
     s.camera.spectral = spectral;
@@ -74,8 +74,8 @@ std::string cards(const std::string& lens) {
 TEST(SpectralCamera, DispersionFreeLensGivesTheRgbPicture) {
     test::TempDir dir;
     const std::string scene = dir.write("cards.pbrt", cards("dgauss.50mm.dat"));
-    const RenderOutput rgb1 = renderWith(scene, 64, 48, 16, false, 1), rgb2 = renderWith(scene, 64, 48, 16, false, 2);
-    const RenderOutput sp1 = renderWith(scene, 64, 48, 16, true, 1), sp2 = renderWith(scene, 64, 48, 16, true, 2);
+    const RenderOutput rgb1 = renderSpectral(scene, 64, 48, 16, false, 1), rgb2 = renderSpectral(scene, 64, 48, 16, false, 2);
+    const RenderOutput sp1 = renderSpectral(scene, 64, 48, 16, true, 1), sp2 = renderSpectral(scene, 64, 48, 16, true, 2);
     EXPECT_EQ(sp1.metadata.at("film").rfind("spectral", 0), 0u);
     EXPECT_EQ(rgb1.metadata.at("film").rfind("RGB", 0), 0u);
     const Vec3f mRgb = channelMeans(rgb1.image), mSp = channelMeans(sp1.image);
@@ -96,10 +96,10 @@ TEST(SpectralCamera, DispersionFreeLensGivesTheRgbPicture) {
 TEST(SpectralCamera, SeveralWavelengthsPerSampleGiveTheOneWavelengthPicture) {
     test::TempDir dir;
     const std::string scene = dir.write("cards.pbrt", cards("dgauss-glass.dat"));
-    const RenderOutput one1 = renderWith(scene, 64, 48, 16, true, 1, std::nullopt, 1);
-    const RenderOutput one2 = renderWith(scene, 64, 48, 16, true, 2, std::nullopt, 1);
-    const RenderOutput four1 = renderWith(scene, 64, 48, 16, true, 1, std::nullopt, 4);
-    const RenderOutput four2 = renderWith(scene, 64, 48, 16, true, 2, std::nullopt, 4);
+    const RenderOutput one1 = renderSpectral(scene, 64, 48, 16, true, 1, std::nullopt, 1);
+    const RenderOutput one2 = renderSpectral(scene, 64, 48, 16, true, 2, std::nullopt, 1);
+    const RenderOutput four1 = renderSpectral(scene, 64, 48, 16, true, 1, std::nullopt, 4);
+    const RenderOutput four2 = renderSpectral(scene, 64, 48, 16, true, 2, std::nullopt, 4);
     const Vec3f mOne = channelMeans(one1.image), mFour = channelMeans(four1.image);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(mFour[c] / mOne[c], 1.0, 0.01) << "channel " << c;
     const double expected = std::hypot(blockRms(one1.image, one2.image), blockRms(four1.image, four2.image)) / std::sqrt(2.0);
@@ -115,7 +115,7 @@ TEST(SpectralCamera, WavelengthsPerSampleFollowTheFilterUnlessTold) {
     const std::string box = cards("dgauss-glass.dat"), boxFilter = "PixelFilter \"box\"";
     const std::string gaussian = std::string(box).replace(box.find(boxFilter), boxFilter.size(), "PixelFilter \"gaussian\"");
     const auto film = [&](const std::string& name, const std::string& scene, int perSample) {
-        return renderWith(dir.write(name, scene), 16, 12, 1, true, 1, std::nullopt, perSample).metadata.at("film");
+        return renderSpectral(dir.write(name, scene), 16, 12, 1, true, 1, std::nullopt, perSample).metadata.at("film");
     };
     EXPECT_EQ(film("box.pbrt", box, 0).rfind("spectral: wavelengths per sample 1 ", 0), 0u);
     EXPECT_EQ(film("gaussian.pbrt", gaussian, 0).rfind("spectral: wavelengths per sample 3 ", 0), 0u);
@@ -132,7 +132,7 @@ TEST(SpectralCamera, GreyCardStaysNeutralThroughADispersiveLens) {
                          "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
                          "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point P\" [-5 -5 2  5 -5 2  5 5 2  -5 5 2]\n"
                          "WorldEnd\n");
-    const RenderOutput out = renderWith(scene, 96, 64, 32, true, 3);
+    const RenderOutput out = renderSpectral(scene, 96, 64, 32, true, 3);
     ASSERT_NE(out.metadata.at("lensWavelengths").find("each exact ray"), std::string::npos);
     const Vec3f m = channelMeans(out.image);
     const double mean = (m.x + m.y + m.z) / 3;
@@ -183,7 +183,7 @@ TEST_P(LateralColourFringe, FringeMatchesTheChiefRays) {
             corner(s0, -t) + "  " + corner(s1, -t) + "  " + corner(s1, t) + "  " + corner(s0, t) + "]\nWorldEnd\n");
 
     // The film plane the camera focuses on, and each wavelength's chief-ray height on it.
-    const RenderOutput probe = renderWith(scene, width, height, 1, true, 0, std::array<double, 4>{0.5, 0.501, 0.5, 0.501});
+    const RenderOutput probe = renderSpectral(scene, width, height, 1, true, 0, std::array<double, 4>{0.5, 0.501, 0.5, 0.501});
     const double filmZ = std::stod(probe.metadata.at("filmZMm"));
     const double fieldDeg = std::atan(tanField) * 180 / M_PI;
     const auto chiefHeight = [&](double nm) {
@@ -205,7 +205,7 @@ TEST_P(LateralColourFringe, FringeMatchesTheChiefRays) {
     // Render 128 x 128 pixels around the d edge and measure each channel's edge along the diagonal.
     const double hD = chiefHeight(lens.wavelength) / pixelMm;
     const double cx = width / 2.0 + hD * ux, cy = height / 2.0 - hD * uy, half = 64;
-    const RenderOutput out = renderWith(scene, width, height, 64, true, 5,
+    const RenderOutput out = renderSpectral(scene, width, height, 64, true, 5,
                                         std::array<double, 4>{(cx - half) / width, (cx + half) / width,
                                                               (cy - half) / height, (cy + half) / height},
                                         GetParam());

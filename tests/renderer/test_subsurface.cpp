@@ -16,16 +16,6 @@
 namespace lenslab {
 namespace {
 
-const char* kSky = "LightSource \"infinite\" \"rgb L\" [1 1 1]\n";
-
-std::string scene(const test::TempDir& dir, const std::string& world, const std::string& options = "") {
-    return dir.write("s.pbrt", options + test::kProbeHeader + "WorldBegin\n" + world + "WorldEnd\n");
-}
-
-void expectRelative(Vec3f got, Vec3f expected, double tolerance, const std::string& what) {
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c] / expected[c], 1.0, tolerance) << what << " channel " << c;
-}
-
 // The mean radiance over the disk a unit sphere at the origin shows to parallel rays along -z.
 // Points uniform over the disk see the surface at angles weighted by cos: under a uniform sky of
 // radiance 1 the mean is the sphere's diffuse (cosine-weighted hemispherical) reflectance.
@@ -78,11 +68,11 @@ TEST(Subsurface, BoundaryTrapsLightSoTheSameReflectanceNeedsAHigherAlbedo) {
 // uniform sky of 1, looks exactly like the sky.
 TEST(Subsurface, NonAbsorbingVolumeInAFurnaceStaysAtOne) {
     test::TempDir dir;
-    const std::string world = std::string(kSky) +
+    const std::string world = std::string(test::kWhiteSky) +
                               "Material \"subsurface\" \"rgb sigma_a\" [0 0 0] \"rgb sigma_s\" [2 5 10] \"float g\" 0.4"
                               " \"float eta\" 1\nShape \"sphere\" \"float radius\" 1\n";
-    const test::RadianceProbe probe(scene(dir, world), IntegratorType::VolPath, 5);
-    expectRelative(meanOverDisk(probe, 100000), {1, 1, 1}, 0.01, "furnace");
+    const test::RadianceProbe probe(test::probeScene(dir, world), IntegratorType::VolPath, 5);
+    test::expectRelative(meanOverDisk(probe, 100000), {1, 1, 1}, 0.01, "furnace");
 }
 
 // Rendered round trip of "reflectance" + "mfp": a sphere 100 mean free paths across (near enough
@@ -92,13 +82,13 @@ TEST(Subsurface, RenderedSphereReflectsTheRequestedReflectance) {
     const Vec3f requested{0.2f, 0.5f, 0.8f};
     for (float eta : {1.0f, 1.33f}) {
         test::TempDir dir;
-        const std::string world = std::string(kSky) + "Material \"subsurface\" \"rgb reflectance\" [0.2 0.5 0.8]"
+        const std::string world = std::string(test::kWhiteSky) + "Material \"subsurface\" \"rgb reflectance\" [0.2 0.5 0.8]"
                                   " \"rgb mfp\" [0.01 0.01 0.01] \"float eta\" " + std::to_string(eta) +
                                   "\nShape \"sphere\" \"float radius\" 1\n";
-        const test::RadianceProbe probe(scene(dir, world), IntegratorType::VolPath, 5);
+        const test::RadianceProbe probe(test::probeScene(dir, world), IntegratorType::VolPath, 5);
         const float f = diffuseFresnel(eta);
         const Vec3f expected = Vec3f{f, f, f} + (1 - f) * requested;
-        expectRelative(meanOverDisk(probe, 20000), expected, 0.03, "eta " + std::to_string(eta));
+        test::expectRelative(meanOverDisk(probe, 20000), expected, 0.03, "eta " + std::to_string(eta));
     }
 }
 
@@ -122,11 +112,11 @@ TEST(Subsurface, SlabTransmittanceIsBeerLambertTimesFresnel) {
         "Material \"subsurface\" \"rgb sigma_a\" [0.5 1 2] \"rgb sigma_s\" [0 0 0] \"float eta\" 1.5\n"
         "AttributeBegin ReverseOrientation Shape \"disk\" \"float radius\" 1000 AttributeEnd\n"
         "Shape \"disk\" \"float height\" " + std::to_string(d) + " \"float radius\" 1000\n";
-    const test::RadianceProbe probe(scene(dir, world), IntegratorType::VolPath, 5);
+    const test::RadianceProbe probe(test::probeScene(dir, world), IntegratorType::VolPath, 5);
     Vec3f sum;
     const int n = 20000;
     for (int i = 0; i < n; ++i) sum += probe.once({0, 0, -1}, {0, 0, 1}, std::uint64_t(i));
-    expectRelative(sum / float(n), expected, 0.01, "slab");
+    test::expectRelative(sum / float(n), expected, 0.01, "slab");
 }
 
 const Material& onlyMaterial(const SceneDescription& s) { return *s.shapes.at(0).material; }
@@ -134,7 +124,7 @@ const Material& onlyMaterial(const SceneDescription& s) { return *s.shapes.at(0)
 TEST(Subsurface, ReadsPbrt4sParameterForms) {
     test::TempDir dir;
     const auto parse = [&](const std::string& params, const std::string& options = "") {
-        return parseSceneFile(scene(dir, "Material \"subsurface\" " + params + "\nShape \"sphere\"\n", options));
+        return parseSceneFile(test::probeScene(dir, "Material \"subsurface\" " + params + "\nShape \"sphere\"\n", options));
     };
     const SurfaceHit hit{};
     // A measured medium by name, per mm, times scale (the sssdragon scene's form).
@@ -162,7 +152,7 @@ TEST(Subsurface, ReadsPbrt4sParameterForms) {
 TEST(Subsurface, RefusesBadParametersNamingTheLine) {
     test::TempDir dir;
     const auto error = [&](const std::string& world) {
-        return test::sceneErrorOf(scene(dir, world + "\nShape \"sphere\"\n"));
+        return test::sceneErrorOf(test::probeScene(dir, world + "\nShape \"sphere\"\n"));
     };
     const auto expectError = [&](const std::string& world, const std::string& expected) {
         const std::string e = error(world);

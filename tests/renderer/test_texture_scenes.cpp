@@ -6,11 +6,10 @@
 
 #include "scene/SceneDescription.h"
 #include "TestScenes.h"
+#include "prescription/Pi.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The camera looks along +y from (0, -5, 0), up +z: by pbrt-v3's LookAt, the image's right is
 // world -x. A matte sphere under a uniform white sky reflects its albedo exactly (nothing shades a
@@ -77,21 +76,20 @@ TEST(TextureScenes, CheckeredSphereMatchesPbrtV3Conventions) {
     EXPECT_LT(tex1Seen, checked - 100);
 }
 
-
-const char* kHeader = "LookAt 0 -5 0  0 0 0  0 0 1\nCamera \"perspective\" \"float fov\" 10\n"
+const char* kTextureHeader = "LookAt 0 -5 0  0 0 0  0 0 1\nCamera \"perspective\" \"float fov\" 10\n"
                       "Film \"image\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
                       "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n";
 
 TEST(TextureScenes, AttributeEndForgetsTexturesDeclaredInside) {
     test::TempDir dir;
-    const std::string inner = dir.write("inner.pbrt", std::string(kHeader) +
+    const std::string inner = dir.write("inner.pbrt", std::string(kTextureHeader) +
         "AttributeBegin\nTexture \"t\" \"spectrum\" \"constant\" \"rgb value\" [1 0 0]\nAttributeEnd\n"
         "Material \"matte\" \"texture Kd\" \"t\"\nWorldEnd\n");
     EXPECT_NE(test::sceneErrorOf(inner).find("inner.pbrt:9: Material \"matte\": parameter \"Kd\" names an undeclared spectrum texture \"t\""),
               std::string::npos)
         << test::sceneErrorOf(inner);
     // TransformBegin/End does not scope textures.
-    const std::string transformBlock = dir.write("transform.pbrt", std::string(kHeader) +
+    const std::string transformBlock = dir.write("transform.pbrt", std::string(kTextureHeader) +
         "TransformBegin\nTexture \"t\" \"spectrum\" \"constant\" \"rgb value\" [1 0 0]\nTransformEnd\n"
         "Material \"matte\" \"texture Kd\" \"t\"\nWorldEnd\n");
     EXPECT_EQ(test::sceneErrorOf(transformBlock), "(no error)");
@@ -102,7 +100,7 @@ TEST(TextureScenes, RedefinitionInsideABlockEndsWithIt) {
     // The sphere fills the view: the centre pixel shows the albedo of the outer texture "t"
     // (green); the red redefinition lives only inside the block. The float texture "t" is a
     // separate name.
-    const std::string scene = dir.write("s.pbrt", std::string(kHeader) +
+    const std::string scene = dir.write("s.pbrt", std::string(kTextureHeader) +
         "Texture \"t\" \"spectrum\" \"constant\" \"rgb value\" [0.1 0.7 0.1]\n"
         "Texture \"t\" \"float\" \"constant\" \"float value\" 0.5\n"
         "AttributeBegin\nTexture \"t\" \"spectrum\" \"constant\" \"rgb value\" [0.7 0.1 0.1]\nAttributeEnd\n"
