@@ -36,16 +36,6 @@ constexpr std::array<Maker, 7> kMakers{{
 }};
 constexpr std::size_t kSuggestions = 5;
 
-// A name as compared: upper case, without spaces, underscores and hyphens (no two glasses of one
-// maker differ only in those; a few names repeat across makers, where the search order decides).
-std::string nameKey(std::string_view name) {
-    std::string key;
-    for (const char c : name)
-        if (!std::isspace(static_cast<unsigned char>(c)) && c != '_' && c != '-')
-            key += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return key;
-}
-
 // "S-LAH64": prefix "S", rest "LAH64". Prefixes are one or two letters before the first hyphen.
 std::pair<std::string_view, std::string_view> splitPrefix(std::string_view name) {
     const std::size_t hyphen = name.find('-');
@@ -97,9 +87,9 @@ DispersionFormula formulaNamed(std::string_view name, std::size_t line) {
 // A glass's names as compared; `prefixes` are its maker's, in preference order (none for a loaded catalog).
 GlassNames namesIn(const Medium& glass, const std::array<std::string_view, 4>& prefixes) {
     GlassNames names;
-    names.key = nameKey(glass.name);
+    names.key = glassNameKey(glass.name);
     const auto [prefix, rest] = splitPrefix(glass.name);
-    if (!prefix.empty()) names.base = nameKey(rest);
+    if (!prefix.empty()) names.base = glassNameKey(rest);
     names.prefixRank = static_cast<std::size_t>(std::find(prefixes.begin(), prefixes.end(), prefix) - prefixes.begin());
     return names;
 }
@@ -160,8 +150,8 @@ LoadedCatalogs& loaded() {
 }
 
 std::vector<LoadedCatalog>::iterator loadedNamed(std::vector<LoadedCatalog>& catalogs, const std::string& name) {
-    const std::string key = nameKey(name);
-    return std::find_if(catalogs.begin(), catalogs.end(), [&](const LoadedCatalog& l) { return nameKey(l.name) == key; });
+    const std::string key = glassNameKey(name);
+    return std::find_if(catalogs.begin(), catalogs.end(), [&](const LoadedCatalog& l) { return glassNameKey(l.name) == key; });
 }
 
 // Where one glass comes from in a search: a loaded catalog or a bundled maker, and its glasses.
@@ -191,9 +181,9 @@ std::vector<Source> searchOrder(const std::vector<std::string>& preferredCatalog
     std::vector<Source> order;
     std::vector<bool> taken(all.size(), false);
     for (const std::string& wanted : preferredCatalogs) {
-        const std::string key = nameKey(wanted);
+        const std::string key = glassNameKey(wanted);
         for (std::size_t i = 0; i < all.size(); ++i) {
-            const std::string name = nameKey(all[i].name);
+            const std::string name = glassNameKey(all[i].name);
             const bool named = all[i].bundled ? key.compare(0, name.size(), name) == 0 : key == name;
             if (named && all[i].preferable && !taken[i]) {
                 taken[i] = true;
@@ -250,6 +240,14 @@ std::vector<std::string> nearestNames(const std::string& key, const std::vector<
 
 }  // namespace
 
+std::string glassNameKey(std::string_view name) {
+    std::string key;
+    for (const char c : name)
+        if (!std::isspace(static_cast<unsigned char>(c)) && c != '_' && c != '-')
+            key += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return key;
+}
+
 // The catalogs are searched one after the other, preferred ones first, as a .zmx GCAT line asks.
 // Within a maker a glass whose whole name matches comes before one that matches without its
 // prefix, so a name that exists as written is taken as written: SF5 is Schott's lead SF5, not
@@ -264,7 +262,7 @@ GlassLookup findGlass(const std::string& name, const std::vector<std::string>& p
     for (const Source& source : order) lookup.searched.push_back(source.name);
 
     if (name.size() > kMaxGlassNameLength) return lookup;
-    const std::string key = nameKey(name);
+    const std::string key = glassNameKey(name);
     const Medium* best = nullptr;
     std::tuple<std::size_t, int, std::size_t, std::string_view> bestRank;
     for (std::size_t position = 0; position < order.size(); ++position)
@@ -308,8 +306,8 @@ bool removeGlassCatalog(const std::string& name) {
 }
 
 bool isGlassCatalogName(const std::string& name) {
-    const std::string key = nameKey(name);
-    if (std::any_of(kMakers.begin(), kMakers.end(), [&](const Maker& m) { return nameKey(m.name) == key; })) return true;
+    const std::string key = glassNameKey(name);
+    if (std::any_of(kMakers.begin(), kMakers.end(), [&](const Maker& m) { return glassNameKey(m.name) == key; })) return true;
     LoadedCatalogs& user = loaded();
     std::shared_lock lock(user.mutex);
     return loadedNamed(user.catalogs, name) != user.catalogs.end();

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "prescription/Medium.h"
@@ -22,6 +23,9 @@ struct GlassLookup {
 // is unknown at once, without the search for the nearest names (an edit distance against every
 // glass, which a name of a megabyte would make cost seconds).
 constexpr std::size_t kMaxGlassNameLength = 32;
+
+// A glass name as findGlass compares it: upper case, without spaces, underscores and hyphens.
+std::string glassNameKey(std::string_view name);
 
 // Finds a catalog glass by name: case, spaces, underscores and hyphens do not matter, and a name
 // without its maker prefix ("BK7", "LAH64", "LAK02") finds the prefixed glass. preferredCatalogs

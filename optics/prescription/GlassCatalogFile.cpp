@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "prescription/GlassCatalog.h"
 #include "prescription/LensTable.h"
 #include "prescription/NumberText.h"
 #include "prescription/TextEncoding.h"
@@ -122,7 +123,7 @@ GlassCatalogFile parseGlassCatalogFile(const std::string& bytes, const std::stri
             if (f[1].size() > kMaxNameLength)
                 r.fail(lineNo, "the glass name has " + std::to_string(f[1].size()) + " characters, more than " +
                                    std::to_string(kMaxNameLength));
-            if (const auto [first, added] = nameLines.emplace(upperCase(f[1]), lineNo); !added)
+            if (const auto [first, added] = nameLines.emplace(glassNameKey(f[1]), lineNo); !added)
                 r.fail(lineNo, "glass " + f[1] + " is named twice in the catalog: first on line " +
                                    std::to_string(first->second) + "; a lens could find only one of them");
             Medium glass;

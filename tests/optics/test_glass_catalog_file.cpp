@@ -217,6 +217,10 @@ TEST(GlassCatalogFile, RefusalsNameTheLine) {
     expectAgfError("NM G 2 0 1.5 60 0 1\nCD 1 x\n", 2, "not a finite number");
     expectAgfError("NM G 2 0 1.5 60 0 1\nCD 1 0.01\nLD 2.5 0.3\n", 3, "not a wavelength range");
     expectAgfError("CC nothing here\n", 1, "no glasses");
+    // Names the lookup cannot tell apart are one name: findGlass ignores case, spaces, underscores
+    // and hyphens, so a lens naming N-BK7 could find only one of these.
+    expectAgfError("NM N-BK7 2 0 1.5 60 0 1\nCD 1 0.01 0 0 0 0\nNM N_bk7 2 0 1.6 50 0 1\nCD 1 0.01 0 0 0 0\n", 3,
+                   "glass N_bk7 is named twice in the catalog: first on line 1");
     EXPECT_TRUE(isGlassCatalogFileName("a/SCHOTT.AGF"));
     EXPECT_TRUE(isGlassCatalogFileName("hoya.agf"));
     EXPECT_FALSE(isGlassCatalogFileName("agf"));
