@@ -2,15 +2,12 @@
 # Builds the libFuzzer targets (clang, ASan + UBSan) in build-fuzz/ and runs each for SECONDS
 # (default 60) on a scratch copy of tests/fuzz/corpus/<target>; new inputs stay in the copy.
 # Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   (targets: lens_table trace zemax codev agf nanovdb; default all)
-#        scripts/fuzz.sh --build-only [TARGET...]   builds the targets and runs nothing
 # Exits 0 without fuzzing when clang or its libFuzzer runtime is missing; non-zero on a finding,
 # whose reproducer is left in build-fuzz/findings/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
-build_only=false
-[ "$seconds" != "--build-only" ] || build_only=true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(lens_table trace zemax codev agf nanovdb)
 
@@ -26,7 +23,6 @@ generator=()
 CC=clang CXX=clang++ cmake -S . -B build-fuzz "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLENSLAB_FUZZ=ON \
   -DLENSLAB_BUILD_BENCH=OFF -DLENSLAB_NATIVE=OFF >/dev/null
 cmake --build build-fuzz -j"${LENSLAB_JOBS:-2}" --target "${targets[@]/#/fuzz_}"
-! $build_only || exit 0
 
 rm -rf build-fuzz/findings
 mkdir -p build-fuzz/findings
